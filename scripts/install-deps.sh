@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Installs every build, test and plotting dependency of rodsea from Debian 12's archive.
+# Nothing is downloaded from anywhere else. Safe to run again: apt skips what is present.
+set -euo pipefail
+
+packages=(
+    g++ cmake make ninja-build          # C++20 compiler and build system
+    libgtest-dev libgmock-dev           # GoogleTest, through ctest
+    libbenchmark-dev                    # Google Benchmark
+    clang-format                        # the committed .clang-format
+    python3 python3-numpy python3-matplotlib  # the demo picture (scripts/plot_snapshot.py)
+)
+
+if [ "$(id -u)" -eq 0 ]; then sudo=(); else sudo=(sudo); fi
+
+missing=()
+for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+    echo "install-deps: all ${#packages[@]} packages already installed"
+    exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -qq
+"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

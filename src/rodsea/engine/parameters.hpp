@@ -1,0 +1,76 @@
+#pragma once
+// Everything the engine needs besides the bodies, with MODEL.md's defaults. Units: mm, s, and an
+// arbitrary mass unit (the polar rod's mass is 1 by default; only ratios matter).
+#include <cstdint>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "rodsea/shape/shape.hpp"
+
+namespace rodsea {
+
+// The two plates: base at A cos Ωt, lid at A cos Ωt + w, A = Γ g / Ω².
+struct DriveParameters {
+    double gamma = 7.0;                        // Γ = AΩ²/g, dimensionless, [0, 1000]
+    double angular_frequency = 400.0 * std::numbers::pi;  // Ω, rad/s, > 0
+    double gap = 1.5;                          // w, mm (MODEL.md CHOICE, provisional), > 0
+    double gravity = 9810.0;                   // g, mm/s² (MODEL.md CHOICE 9.81 m/s²), >= 0
+
+    double amplitude() const {  // A, mm
+        return gamma * gravity / (angular_frequency * angular_frequency);
+    }
+};
+
+struct ContactCoefficients {
+    double friction = 0.05;     // μ, Coulomb, [0, 10]
+    double restitution = 0.30;  // e, normal, [0, 1]
+};
+
+enum class BodyKind { polar_rod, apolar_rod, bead };
+const char* to_string(BodyKind kind);
+
+// One kind of body: its shape (with mass) and how it meets the plates.
+struct Species {
+    std::string name;
+    BodyKind kind = BodyKind::polar_rod;
+    Shape shape;
+    ContactCoefficients plate;  // body–base and body–lid
+};
+
+// The paper's species with MODEL.md's defaults (Table S2 coefficients, mass ratio 0.20).
+Species polar_rod_species(double mass = 1.0);
+Species apolar_rod_species(double length_mm, double mass = 0.2);
+Species bead_species(double mass = 0.2);
+
+struct Box {
+    double lx = 90.0;  // mm, periodic
+    double ly = 90.0;  // mm, periodic
+};
+
+struct EngineParameters {
+    Box box;
+    DriveParameters drive;
+    std::vector<Species> species;
+    // Body–body coefficients per species pair, row-major species × species; empty means
+    // `body_body` for every pair (the paper uses one value for all pairs).
+    ContactCoefficients body_body;
+    std::vector<ContactCoefficients> body_body_by_pair;
+    double dt = 5e-6;             // s (MODEL.md CHOICE: 1000 steps per drive period), > 0
+    double noise_epsilon = 0.0;   // ε, 1/mm: ω_z += ε |u_n| η at plate hits of polar rods, >= 0
+    std::uint64_t seed = 1;
+    int max_sweeps = 2000;        // impulse sweeps per step before contacts count as unresolved
+    // Relative normal speeds above −tolerance count as not approaching (mm/s). 1 nm/s moves a
+    // body 5e-15 mm per step: far below any length in the model.
+    double approach_tolerance = 1e-6;
+
+    const ContactCoefficients& pair_coefficients(size_t a, size_t b) const {
+        return body_body_by_pair.empty() ? body_body
+                                         : body_body_by_pair[a * species.size() + b];
+    }
+};
+
+// Throws InvalidParameter naming the first bad parameter, its value and the allowed range.
+void validate(const EngineParameters& p);
+
+}  // namespace rodsea

@@ -1,0 +1,24 @@
+#pragma once
+// Every sphere of every body, in body order: which body and which of its shape's spheres it is,
+// its radius, and its world centre (recomputed after each free flight).
+#include <cstdint>
+#include <vector>
+
+#include "rodsea/engine/body_state.hpp"
+#include "rodsea/engine/parameters.hpp"
+
+namespace rodsea {
+
+struct SphereTable {
+    std::vector<std::uint32_t> body;
+    std::vector<std::uint32_t> local;     // index into the body's shape
+    std::vector<double> radius;           // mm
+    std::vector<Vec3> position;           // world, mm; x, y not wrapped
+    std::vector<std::uint32_t> first_of;  // first sphere of each body, plus one past the end
+
+    void assign(const BodyState& bodies, const std::vector<Species>& species);
+    void update_positions(const BodyState& bodies, const std::vector<Species>& species);
+    size_t size() const { return body.size(); }
+};
+
+}  // namespace rodsea

@@ -1,0 +1,61 @@
+#pragma once
+// Unit quaternion for body orientation: world = rotate(q, body).
+#include <cmath>
+
+#include "rodsea/math/mat3.hpp"
+#include "rodsea/math/vec3.hpp"
+
+namespace rodsea {
+
+struct Quat {
+    double w = 1.0, x = 0.0, y = 0.0, z = 0.0;
+
+    static Quat from_axis_angle(const Vec3& unit_axis, double angle) {
+        const double s = std::sin(0.5 * angle);
+        return {std::cos(0.5 * angle), unit_axis.x * s, unit_axis.y * s, unit_axis.z * s};
+    }
+    constexpr Vec3 vec() const { return {x, y, z}; }
+};
+
+constexpr Quat operator*(const Quat& p, const Quat& q) {
+    return {p.w * q.w - p.x * q.x - p.y * q.y - p.z * q.z,
+            p.w * q.x + p.x * q.w + p.y * q.z - p.z * q.y,
+            p.w * q.y - p.x * q.z + p.y * q.w + p.z * q.x,
+            p.w * q.z + p.x * q.y - p.y * q.x + p.z * q.w};
+}
+constexpr bool operator==(const Quat& p, const Quat& q) {
+    return p.w == q.w && p.x == q.x && p.y == q.y && p.z == q.z;
+}
+constexpr Quat conjugate(const Quat& q) { return {q.w, -q.x, -q.y, -q.z}; }
+
+inline Quat normalized(const Quat& q) {
+    const double n = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+    return {q.w / n, q.x / n, q.y / n, q.z / n};
+}
+
+// Rotation matrix R with R v = q v q*.
+constexpr Mat3 to_matrix(const Quat& q) {
+    const double xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z;
+    const double xy = q.x * q.y, xz = q.x * q.z, yz = q.y * q.z;
+    const double wx = q.w * q.x, wy = q.w * q.y, wz = q.w * q.z;
+    Mat3 m;
+    m(0, 0) = 1 - 2 * (yy + zz);
+    m(0, 1) = 2 * (xy - wz);
+    m(0, 2) = 2 * (xz + wy);
+    m(1, 0) = 2 * (xy + wz);
+    m(1, 1) = 1 - 2 * (xx + zz);
+    m(1, 2) = 2 * (yz - wx);
+    m(2, 0) = 2 * (xz - wy);
+    m(2, 1) = 2 * (yz + wx);
+    m(2, 2) = 1 - 2 * (xx + yy);
+    return m;
+}
+
+constexpr Vec3 rotate(const Quat& q, const Vec3& v) {
+    // v + 2 w (u x v) + 2 u x (u x v), u = vector part: cheaper than building R.
+    const Vec3 u = q.vec();
+    const Vec3 t = 2.0 * cross(u, v);
+    return v + q.w * t + cross(u, t);
+}
+
+}  // namespace rodsea
