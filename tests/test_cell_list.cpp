@@ -1,4 +1,5 @@
-// The neighbour layer: every close pair exactly once, across the periodic boundary too.
+// The neighbour layer: every close pair exactly once, with its minimum-image separation, across
+// the periodic boundary too.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -19,10 +20,10 @@ void expect_matches_brute_force(double lx, double ly, double cutoff, int n, std:
     PeriodicCellList2D cells;
     cells.build(points, box, cutoff);
     std::map<std::pair<int, int>, int> seen;
-    cells.for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
-        const Vec3 d = box.minimum_image(points[i] - points[j]);
-        if (d.x * d.x + d.y * d.y < cutoff * cutoff)
-            ++seen[{std::min<int>(i, j), std::max<int>(i, j)}];
+    cells.for_each_pair_within([&](std::uint32_t i, std::uint32_t j, const Vec3& d) {
+        const Vec3 expected = box.minimum_image(points[i] - points[j]);
+        EXPECT_NEAR(norm(d - expected), 0.0, 1e-12);
+        ++seen[{std::min<int>(i, j), std::max<int>(i, j)}];
     });
     int expected = 0;
     for (int i = 0; i < n; ++i) {
@@ -44,6 +45,44 @@ TEST(PeriodicCellList, FindsEveryClosePairOnceInALargeBox) {
 TEST(PeriodicCellList, FindsEveryClosePairOnceWhenADirectionHasFewerThanThreeCells) {
     expect_matches_brute_force(3.0, 20.0, 1.375, 150, 2);  // 2 cells in x -> 1
     expect_matches_brute_force(2.0, 2.5, 0.8, 40, 3);      // one cell in all
+}
+
+}  // namespace
+}  // namespace rodsea
+
+namespace rodsea {
+namespace {
+
+// Disc mode, as the contact finder uses it: exactly the pairs of overlapping discs of
+// different groups.
+TEST(PeriodicCellList, DiscModeVisitsOverlappingDiscsOfDifferentGroupsOnce) {
+    SplitMix64 rng(5);
+    const PeriodicBox2D box{12.0, 9.0};
+    std::vector<Vec3> points;
+    std::vector<double> radii;
+    std::vector<std::uint32_t> groups;
+    for (int i = 0; i < 400; ++i) {
+        points.push_back({rng.uniform(0, 12.0), rng.uniform(-1, 10.0), 0.0});
+        radii.push_back(rng.uniform(0.2, 0.6875));
+        groups.push_back(static_cast<std::uint32_t>(i / 5));
+    }
+    PeriodicCellList2D cells;
+    cells.build(points, radii, groups, box, 1.375);
+    std::map<std::pair<int, int>, int> seen;
+    cells.for_each_pair_within([&](std::uint32_t i, std::uint32_t j, const Vec3&) {
+        ++seen[{std::min<int>(i, j), std::max<int>(i, j)}];
+    });
+    size_t expected = 0;
+    for (int i = 0; i < 400; ++i)
+        for (int j = i + 1; j < 400; ++j) {
+            const Vec3 d = box.minimum_image(points[i] - points[j]);
+            const double reach = radii[i] + radii[j];
+            if (groups[i] == groups[j] || d.x * d.x + d.y * d.y >= reach * reach) continue;
+            ++expected;
+            EXPECT_EQ((seen[{i, j}]), 1);
+        }
+    EXPECT_EQ(seen.size(), expected);
+    EXPECT_GT(expected, 100u);
 }
 
 }  // namespace

@@ -14,11 +14,9 @@ ContactSearchStats find_contacts(const SphereTable& spheres, const BodyState& bo
     double max_radius = 0.0;
     for (const Species& s : params.species) max_radius = std::max(max_radius, s.shape.max_radius);
 
-    cells.build(spheres.position, box, 2.0 * max_radius);
-    cells.for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
+    cells.build(spheres.position, spheres.radius, spheres.body, box, 2.0 * max_radius);
+    cells.for_each_pair_within([&](std::uint32_t i, std::uint32_t j, const Vec3& d) {
         const std::uint32_t bi = spheres.body[i], bj = spheres.body[j];
-        if (bi == bj) return;
-        const Vec3 d = box.minimum_image(spheres.position[i] - spheres.position[j]);
         const double reach = spheres.radius[i] + spheres.radius[j];
         const double d2 = norm2(d);
         if (d2 >= reach * reach || d2 == 0.0) return;

@@ -11,14 +11,20 @@ int cell_count(double side, double cutoff) {
     return n >= 3 ? n : 1;
 }
 
-int cell_index(double x, double side, int n) {
-    const double wrapped = x - side * std::floor(x / side);
-    return std::clamp(static_cast<int>(wrapped / side * n), 0, n - 1);
+double wrap(double x, double side) {
+    const double w = x - side * std::floor(x / side);
+    return w < side ? w : 0.0;  // x just below 0 can round to exactly side
 }
 
 }  // namespace
 
 void PeriodicCellList2D::build(std::span<const Vec3> points, const PeriodicBox2D& box,
+                               double cutoff) {
+    build(points, {}, {}, box, cutoff);
+}
+
+void PeriodicCellList2D::build(std::span<const Vec3> points, std::span<const double> radii,
+                               std::span<const std::uint32_t> groups, const PeriodicBox2D& box,
                                double cutoff) {
     const int nx = cell_count(box.lx, cutoff), ny = cell_count(box.ly, cutoff);
     if (nx != nx_ || ny != ny_ || !stencil_built_) {
@@ -33,20 +39,37 @@ void PeriodicCellList2D::build(std::span<const Vec3> points, const PeriodicBox2D
             }
         }
     }
+    box_ = box;
+    cutoff_ = cutoff;
+    single_x_ = nx_ == 1;
+    single_y_ = ny_ == 1;
+
     const size_t cells = static_cast<size_t>(nx_) * ny_;
     start_.assign(cells + 1, 0);
     cell_of_.resize(points.size());
+    const double to_cx = nx_ / box.lx, to_cy = ny_ / box.ly;
     for (size_t i = 0; i < points.size(); ++i) {
-        const int c = cell_index(points[i].y, box.ly, ny_) * nx_ +
-                      cell_index(points[i].x, box.lx, nx_);
+        const int cx = std::min(static_cast<int>(wrap(points[i].x, box.lx) * to_cx), nx_ - 1);
+        const int cy = std::min(static_cast<int>(wrap(points[i].y, box.ly) * to_cy), ny_ - 1);
+        const int c = cy * nx_ + cx;
         cell_of_[i] = static_cast<std::uint32_t>(c);
         ++start_[c + 1];
     }
     for (size_t c = 0; c < cells; ++c) start_[c + 1] += start_[c];
     order_.resize(points.size());
+    sorted_.resize(points.size());
+    sorted_radius_.resize(radii.size());
+    sorted_group_.resize(groups.size());
     cursor_.assign(start_.begin(), start_.end() - 1);
-    for (size_t i = 0; i < points.size(); ++i)
-        order_[cursor_[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
+    for (size_t i = 0; i < points.size(); ++i) {
+        const std::uint32_t slot = cursor_[cell_of_[i]]++;
+        order_[slot] = static_cast<std::uint32_t>(i);
+        sorted_[slot] = {wrap(points[i].x, box.lx), wrap(points[i].y, box.ly), points[i].z};
+        if (!radii.empty()) {
+            sorted_radius_[slot] = radii[i];
+            sorted_group_[slot] = groups[i];
+        }
+    }
 }
 
 }  // namespace rodsea

@@ -1,9 +1,12 @@
 #pragma once
 // The one neighbour layer of rodsea: a cell list over points in a box periodic in x and y
-// (z is ignored: the system is a monolayer, so binning in the plane is enough). Every unordered
-// pair of points closer in the plane than `cutoff` is visited exactly once by
-// for_each_candidate_pair, together with some farther pairs that the caller filters.
-// Used by the engine's contact finder and by analysis.
+// (z is ignored for binning: the system is a monolayer, so cells in the plane are enough).
+// for_each_pair_within visits every unordered pair closer in the plane than the cutoff exactly
+// once, with its minimum-image separation. Used by the engine's contact finder and by analysis.
+//
+// Points are copied into cell order on build, so the pair loops read contiguous memory, and
+// the periodic images of a neighbour cell are a fixed shift per cell pair, not a rounding per
+// point pair.
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -16,7 +19,7 @@ namespace rodsea {
 struct PeriodicBox2D {
     double lx = 0.0, ly = 0.0;
 
-    // Minimum-image difference a − b in x and y; z untouched.
+    // Minimum-image difference in x and y; z untouched.
     Vec3 minimum_image(Vec3 d) const {
         d.x -= lx * std::nearbyint(d.x / lx);
         d.y -= ly * std::nearbyint(d.y / ly);
@@ -26,26 +29,50 @@ struct PeriodicBox2D {
 
 class PeriodicCellList2D {
 public:
-    // Bins the points. Cells are at least `cutoff` wide; a direction with fewer than three
-    // such cells uses a single cell so that no neighbour cell is visited twice.
+    // Bins the points with cells at least `cutoff` wide; a direction with fewer than three such
+    // cells uses a single cell, so that no neighbour cell is visited twice.
     void build(std::span<const Vec3> points, const PeriodicBox2D& box, double cutoff);
 
-    template <class Visit>  // visit(i, j) with i != j, indices into the points given to build
-    void for_each_candidate_pair(Visit&& visit) const {
+    // Same, for discs: a pair is close when its discs overlap in the plane (distance <
+    // r_i + r_j, each 2 r ≤ cutoff), and pairs with the same group (e.g. spheres of one rigid
+    // body) are never visited. Both tests run on the cell-ordered copies, before any visit.
+    void build(std::span<const Vec3> points, std::span<const double> radii,
+               std::span<const std::uint32_t> groups, const PeriodicBox2D& box, double cutoff);
+
+    // visit(i, j, d): i != j index the points given to build, d = p_i − p_j (minimum image in
+    // x, y), d.x² + d.y² < cutoff² (points) or < (r_i + r_j)² (discs).
+    template <class Visit>
+    void for_each_pair_within(Visit&& visit) const {
+        const double c2 = cutoff_ * cutoff_;
+        const bool discs = !sorted_radius_.empty();
+        const auto consider = [&](std::uint32_t a, std::uint32_t b, double sx, double sy) {
+            if (discs && sorted_group_[a] == sorted_group_[b]) return;
+            Vec3 d = sorted_[a] - sorted_[b];
+            d.x += sx;
+            d.y += sy;
+            if (single_x_) d.x -= box_.lx * std::nearbyint(d.x / box_.lx);
+            if (single_y_) d.y -= box_.ly * std::nearbyint(d.y / box_.ly);
+            const double reach = discs ? sorted_radius_[a] + sorted_radius_[b] : 0.0;
+            if (d.x * d.x + d.y * d.y < (discs ? reach * reach : c2)) visit(order_[a], order_[b], d);
+        };
         for (int cy = 0; cy < ny_; ++cy) {
             for (int cx = 0; cx < nx_; ++cx) {
                 const int c = cy * nx_ + cx;
-                const std::uint32_t* begin = order_.data() + start_[c];
-                const std::uint32_t* end = order_.data() + start_[c + 1];
+                const std::uint32_t begin = start_[c], end = start_[c + 1];
                 if (begin == end) continue;  // sparse systems: most cells are empty
-                for (const std::uint32_t* p = begin; p != end; ++p)
-                    for (const std::uint32_t* q = p + 1; q != end; ++q) visit(*p, *q);
+                for (std::uint32_t a = begin; a < end; ++a)
+                    for (std::uint32_t b = a + 1; b < end; ++b) consider(a, b, 0.0, 0.0);
                 for (const auto& [dx, dy] : half_stencil_) {
-                    const int nc = wrap(cy + dy, ny_) * nx_ + wrap(cx + dx, nx_);
-                    const std::uint32_t* nb = order_.data() + start_[nc];
-                    const std::uint32_t* ne = order_.data() + start_[nc + 1];
-                    for (const std::uint32_t* p = begin; p != end; ++p)
-                        for (const std::uint32_t* q = nb; q != ne; ++q) visit(*p, *q);
+                    int ncx = cx + dx, ncy = cy + dy;
+                    double sx = 0.0, sy = 0.0;  // brings the neighbour's image next to cell c
+                    if (ncx < 0) ncx += nx_, sx = box_.lx;
+                    else if (ncx >= nx_) ncx -= nx_, sx = -box_.lx;
+                    if (ncy < 0) ncy += ny_, sy = box_.ly;
+                    else if (ncy >= ny_) ncy -= ny_, sy = -box_.ly;
+                    const int nc = ncy * nx_ + ncx;
+                    const std::uint32_t nbegin = start_[nc], nend = start_[nc + 1];
+                    for (std::uint32_t a = begin; a < end; ++a)
+                        for (std::uint32_t b = nbegin; b < nend; ++b) consider(a, b, sx, sy);
                 }
             }
         }
@@ -55,13 +82,17 @@ public:
     int cells_y() const { return ny_; }
 
 private:
-    static int wrap(int i, int n) { return i < 0 ? i + n : (i >= n ? i - n : i); }
-
+    PeriodicBox2D box_;
+    double cutoff_ = 0.0;
     int nx_ = 1, ny_ = 1;
+    bool single_x_ = true, single_y_ = true;
     bool stencil_built_ = false;
     std::vector<std::pair<int, int>> half_stencil_;  // neighbour offsets, each pair of cells once
-    std::vector<std::uint32_t> start_;               // first index into order_ of each cell
-    std::vector<std::uint32_t> order_;               // point indices sorted by cell
+    std::vector<std::uint32_t> start_;               // first slot of each cell
+    std::vector<std::uint32_t> order_;               // original index of each slot
+    std::vector<Vec3> sorted_;                       // wrapped points in slot order
+    std::vector<double> sorted_radius_;              // discs only, slot order
+    std::vector<std::uint32_t> sorted_group_;        // discs only, slot order
     std::vector<std::uint32_t> cell_of_;             // scratch: cell of each point
     std::vector<std::uint32_t> cursor_;              // scratch: next free slot per cell
 };
