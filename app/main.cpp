@@ -1,4 +1,6 @@
 // rodsea: command-line entry. For now one command, `demo`, runs the built-in default scene.
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -9,7 +11,8 @@
 
 namespace {
 
-constexpr const char* kUsage = R"(rodsea — vibrated granular rods: polar rods in a sea of apolar rods
+constexpr const char* kUsage =
+    R"(rodsea — vibrated granular rods: polar rods in a sea of apolar rods
 
 usage:
   rodsea demo [options]   run the built-in default scene and write CSV output
@@ -17,7 +20,7 @@ usage:
   rodsea --version
 
 demo options:
-  --periods N     simulated drive periods (5 ms each at 200 Hz)     [default 20]
+  --periods N     simulated drive periods (5 ms each at 200 Hz)     [default 40]
   --box L         side of the square periodic box, mm               [default 30]
   --epsilon E     rotational noise strength of polar rods, 1/mm      [default 0]
   --seed S        random seed (initial orientations, noise signs)    [default 1]
@@ -33,7 +36,8 @@ double parse_number(std::string_view flag, const char* text) {
     char* end = nullptr;
     const double v = std::strtod(text, &end);
     if (end == text || *end != '\0')
-        throw rodsea::InvalidParameter(std::string(flag), std::string("'") + text + "'", "a number");
+        throw rodsea::InvalidParameter(std::string(flag), std::string("'") + text + "'",
+                                       "a number");
     return v;
 }
 
@@ -65,19 +69,30 @@ int main(int argc, char** argv) {
                 std::cout << kUsage;
                 return 0;
             }
+            constexpr std::string_view kValued[] = {"--periods", "--box", "--epsilon", "--seed",
+                                                    "--out"};
+            if (std::find(std::begin(kValued), std::end(kValued), flag) == std::end(kValued)) {
+                std::cerr << "rodsea: unknown option '" << flag
+                          << "' (demo options: --periods --box --epsilon --seed --out --quiet)\n";
+                return 2;
+            }
             if (i + 1 >= argc)
                 throw rodsea::InvalidParameter(std::string(flag), "nothing", "a value after it");
             const char* value = argv[++i];
-            if (flag == "--periods") options.drive_periods = parse_number(flag, value);
-            else if (flag == "--box") options.box_side = parse_number(flag, value);
-            else if (flag == "--epsilon") options.noise_epsilon = parse_number(flag, value);
-            else if (flag == "--seed") {
-                const double s = parse_number(flag, value);
-                if (s < 0 || s != std::floor(s))
-                    throw rodsea::InvalidParameter("--seed", value, "an integer >= 0");
-                options.seed = static_cast<std::uint64_t>(s);
-            } else if (flag == "--out") options.out_dir = value;
-            else throw rodsea::InvalidParameter(std::string(flag), "given", "one of the options in --help");
+            if (flag == "--periods") {
+                options.drive_periods = parse_number(flag, value);
+            } else if (flag == "--box") {
+                options.box_side = parse_number(flag, value);
+            } else if (flag == "--epsilon") {
+                options.noise_epsilon = parse_number(flag, value);
+            } else if (flag == "--seed") {
+                const double seed = parse_number(flag, value);
+                if (seed < 0 || seed != std::floor(seed) || seed > 9.0e15)
+                    throw rodsea::InvalidParameter("--seed", value, "an integer in [0, 9e15]");
+                options.seed = static_cast<std::uint64_t>(seed);
+            } else {
+                options.out_dir = value;
+            }
         }
         return rodsea::run_demo(options, std::cout);
     } catch (const rodsea::InvalidParameter& e) {

@@ -66,8 +66,10 @@ double deepest_overlap(const Shape& a, const Vec3& xa, const Quat& qa, const Sha
     double deepest = 0.0;
     for (size_t i = 0; i < a.sphere_count(); ++i)
         for (size_t j = 0; j < b.sphere_count(); ++j) {
-            const double d = norm((xa + rotate(qa, a.offsets[i])) - (xb + rotate(qb, b.offsets[j])));
-            deepest = std::max(deepest, (a.radii[i] + b.radii[j] - d) / std::min(a.radii[i], b.radii[j]));
+            const double d =
+                norm((xa + rotate(qa, a.offsets[i])) - (xb + rotate(qb, b.offsets[j])));
+            deepest =
+                std::max(deepest, (a.radii[i] + b.radii[j] - d) / std::min(a.radii[i], b.radii[j]));
         }
     return deepest;
 }
@@ -100,9 +102,9 @@ TEST(TwoBodyCollision, HeadOnRodsEndToEndFrictionless) {
     const Quat along_x = flat_orientation(0.0);
     // End spheres (radius 0.2 mm, centres 1.05 mm from the centre) overlap by 0.1 µm.
     const double separation = 2 * 1.05 + 0.4 - 1e-4;
-    const Outcome o = collide(rod, rod, {kCentre, along_x, {25, 0, 0}, {}},
-                              {kCentre + Vec3{separation, 0, 0}, along_x, {-25, 0, 0}, {}},
-                              {0.0, 0.3});
+    const Outcome o =
+        collide(rod, rod, {kCentre, along_x, {25, 0, 0}, {}},
+                {kCentre + Vec3{separation, 0, 0}, along_x, {-25, 0, 0}, {}}, {0.0, 0.3});
     ASSERT_EQ(o.contacts, 1u);
     EXPECT_NEAR(o.un_after / o.un_before, -0.3, 1e-12);
 }
@@ -112,8 +114,8 @@ TEST(TwoBodyCollision, ObliqueRodsWithFriction) {
     const Species apolar = apolar_rod_species(4.5);
     // The polar rod's thin end (+x) meets the side of a tilted apolar rod crossing in front.
     const Quat qa = flat_orientation(0.3);
-    const Quat qb = flat_orientation(0.3 + std::numbers::pi / 2) *
-                    Quat::from_axis_angle({1, 0, 0}, 0.2);
+    const Quat qb =
+        flat_orientation(0.3 + std::numbers::pi / 2) * Quat::from_axis_angle({1, 0, 0}, 0.2);
     const Shape& sa = polar.shape;
     const Vec3 tip = kCentre + rotate(qa, sa.offsets.back());
     const Vec3 n = rotate(qa, Vec3{1, 0, 0});
@@ -159,8 +161,8 @@ TEST(TwoBodyCollision, RandomRodPairsConserveMomentumAndNeverGainEnergy) {
         const Vec3 vb = va + rng.uniform(5, 60) * n;  // b moves toward a along n
         const Vec3 wa{rng.uniform(-50, 50), rng.uniform(-50, 50), rng.uniform(-50, 50)};
         const Vec3 wb{rng.uniform(-50, 50), rng.uniform(-50, 50), rng.uniform(-50, 50)};
-        const ContactCoefficients k = trial % 2 ? ContactCoefficients{0.0, 0.3}
-                                                : ContactCoefficients{0.05, 0.3};
+        const ContactCoefficients k =
+            trial % 2 ? ContactCoefficients{0.0, 0.3} : ContactCoefficients{0.05, 0.3};
         const Outcome o = collide(a, b, {kCentre, qa, va, wa}, {xb, qb, vb, wb}, k);
         if (o.impulses > 0) ++with_impulse;
         if (k.friction == 0.0 && o.contacts == 1 && o.impulses == 1) {

@@ -18,7 +18,8 @@ TEST(DenseMonolayer, StaysInTheGapWithSmallOverlapsForOneHundredPeriods) {
     Scene scene = row_packed_monolayer({{rods, n}}, box, 17);
     Simulation sim(scene.params, scene.bodies);
     const double period = 2 * std::numbers::pi / scene.params.drive.angular_frequency;
-    const auto steps_per_period = static_cast<std::uint64_t>(std::llround(period / scene.params.dt));
+    const auto steps_per_period =
+        static_cast<std::uint64_t>(std::llround(period / scene.params.dt));
 
     double worst_escape = 0.0;  // how far any sphere surface got beyond a plate (mm)
     for (int p = 0; p < 100; ++p) {
@@ -28,15 +29,17 @@ TEST(DenseMonolayer, StaysInTheGapWithSmallOverlapsForOneHundredPeriods) {
             const SphereTable& spheres = sim.spheres();
             for (size_t k = 0; k < spheres.size(); ++k) {
                 const double z = spheres.position[k].z, r = spheres.radius[k];
-                worst_escape = std::max({worst_escape, plates.base_z - (z - r), (z + r) - plates.lid_z});
+                worst_escape =
+                    std::max({worst_escape, plates.base_z - (z - r), (z + r) - plates.lid_z});
             }
         }
     }
     const RunTotals& t = sim.totals();
-    std::printf("[ measured ] %lld rods, largest overlap %.4f of the smaller radius, "
-                "deepest plate penetration %.2e mm, most sweeps %d, impulses %llu\n",
-                n, t.max_overlap_fraction, worst_escape, t.max_sweeps,
-                static_cast<unsigned long long>(t.impulses));
+    std::printf(
+        "[ measured ] %lld rods, largest overlap %.4f of the smaller radius, "
+        "deepest plate penetration %.2e mm, most sweeps %d, impulses %llu\n",
+        n, t.max_overlap_fraction, worst_escape, t.max_sweeps,
+        static_cast<unsigned long long>(t.impulses));
     EXPECT_EQ(t.unresolved, 0u);
     // Bound: a contact overlaps by at most what the bodies' relative approach speed carries
     // them in one step before it is resolved. Relative speeds stay below ~4 AΩ ≈ 220 mm/s

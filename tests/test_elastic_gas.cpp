@@ -17,11 +17,14 @@ TEST(ElasticGas, KeepsKineticEnergyOverTenThousandSteps) {
     scene.params.drive.gamma = 0.0;
     scene.params.drive.gravity = 0.0;
     scene.params.body_body = {0.0, 1.0};
-    for (Species& s : scene.params.species) s.plate = {0.0, 1.0};
+    for (Species& s : scene.params.species)
+        s.plate = {0.0, 1.0};
     SplitMix64 rng(99);
     for (size_t b = 0; b < scene.bodies.size(); ++b) {
-        scene.bodies.velocity[b] = {rng.uniform(-150, 150), rng.uniform(-150, 150), rng.uniform(-60, 60)};
-        scene.bodies.spin[b] = {rng.uniform(-100, 100), rng.uniform(-100, 100), rng.uniform(-100, 100)};
+        scene.bodies.velocity[b] = {rng.uniform(-150, 150), rng.uniform(-150, 150),
+                                    rng.uniform(-60, 60)};
+        scene.bodies.spin[b] = {rng.uniform(-100, 100), rng.uniform(-100, 100),
+                                rng.uniform(-100, 100)};
     }
     Simulation sim(scene.params, scene.bodies);
     const double e0 = sim.kinetic_energy();

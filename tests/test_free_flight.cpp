@@ -58,7 +58,8 @@ TEST(FreeFlight, SymmetricRodPrecessesExactly) {
     const Vec3 expected = rotate(Quat::from_axis_angle(normalized(l0), norm(l0) * sim.time() / i.y),
                                  rotate(q0, Vec3{1, 0, 0}));
     EXPECT_NEAR(norm(axis - expected), 0.0, 1e-11);
-    EXPECT_NEAR(norm(sim.angular_momentum(sim.bodies().position[0]) - l0), 0.0, kRoundOff * norm(l0));
+    EXPECT_NEAR(norm(sim.angular_momentum(sim.bodies().position[0]) - l0), 0.0,
+                kRoundOff * norm(l0));
     EXPECT_NEAR(sim.kinetic_energy(), e0, kRoundOff * e0);
 }
 
@@ -93,10 +94,12 @@ struct Reference {
 };
 
 // An asymmetric body (three unequal, separate spheres) spinning near its unstable middle axis,
-// so that it tumbles: L is kept to round-off (2·10⁴ steps: 2 kRoundOff), energy to the splitting's bounded O((ω dt)²)
-// error (here (50 rad/s · 5 µs)² ≈ 6e-8), and the attitude follows the reference.
+// so that it tumbles: L is kept to round-off (2·10⁴ steps: 2 kRoundOff), energy to the splitting's
+// bounded O((ω dt)²) error (here (50 rad/s · 5 µs)² ≈ 6e-8), and the attitude follows the
+// reference.
 TEST(FreeFlight, AsymmetricBodyKeepsEnergyAndAngularMomentum) {
-    Species body{"tumbler", BodyKind::bead,
+    Species body{"tumbler",
+                 BodyKind::bead,
                  make_shape({{{0, 0, 0}, 0.3}, {{1.0, 0.2, 0}, 0.2}, {{0.1, 0.9, 0.3}, 0.25}}, 1.0),
                  {0.0, 0.3}};
     const Vec3 i = body.shape.principal_inertia;
@@ -116,7 +119,8 @@ TEST(FreeFlight, AsymmetricBodyKeepsEnergyAndAngularMomentum) {
     const int steps = 20000;  // 0.1 s: several tumbles
     for (int s = 0; s < steps; ++s) {
         sim.step();
-        for (int k = 0; k < 20; ++k) ref.step(scene.params.dt / 20);
+        for (int k = 0; k < 20; ++k)
+            ref.step(scene.params.dt / 20);
         EXPECT_NEAR(sim.kinetic_energy(), e0, 1e-6 * e0);
     }
     EXPECT_NEAR(norm(sim.angular_momentum(sim.bodies().position[0]) - l0), 0.0,

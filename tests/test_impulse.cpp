@@ -20,8 +20,8 @@ struct RodOnWall {
 
 RodOnWall random_rod_on_wall(SplitMix64& rng) {
     const Shape shape = polar_rod_species().shape;
-    const Quat q = normalized(Quat{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1),
-                                   rng.uniform(-1, 1)});
+    const Quat q = normalized(
+        Quat{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)});
     const Mat3 r = to_matrix(q);
     const Vec3& i = shape.principal_inertia;
     const Mat3 inv_i = r * Mat3::diagonal({1 / i.x, 1 / i.y, 1 / i.z}) * transpose(r);

@@ -22,7 +22,8 @@ TEST(MassProperties, OneSphereMatchesAnalytic) {
     const double v = 4.0 / 3.0 * kPi * r * r * r;
     EXPECT_NEAR(mp.volume, v, 1e-14 * v);
     EXPECT_NEAR(mp.centre_of_mass.x, 0.3, 1e-14);
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(mp.inertia(k, k), 0.4 * v * r * r, 1e-14 * v);
+    for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(mp.inertia(k, k), 0.4 * v * r * r, 1e-14 * v);
 }
 
 TEST(MassProperties, TwoTouchingEqualSpheresMatchParallelAxis) {
@@ -67,10 +68,10 @@ TEST(MassProperties, PolarRodAgreesWithBruteForceIntegration) {
 
 TEST(ProjectedArea, TwoOverlappingDiscsMatchTheLensFormula) {
     const double r1 = 0.7, r2 = 0.4, d = 0.8;
-    const double lens = r1 * r1 * std::acos((d * d + r1 * r1 - r2 * r2) / (2 * d * r1)) +
-                        r2 * r2 * std::acos((d * d + r2 * r2 - r1 * r1) / (2 * d * r2)) -
-                        0.5 * std::sqrt((-d + r1 + r2) * (d + r1 - r2) * (d - r1 + r2) *
-                                        (d + r1 + r2));
+    const double lens =
+        r1 * r1 * std::acos((d * d + r1 * r1 - r2 * r2) / (2 * d * r1)) +
+        r2 * r2 * std::acos((d * d + r2 * r2 - r1 * r1) / (2 * d * r2)) -
+        0.5 * std::sqrt((-d + r1 + r2) * (d + r1 - r2) * (d - r1 + r2) * (d + r1 + r2));
     const double expected = kPi * (r1 * r1 + r2 * r2) - lens;
     EXPECT_NEAR(projected_area({{{0, 0, 0}, r1}, {{d, 0, 0}, r2}}), expected, 1e-14);
     // Off-axis arrangement, contained disc and duplicate disc.
@@ -104,8 +105,8 @@ struct TableS1Row {
 TEST(Counts, ReproduceTableS1) {
     const Box box{252.0, 252.0};
     const TableS1Row rows[] = {
-        {"l_a=1.0", 1.0, 0.05, 0.75, 5644, 84660},  {"l_a=1.5", 1.5, 0.05, 0.50, 3921, 39212},
-        {"l_a=2.0", 2.0, 0.05, 0.50, 2927, 29266},  {"l_a=2.5", 2.5, 0.05, 0.80, 2322, 37147},
+        {"l_a=1.0", 1.0, 0.05, 0.75, 5644, 84660}, {"l_a=1.5", 1.5, 0.05, 0.50, 3921, 39212},
+        {"l_a=2.0", 2.0, 0.05, 0.50, 2927, 29266}, {"l_a=2.5", 2.5, 0.05, 0.80, 2322, 37147},
         {"l_a=4.5", 4.5, 0.05, 0.75, 1261, 18915},
     };
     for (const TableS1Row& row : rows) {
@@ -119,7 +120,8 @@ TEST(Counts, ReproduceTableS1) {
     // The paper's polar counts (801, 3203) are within 0.2 % of the 13-sphere rod's.
     const Shape polar = polar_rod_species().shape;
     EXPECT_NEAR(static_cast<double>(count_for_area_fraction(0.05, box, polar)), 801.0, 0.002 * 801);
-    EXPECT_NEAR(static_cast<double>(count_for_area_fraction(0.20, box, polar)), 3203.0, 0.002 * 3203);
+    EXPECT_NEAR(static_cast<double>(count_for_area_fraction(0.20, box, polar)), 3203.0,
+                0.002 * 3203);
 }
 
 TEST(Shape, MassRatioAndInertiaScaleWithMass) {
@@ -150,8 +152,11 @@ TEST(Shape, AsymmetricBodyIsStoredInItsPrincipalFrame) {
     const double scale = 2.0 / mp.volume;
     for (int i = 0; i < 3; ++i) {
         EXPECT_NEAR(scale * mp.inertia(i, i), shape.principal_inertia[i], 1e-12);
-        for (int j = 0; j < 3; ++j)
-            if (i != j) EXPECT_NEAR(mp.inertia(i, j), 0.0, 1e-12);
+        for (int j = 0; j < 3; ++j) {
+            if (i != j) {
+                EXPECT_NEAR(mp.inertia(i, j), 0.0, 1e-12);
+            }
+        }
     }
     EXPECT_NEAR(norm(shape.offsets[1] - shape.offsets[2]),
                 norm(spheres[1].centre - spheres[2].centre), 1e-12);

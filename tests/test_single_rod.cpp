@@ -16,9 +16,9 @@ namespace rodsea {
 namespace {
 
 struct Drift {
-    double axial_speed = 0.0;       // mm/s, + = toward body +x (thin end of a polar rod)
-    double transverse_speed = 0.0;  // mm/s, in-plane, perpendicular to the axis
-    double window_speed_sd = 0.0;   // spread of the axial speed over windows, mm/s
+    double axial_speed = 0.0;          // mm/s, + = toward body +x (thin end of a polar rod)
+    double transverse_speed = 0.0;     // mm/s, in-plane, perpendicular to the axis
+    double window_speed_sd = 0.0;      // spread of the axial speed over windows, mm/s
     double consistent_fraction = 0.0;  // windows whose axial motion has the sign of the mean
     int windows = 0;
 };
@@ -49,14 +49,16 @@ Drift measure_drift(const Species& species, int periods, int window_periods, dou
     }
     Drift drift;
     double total_axial = 0.0, total_transverse = 0.0;
-    for (int p = 0; p < periods; ++p) total_axial += axial[p], total_transverse += transverse[p];
+    for (int p = 0; p < periods; ++p)
+        total_axial += axial[p], total_transverse += transverse[p];
     const double duration = periods * period;
     drift.axial_speed = total_axial / duration;
     drift.transverse_speed = total_transverse / duration;
     std::vector<double> window_speeds;
     for (int w = 0; w + window_periods <= periods; w += window_periods) {
         double s = 0.0;
-        for (int p = w; p < w + window_periods; ++p) s += axial[p];
+        for (int p = w; p < w + window_periods; ++p)
+            s += axial[p];
         window_speeds.push_back(s / (window_periods * period));
     }
     drift.windows = static_cast<int>(window_speeds.size());
@@ -74,10 +76,11 @@ Drift measure_drift(const Species& species, int periods, int window_periods, dou
 
 TEST(SingleRod, PolarRodTravelsAlongItsAxisInAConsistentDirection) {
     const Drift d = measure_drift(polar_rod_species(), 200, 10, 0.05);
-    std::printf("[ measured ] polar rod, 200 periods: axial speed %+.3f mm/s (%s), transverse "
-                "%+.3f mm/s, window sd %.3f mm/s, %.0f %% of %d windows in the mean direction\n",
-                d.axial_speed, d.axial_speed > 0 ? "thick -> thin" : "thin -> thick",
-                d.transverse_speed, d.window_speed_sd, 100 * d.consistent_fraction, d.windows);
+    std::printf(
+        "[ measured ] polar rod, 200 periods: axial speed %+.3f mm/s (%s), transverse "
+        "%+.3f mm/s, window sd %.3f mm/s, %.0f %% of %d windows in the mean direction\n",
+        d.axial_speed, d.axial_speed > 0 ? "thick -> thin" : "thin -> thick", d.transverse_speed,
+        d.window_speed_sd, 100 * d.consistent_fraction, d.windows);
     // Along the axis: the axial drift dominates the transverse one.
     EXPECT_GT(std::abs(d.axial_speed), 3.0 * std::abs(d.transverse_speed));
     // Consistent: the mean is many standard errors from zero and most windows agree with it.
@@ -102,11 +105,13 @@ TEST(SingleRod, ApolarRodShowsNoSystematicAxialDrift) {
         mean_abs += std::abs(speeds.back()) / starts;
     }
     double var = 0.0;
-    for (double v : speeds) var += (v - mean) * (v - mean);
+    for (double v : speeds)
+        var += (v - mean) * (v - mean);
     const double standard_error = std::sqrt(var / (starts - 1) / starts);
-    std::printf("[ measured ] apolar rod, %d starts x 200 periods: mean axial speed %+.3f mm/s "
-                "(standard error %.3f), mean |speed| %.3f mm/s\n",
-                starts, mean, standard_error, mean_abs);
+    std::printf(
+        "[ measured ] apolar rod, %d starts x 200 periods: mean axial speed %+.3f mm/s "
+        "(standard error %.3f), mean |speed| %.3f mm/s\n",
+        starts, mean, standard_error, mean_abs);
     // 3 standard errors: a false alarm once in ~370 seeds for a truly unbiased rod.
     EXPECT_LT(std::abs(mean), 3.0 * standard_error);
 }

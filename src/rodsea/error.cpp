@@ -24,7 +24,8 @@ std::string format_number(double value) {
 }
 
 void require_finite(const std::string& name, double value, const std::string& unit) {
-    if (!std::isfinite(value)) throw InvalidParameter(name, with_unit(value, unit), "a finite number");
+    if (!std::isfinite(value))
+        throw InvalidParameter(name, with_unit(value, unit), "a finite number");
 }
 
 void require_positive(const std::string& name, double value, const std::string& unit) {

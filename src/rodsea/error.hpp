@@ -9,12 +9,12 @@
 namespace rodsea {
 
 class InvalidParameter : public std::invalid_argument {
-public:
+  public:
     InvalidParameter(const std::string& name, const std::string& value, const std::string& allowed,
                      const std::string& why = "");
     const std::string& name() const { return name_; }
 
-private:
+  private:
     std::string name_;
 };
 

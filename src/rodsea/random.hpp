@@ -13,14 +13,14 @@ constexpr std::uint64_t splitmix64(std::uint64_t x) {
 }
 
 class SplitMix64 {
-public:
+  public:
     explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
     std::uint64_t next() { return splitmix64(state_++); }
     double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }  // [0, 1)
     double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
     std::uint64_t state() const { return state_; }
 
-private:
+  private:
     std::uint64_t state_;
 };
 

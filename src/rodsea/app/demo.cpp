@@ -42,9 +42,9 @@ std::string bodies_csv(const Simulation& sim) {
         const Vec3 &x = b.position[i], &v = b.velocity[i], &w = b.spin[i];
         const Quat& q = b.orientation[i];
         s << i << ',' << sp.name << ',' << to_string(sp.kind) << ',' << x.x << ',' << x.y << ','
-          << x.z << ',' << q.w << ',' << q.x << ',' << q.y << ',' << q.z << ',' << v.x << ','
-          << v.y << ',' << v.z << ',' << w.x << ',' << w.y << ',' << w.z << ','
-          << in_plane_angle(q) << '\n';
+          << x.z << ',' << q.w << ',' << q.x << ',' << q.y << ',' << q.z << ',' << v.x << ',' << v.y
+          << ',' << v.z << ',' << w.x << ',' << w.y << ',' << w.z << ',' << in_plane_angle(q)
+          << '\n';
     }
     return s.str();
 }
@@ -70,27 +70,29 @@ int run_demo(const DemoOptions& o, std::ostream& log) {
     require_positive("--box", o.box_side, "mm");
     require_non_negative("--epsilon", o.noise_epsilon, "1/mm");
 
-    Scene scene = polar_in_apolar_mixture(o.phi_polar, o.apolar_length, o.phi_apolar, o.box_side,
-                                          o.seed);
+    Scene scene =
+        polar_in_apolar_mixture(o.phi_polar, o.apolar_length, o.phi_apolar, o.box_side, o.seed);
     scene.params.noise_epsilon = o.noise_epsilon;
     const double period = 2.0 * std::numbers::pi / scene.params.drive.angular_frequency;
-    const auto steps = static_cast<std::uint64_t>(std::llround(o.drive_periods * period / scene.params.dt));
+    const auto steps =
+        static_cast<std::uint64_t>(std::llround(o.drive_periods * period / scene.params.dt));
     Simulation sim(scene.params, scene.bodies);
     const EngineParameters& p = sim.parameters();
 
     std::filesystem::create_directories(o.out_dir);
     log << "rodsea demo: polar rods in apolar rods (l_a = " << o.apolar_length << " mm)\n"
-        << "  box " << p.box.lx << " x " << p.box.ly << " mm, gap " << p.drive.gap
-        << " mm, Gamma " << p.drive.gamma << ", A = " << p.drive.amplitude() * 1e3 << " um\n"
-        << "  bodies " << sim.bodies().size() << ", spheres " << sim.spheres().size()
-        << ", dt " << p.dt * 1e6 << " us, " << steps << " steps (" << o.drive_periods
-        << " drive periods, " << static_cast<double>(steps) * p.dt << " s)\n"
+        << "  box " << p.box.lx << " x " << p.box.ly << " mm, gap " << p.drive.gap << " mm, Gamma "
+        << p.drive.gamma << ", A = " << p.drive.amplitude() * 1e3 << " um\n"
+        << "  bodies " << sim.bodies().size() << ", spheres " << sim.spheres().size() << ", dt "
+        << p.dt * 1e6 << " us, " << steps << " steps (" << o.drive_periods << " drive periods, "
+        << static_cast<double>(steps) * p.dt << " s)\n"
         << "  output " << o.out_dir << "/{bodies,shapes,timeseries}.csv\n";
 
     std::ostringstream series;
     series << std::setprecision(10);
     series << "# time in s, kinetic energy in mass units mm^2/s^2\n"
-           << "time,P_polar,S_apolar,kinetic_energy,max_overlap_fraction,unresolved_total,max_sweeps\n";
+           << "time,P_polar,S_apolar,kinetic_energy,max_overlap_fraction,unresolved_total,max_"
+              "sweeps\n";
     const auto record = [&] {
         series << sim.time() << ',' << orientational_order(sim.bodies(), 0, 1) << ','
                << orientational_order(sim.bodies(), 1, 2) << ',' << sim.kinetic_energy() << ','
@@ -126,7 +128,7 @@ int run_demo(const DemoOptions& o, std::ostream& log) {
     write_atomically(dir / "timeseries.csv", series.str());
 
     const StageProfile& prof = sim.profile();
-    log << "done: P = " << orientational_order(sim.bodies(), 0, 1)
+    log << std::setprecision(4) << "done: P = " << orientational_order(sim.bodies(), 0, 1)
         << ", largest overlap " << sim.totals().max_overlap_fraction * 100
         << " % of a radius, unresolved contacts " << sim.totals().unresolved
         << ", most sweeps in a step " << sim.totals().max_sweeps << "\n"

@@ -8,12 +8,12 @@
 namespace rodsea {
 
 struct DemoOptions {
-    double drive_periods = 20.0;  // length of the run, in drive periods (5 ms each by default)
+    double drive_periods = 40.0;  // length of the run, in drive periods (5 ms each by default)
     double box_side = 30.0;       // mm
     double phi_polar = 0.05;
     double phi_apolar = 0.30;
-    double apolar_length = 2.5;   // mm
-    double noise_epsilon = 0.0;   // 1/mm
+    double apolar_length = 2.5;  // mm
+    double noise_epsilon = 0.0;  // 1/mm
     std::uint64_t seed = 1;
     std::string out_dir = "out/demo";
     bool quiet = false;

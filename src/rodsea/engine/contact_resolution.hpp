@@ -33,12 +33,12 @@ struct ResolutionStats {
 };
 
 class ContactResolver {
-public:
+  public:
     ResolutionStats resolve(const std::vector<Contact>& contacts, BodyState& bodies,
                             const InverseInertia& inertia, double plate_velocity_z,
                             const EngineParameters& params, std::vector<PlateHit>& hits);
 
-private:
+  private:
     std::vector<int> last_changed_;  // per body: the last sweep that gave it an impulse
 };
 

@@ -12,7 +12,8 @@ ContactSearchStats find_contacts(const SphereTable& spheres, const BodyState& bo
     ContactSearchStats stats;
     const PeriodicBox2D box{params.box.lx, params.box.ly};
     double max_radius = 0.0;
-    for (const Species& s : params.species) max_radius = std::max(max_radius, s.shape.max_radius);
+    for (const Species& s : params.species)
+        max_radius = std::max(max_radius, s.shape.max_radius);
 
     cells.build(spheres.position, spheres.radius, spheres.body, box, 2.0 * max_radius);
     cells.for_each_pair_within([&](std::uint32_t i, std::uint32_t j, const Vec3& d) {
@@ -35,8 +36,7 @@ ContactSearchStats find_contacts(const SphereTable& spheres, const BodyState& bo
         c.friction = k.friction;
         c.restitution = k.restitution;
         stats.max_overlap_fraction = std::max(
-            stats.max_overlap_fraction,
-            c.overlap / std::min(spheres.radius[i], spheres.radius[j]));
+            stats.max_overlap_fraction, c.overlap / std::min(spheres.radius[i], spheres.radius[j]));
         out.push_back(c);
     });
     stats.body_contacts = out.size();

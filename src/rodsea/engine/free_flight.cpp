@@ -8,9 +8,13 @@ namespace {
 
 constexpr double kSameMoment = 1e-12;  // relative: moments closer than this are equal
 
-bool same(double a, double b) { return std::abs(a - b) <= kSameMoment * std::max(a, b); }
+bool same(double a, double b) {
+    return std::abs(a - b) <= kSameMoment * std::max(a, b);
+}
 
-Vec3 unit_axis(int k) { return k == 0 ? Vec3{1, 0, 0} : (k == 1 ? Vec3{0, 1, 0} : Vec3{0, 0, 1}); }
+Vec3 unit_axis(int k) {
+    return k == 0 ? Vec3{1, 0, 0} : (k == 1 ? Vec3{0, 1, 0} : Vec3{0, 0, 1});
+}
 
 // Rotates q by angle about a world axis (left) — used for the precession about L.
 Quat rotate_about_world(const Quat& q, const Vec3& axis, double angle) {
@@ -36,10 +40,14 @@ void rotate_free(Quat& q, Vec3& spin, const Vec3& inertia, double dt) {
 
     // Index of the distinct moment for an axisymmetric body, -1 if none, 3 for a sphere.
     int axis = -1;
-    if (same(inertia.x, inertia.y) && same(inertia.y, inertia.z)) axis = 3;
-    else if (same(inertia.y, inertia.z)) axis = 0;
-    else if (same(inertia.x, inertia.z)) axis = 1;
-    else if (same(inertia.x, inertia.y)) axis = 2;
+    if (same(inertia.x, inertia.y) && same(inertia.y, inertia.z))
+        axis = 3;
+    else if (same(inertia.y, inertia.z))
+        axis = 0;
+    else if (same(inertia.x, inertia.z))
+        axis = 1;
+    else if (same(inertia.x, inertia.y))
+        axis = 2;
 
     if (axis == 3) {
         q = rotate_about_world(q, l_world / l, l * dt / inertia.x);

@@ -14,7 +14,7 @@ namespace rodsea {
 // the exact rotations about the three principal axes (energy error O(dt²), bounded).
 void rotate_free(Quat& orientation, Vec3& spin, const Vec3& inertia, double dt);
 
-void advance_free_flight(BodyState& bodies, const std::vector<Species>& species,
-                         const Box& box, double gravity, double dt);
+void advance_free_flight(BodyState& bodies, const std::vector<Species>& species, const Box& box,
+                         double gravity, double dt);
 
 }  // namespace rodsea

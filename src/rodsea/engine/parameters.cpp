@@ -7,22 +7,28 @@ namespace rodsea {
 
 const char* to_string(BodyKind kind) {
     switch (kind) {
-        case BodyKind::polar_rod: return "polar_rod";
-        case BodyKind::apolar_rod: return "apolar_rod";
-        case BodyKind::bead: return "bead";
+        case BodyKind::polar_rod:
+            return "polar_rod";
+        case BodyKind::apolar_rod:
+            return "apolar_rod";
+        case BodyKind::bead:
+            return "bead";
     }
     return "unknown";
 }
 
 Species polar_rod_species(double mass) {
     // Table S2: polar rod – plate μ = 0.03, e = 0.10.
-    return {"polar_rod", BodyKind::polar_rod,
-            make_shape(polar_rod_spheres({}), mass, "polar_rod"), {0.03, 0.10}};
+    return {"polar_rod",
+            BodyKind::polar_rod,
+            make_shape(polar_rod_spheres({}), mass, "polar_rod"),
+            {0.03, 0.10}};
 }
 
 Species apolar_rod_species(double length_mm, double mass) {
     // Table S2: apolar rod – plate μ = 0.01, e = 0.30.
-    return {"apolar_rod", BodyKind::apolar_rod,
+    return {"apolar_rod",
+            BodyKind::apolar_rod,
             make_shape(apolar_rod_spheres(ApolarRodGeometry::with_length(length_mm)), mass,
                        "apolar_rod"),
             {0.01, 0.30}};
@@ -65,16 +71,17 @@ void validate(const EngineParameters& p) {
         validate_coefficients(prefix + ".plate", s.plate);
         const double diameter = 2.0 * s.shape.max_radius;
         if (!(diameter < p.drive.gap)) {
-            throw InvalidParameter(
-                "drive.gap", format_number(p.drive.gap) + " mm",
-                "> " + format_number(diameter) + " mm",
-                std::string(to_string(s.kind)) + " '" + s.name + "' has a sphere of diameter " +
-                    format_number(diameter) + " mm that does not fit between the plates");
+            throw InvalidParameter("drive.gap", format_number(p.drive.gap) + " mm",
+                                   "> " + format_number(diameter) + " mm",
+                                   std::string(to_string(s.kind)) + " '" + s.name +
+                                       "' has a sphere of diameter " + format_number(diameter) +
+                                       " mm that does not fit between the plates");
         }
         longest = std::max(longest, s.shape.extent);
     }
     // A body must not meet two images of another body through the periodic boundary.
-    for (const auto& [name, side] : {std::pair{"box.lx", p.box.lx}, std::pair{"box.ly", p.box.ly}}) {
+    for (const auto& [name, side] :
+         {std::pair{"box.lx", p.box.lx}, std::pair{"box.ly", p.box.ly}}) {
         if (side < 2.0 * longest) {
             throw InvalidParameter(name, format_number(side) + " mm",
                                    ">= " + format_number(2.0 * longest) + " mm",
@@ -91,8 +98,7 @@ void validate(const EngineParameters& p) {
         }
         for (size_t a = 0; a < n; ++a) {
             for (size_t b = 0; b < n; ++b) {
-                const std::string key =
-                    "body_body." + p.species[a].name + "-" + p.species[b].name;
+                const std::string key = "body_body." + p.species[a].name + "-" + p.species[b].name;
                 validate_coefficients(key, p.body_body_by_pair[a * n + b]);
                 const auto& ab = p.body_body_by_pair[a * n + b];
                 const auto& ba = p.body_body_by_pair[b * n + a];

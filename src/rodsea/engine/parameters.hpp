@@ -12,10 +12,10 @@ namespace rodsea {
 
 // The two plates: base at A cos Ωt, lid at A cos Ωt + w, A = Γ g / Ω².
 struct DriveParameters {
-    double gamma = 7.0;                        // Γ = AΩ²/g, dimensionless, [0, 1000]
+    double gamma = 7.0;                                   // Γ = AΩ²/g, dimensionless, [0, 1000]
     double angular_frequency = 400.0 * std::numbers::pi;  // Ω, rad/s, > 0
-    double gap = 1.5;                          // w, mm (MODEL.md CHOICE, provisional), > 0
-    double gravity = 9810.0;                   // g, mm/s² (MODEL.md CHOICE 9.81 m/s²), >= 0
+    double gap = 1.5;         // w, mm (MODEL.md CHOICE, provisional), > 0
+    double gravity = 9810.0;  // g, mm/s² (MODEL.md CHOICE 9.81 m/s²), >= 0
 
     double amplitude() const {  // A, mm
         return gamma * gravity / (angular_frequency * angular_frequency);
@@ -56,17 +56,16 @@ struct EngineParameters {
     // `body_body` for every pair (the paper uses one value for all pairs).
     ContactCoefficients body_body;
     std::vector<ContactCoefficients> body_body_by_pair;
-    double dt = 5e-6;             // s (MODEL.md CHOICE: 1000 steps per drive period), > 0
-    double noise_epsilon = 0.0;   // ε, 1/mm: ω_z += ε |u_n| η at plate hits of polar rods, >= 0
+    double dt = 5e-6;            // s (MODEL.md CHOICE: 1000 steps per drive period), > 0
+    double noise_epsilon = 0.0;  // ε, 1/mm: ω_z += ε |u_n| η at plate hits of polar rods, >= 0
     std::uint64_t seed = 1;
-    int max_sweeps = 2000;        // impulse sweeps per step before contacts count as unresolved
+    int max_sweeps = 2000;  // impulse sweeps per step before contacts count as unresolved
     // Relative normal speeds above −tolerance count as not approaching (mm/s). 1 nm/s moves a
     // body 5e-15 mm per step: far below any length in the model.
     double approach_tolerance = 1e-6;
 
     const ContactCoefficients& pair_coefficients(size_t a, size_t b) const {
-        return body_body_by_pair.empty() ? body_body
-                                         : body_body_by_pair[a * species.size() + b];
+        return body_body_by_pair.empty() ? body_body : body_body_by_pair[a * species.size() + b];
     }
 };
 

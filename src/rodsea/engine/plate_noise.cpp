@@ -14,8 +14,8 @@ double noise_sign(std::uint64_t seed, std::uint64_t step, std::uint32_t body, st
 }
 
 size_t apply_plate_noise(std::vector<PlateHit>& hits, BodyState& bodies,
-                         const std::vector<Species>& species, double epsilon,
-                         std::uint64_t seed, std::uint64_t step) {
+                         const std::vector<Species>& species, double epsilon, std::uint64_t seed,
+                         std::uint64_t step) {
     if (epsilon == 0.0 || hits.empty()) return 0;
     std::sort(hits.begin(), hits.end(), [](const PlateHit& x, const PlateHit& y) {
         return x.body != y.body ? x.body < y.body : x.plate < y.plate;

@@ -18,7 +18,7 @@ double noise_sign(std::uint64_t seed, std::uint64_t step, std::uint32_t body, st
 
 // Returns the number of kicks given. Sorts `hits` in place.
 size_t apply_plate_noise(std::vector<PlateHit>& hits, BodyState& bodies,
-                         const std::vector<Species>& species, double epsilon,
-                         std::uint64_t seed, std::uint64_t step);
+                         const std::vector<Species>& species, double epsilon, std::uint64_t seed,
+                         std::uint64_t step);
 
 }  // namespace rodsea

@@ -1,7 +1,7 @@
 #include "rodsea/engine/simulation.hpp"
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -15,7 +15,7 @@ namespace rodsea {
 namespace {
 
 class StageTimer {
-public:
+  public:
     explicit StageTimer(double& sink) : sink_(sink), start_(std::chrono::steady_clock::now()) {}
     ~StageTimer() {
         sink_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
@@ -23,19 +23,22 @@ public:
     StageTimer(const StageTimer&) = delete;
     StageTimer& operator=(const StageTimer&) = delete;
 
-private:
+  private:
     double& sink_;
     std::chrono::steady_clock::time_point start_;
 };
 
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 void validate_bodies(const EngineParameters& params, BodyState& bodies) {
     if (bodies.size() == 0) throw InvalidParameter("bodies", "0 bodies", ">= 1 body");
     const size_t n = bodies.size();
     if (bodies.position.size() != n || bodies.orientation.size() != n ||
         bodies.velocity.size() != n || bodies.spin.size() != n) {
-        throw InvalidParameter("bodies", "arrays of different lengths", "one entry per body in each");
+        throw InvalidParameter("bodies", "arrays of different lengths",
+                               "one entry per body in each");
     }
     const PlateState plates = plate_state(params.drive, 0.0);
     for (size_t b = 0; b < n; ++b) {
@@ -127,17 +130,20 @@ void Simulation::step() {
                                   params_.seed, step_count_);
     }
 
-    last_ = {found.body_contacts, found.plate_contacts, resolved.sweeps,   resolved.impulses,
-             resolved.unresolved, kicks,               found.max_overlap_fraction};
+    last_ = {found.body_contacts,       found.plate_contacts, resolved.sweeps,
+             resolved.impulses,         resolved.unresolved,  kicks,
+             found.max_overlap_fraction};
     totals_.impulses += resolved.impulses;
     totals_.unresolved += resolved.unresolved;
     totals_.noise_kicks += kicks;
     totals_.max_sweeps = std::max(totals_.max_sweeps, resolved.sweeps);
-    totals_.max_overlap_fraction = std::max(totals_.max_overlap_fraction, found.max_overlap_fraction);
+    totals_.max_overlap_fraction =
+        std::max(totals_.max_overlap_fraction, found.max_overlap_fraction);
 }
 
 void Simulation::run(std::uint64_t steps) {
-    for (std::uint64_t i = 0; i < steps; ++i) step();
+    for (std::uint64_t i = 0; i < steps; ++i)
+        step();
 }
 
 double Simulation::kinetic_energy() const {

@@ -46,11 +46,13 @@ struct StageProfile {
     double contact_search = 0.0;
     double resolution = 0.0;
     double noise = 0.0;
-    double total() const { return free_flight + sphere_update + contact_search + resolution + noise; }
+    double total() const {
+        return free_flight + sphere_update + contact_search + resolution + noise;
+    }
 };
 
 class Simulation {
-public:
+  public:
     // Throws InvalidParameter for bad parameters, an empty body list, an unknown species index,
     // non-finite state, or a body that does not lie between the plates at t = 0.
     Simulation(EngineParameters params, BodyState bodies);
@@ -70,12 +72,12 @@ public:
     const RunTotals& totals() const { return totals_; }
     const StageProfile& profile() const { return profile_; }
 
-    double kinetic_energy() const;             // mass units · mm²/s²
-    Vec3 linear_momentum() const;              // mass units · mm/s
+    double kinetic_energy() const;                   // mass units · mm²/s²
+    Vec3 linear_momentum() const;                    // mass units · mm/s
     Vec3 angular_momentum(const Vec3& about) const;  // about a fixed point (no unwrapping)
-    std::uint64_t state_hash() const;          // FNV-1a over every bit of the state
+    std::uint64_t state_hash() const;                // FNV-1a over every bit of the state
 
-private:
+  private:
     EngineParameters params_;
     BodyState bodies_;
     std::uint64_t step_count_ = 0;

@@ -32,7 +32,8 @@ struct Mat3 {
     static constexpr Mat3 outer(const Vec3& u, const Vec3& v) {
         Mat3 m;
         for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) m(i, j) = u[i] * v[j];
+            for (int j = 0; j < 3; ++j)
+                m(i, j) = u[i] * v[j];
         return m;
     }
 
@@ -48,35 +49,41 @@ constexpr Vec3 operator*(const Mat3& m, const Vec3& v) {
 constexpr Mat3 operator*(const Mat3& p, const Mat3& q) {
     Mat3 m;
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) m(i, j) = dot(p.row(i), q.col(j));
+        for (int j = 0; j < 3; ++j)
+            m(i, j) = dot(p.row(i), q.col(j));
     return m;
 }
 constexpr Mat3 operator+(Mat3 p, const Mat3& q) {
-    for (int i = 0; i < 9; ++i) p.a[i] += q.a[i];
+    for (int i = 0; i < 9; ++i)
+        p.a[i] += q.a[i];
     return p;
 }
 constexpr Mat3 operator-(Mat3 p, const Mat3& q) {
-    for (int i = 0; i < 9; ++i) p.a[i] -= q.a[i];
+    for (int i = 0; i < 9; ++i)
+        p.a[i] -= q.a[i];
     return p;
 }
 constexpr Mat3 operator*(double s, Mat3 p) {
-    for (double& x : p.a) x *= s;
+    for (double& x : p.a)
+        x *= s;
     return p;
 }
 constexpr Mat3 transpose(const Mat3& m) {
     Mat3 t;
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) t(i, j) = m(j, i);
+        for (int j = 0; j < 3; ++j)
+            t(i, j) = m(j, i);
     return t;
 }
-constexpr double determinant(const Mat3& m) { return dot(m.row(0), cross(m.row(1), m.row(2))); }
+constexpr double determinant(const Mat3& m) {
+    return dot(m.row(0), cross(m.row(1), m.row(2)));
+}
 
 // Solves m x = b by Cramer's rule; m must be non-singular (K is positive definite).
 constexpr Vec3 solve(const Mat3& m, const Vec3& b) {
     const Vec3 c0 = m.col(0), c1 = m.col(1), c2 = m.col(2);
     const double det = dot(c0, cross(c1, c2));
-    return {dot(b, cross(c1, c2)) / det, dot(c0, cross(b, c2)) / det,
-            dot(c0, cross(c1, b)) / det};
+    return {dot(b, cross(c1, c2)) / det, dot(c0, cross(b, c2)) / det, dot(c0, cross(c1, b)) / det};
 }
 
 }  // namespace rodsea

@@ -26,7 +26,9 @@ constexpr Quat operator*(const Quat& p, const Quat& q) {
 constexpr bool operator==(const Quat& p, const Quat& q) {
     return p.w == q.w && p.x == q.x && p.y == q.y && p.z == q.z;
 }
-constexpr Quat conjugate(const Quat& q) { return {q.w, -q.x, -q.y, -q.z}; }
+constexpr Quat conjugate(const Quat& q) {
+    return {q.w, -q.x, -q.y, -q.z};
+}
 
 inline Quat normalized(const Quat& q) {
     const double n = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);

@@ -55,7 +55,8 @@ void PeriodicCellList2D::build(std::span<const Vec3> points, std::span<const dou
         cell_of_[i] = static_cast<std::uint32_t>(c);
         ++start_[c + 1];
     }
-    for (size_t c = 0; c < cells; ++c) start_[c + 1] += start_[c];
+    for (size_t c = 0; c < cells; ++c)
+        start_[c + 1] += start_[c];
     order_.resize(points.size());
     sorted_.resize(points.size());
     sorted_radius_.resize(radii.size());

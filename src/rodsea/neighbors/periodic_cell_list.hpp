@@ -28,7 +28,7 @@ struct PeriodicBox2D {
 };
 
 class PeriodicCellList2D {
-public:
+  public:
     // Bins the points with cells at least `cutoff` wide; a direction with fewer than three such
     // cells uses a single cell, so that no neighbour cell is visited twice.
     void build(std::span<const Vec3> points, const PeriodicBox2D& box, double cutoff);
@@ -53,7 +53,8 @@ public:
             if (single_x_) d.x -= box_.lx * std::nearbyint(d.x / box_.lx);
             if (single_y_) d.y -= box_.ly * std::nearbyint(d.y / box_.ly);
             const double reach = discs ? sorted_radius_[a] + sorted_radius_[b] : 0.0;
-            if (d.x * d.x + d.y * d.y < (discs ? reach * reach : c2)) visit(order_[a], order_[b], d);
+            if (d.x * d.x + d.y * d.y < (discs ? reach * reach : c2))
+                visit(order_[a], order_[b], d);
         };
         for (int cy = 0; cy < ny_; ++cy) {
             for (int cx = 0; cx < nx_; ++cx) {
@@ -61,18 +62,24 @@ public:
                 const std::uint32_t begin = start_[c], end = start_[c + 1];
                 if (begin == end) continue;  // sparse systems: most cells are empty
                 for (std::uint32_t a = begin; a < end; ++a)
-                    for (std::uint32_t b = a + 1; b < end; ++b) consider(a, b, 0.0, 0.0);
+                    for (std::uint32_t b = a + 1; b < end; ++b)
+                        consider(a, b, 0.0, 0.0);
                 for (const auto& [dx, dy] : half_stencil_) {
                     int ncx = cx + dx, ncy = cy + dy;
                     double sx = 0.0, sy = 0.0;  // brings the neighbour's image next to cell c
-                    if (ncx < 0) ncx += nx_, sx = box_.lx;
-                    else if (ncx >= nx_) ncx -= nx_, sx = -box_.lx;
-                    if (ncy < 0) ncy += ny_, sy = box_.ly;
-                    else if (ncy >= ny_) ncy -= ny_, sy = -box_.ly;
+                    if (ncx < 0)
+                        ncx += nx_, sx = box_.lx;
+                    else if (ncx >= nx_)
+                        ncx -= nx_, sx = -box_.lx;
+                    if (ncy < 0)
+                        ncy += ny_, sy = box_.ly;
+                    else if (ncy >= ny_)
+                        ncy -= ny_, sy = -box_.ly;
                     const int nc = ncy * nx_ + ncx;
                     const std::uint32_t nbegin = start_[nc], nend = start_[nc + 1];
                     for (std::uint32_t a = begin; a < end; ++a)
-                        for (std::uint32_t b = nbegin; b < nend; ++b) consider(a, b, sx, sy);
+                        for (std::uint32_t b = nbegin; b < nend; ++b)
+                            consider(a, b, sx, sy);
                 }
             }
         }
@@ -81,7 +88,7 @@ public:
     int cells_x() const { return nx_; }
     int cells_y() const { return ny_; }
 
-private:
+  private:
     PeriodicBox2D box_;
     double cutoff_ = 0.0;
     int nx_ = 1, ny_ = 1;

@@ -16,7 +16,9 @@ long long count_for_area_fraction(double area_fraction, const Box& box, const Sh
     return std::llround(area_fraction * box.lx * box.ly / shape.projected_area);
 }
 
-Quat flat_orientation(double angle) { return Quat::from_axis_angle({0, 0, 1}, angle); }
+Quat flat_orientation(double angle) {
+    return Quat::from_axis_angle({0, 0, 1}, angle);
+}
 
 double resting_height(const Shape& shape, const Quat& orientation, const DriveParameters& drive,
                       double clearance) {
@@ -54,7 +56,8 @@ Scene row_packed_monolayer(const std::vector<Population>& populations, const Box
         scene.params.species.push_back(pop.species);
         if (pop.count <= 0) continue;
         const Shape& shape = pop.species.shape;
-        const long long per_row = static_cast<long long>(std::floor(box.lx / (shape.extent + kMinGap)));
+        const long long per_row =
+            static_cast<long long>(std::floor(box.lx / (shape.extent + kMinGap)));
         if (per_row < 1) {
             throw InvalidParameter("box.lx", format_number(box.lx) + " mm",
                                    ">= " + format_number(shape.extent + kMinGap) + " mm",
@@ -63,7 +66,8 @@ Scene row_packed_monolayer(const std::vector<Population>& populations, const Box
         const long long n_rows = (pop.count + per_row - 1) / per_row;
         for (long long r = 0; r < n_rows; ++r) {
             const long long in_row = std::min(per_row, pop.count - r * per_row);
-            rows.push_back({s, in_row, (static_cast<double>(r) + 0.5) / static_cast<double>(n_rows)});
+            rows.push_back(
+                {s, in_row, (static_cast<double>(r) + 0.5) / static_cast<double>(n_rows)});
         }
         height += static_cast<double>(n_rows) * (2.0 * shape.max_radius + kMinGap);
     }

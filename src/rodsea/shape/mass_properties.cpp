@@ -14,16 +14,14 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 bool all_on_x_axis(const SphereList& spheres) {
-    return std::all_of(spheres.begin(), spheres.end(), [](const Sphere& s) {
-        return s.centre.y == 0.0 && s.centre.z == 0.0;
-    });
+    return std::all_of(spheres.begin(), spheres.end(),
+                       [](const Sphere& s) { return s.centre.y == 0.0 && s.centre.z == 0.0; });
 }
 
 bool pairwise_disjoint(const SphereList& spheres) {
     for (size_t i = 0; i < spheres.size(); ++i)
         for (size_t j = i + 1; j < spheres.size(); ++j)
-            if (norm(spheres[i].centre - spheres[j].centre) <
-                spheres[i].radius + spheres[j].radius)
+            if (norm(spheres[i].centre - spheres[j].centre) < spheres[i].radius + spheres[j].radius)
                 return false;
     return true;
 }
@@ -98,7 +96,8 @@ MassProperties disjoint_spheres(const SphereList& spheres) {
         const double v = 4.0 / 3.0 * kPi * s.radius * s.radius * s.radius;
         const Vec3 d = s.centre - mp.centre_of_mass;
         // Own moment ⅖ m r² plus the parallel-axis term m (|d|² 𝟙 − d dᵀ).
-        mp.inertia = mp.inertia + (0.4 * v * s.radius * s.radius + v * norm2(d)) * Mat3::identity() -
+        mp.inertia = mp.inertia +
+                     (0.4 * v * s.radius * s.radius + v * norm2(d)) * Mat3::identity() -
                      v * Mat3::outer(d, d);
     }
     return mp;
@@ -108,7 +107,8 @@ MassProperties disjoint_spheres(const SphereList& spheres) {
 
 MassProperties mass_properties(const SphereList& spheres) {
     if (spheres.empty()) throw InvalidParameter("shape.spheres", "0 spheres", ">= 1 sphere");
-    for (const Sphere& s : spheres) require_positive("shape.sphere_radius", s.radius, "mm");
+    for (const Sphere& s : spheres)
+        require_positive("shape.sphere_radius", s.radius, "mm");
     if (all_on_x_axis(spheres)) return axial_chain(spheres);
     if (pairwise_disjoint(spheres)) return disjoint_spheres(spheres);
     throw InvalidParameter("shape.spheres", "overlapping spheres off the body x axis",

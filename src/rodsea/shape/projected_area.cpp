@@ -58,8 +58,8 @@ double projected_area(const SphereList& spheres) {
             }
             if (d <= ri - rj) continue;  // disc j inside disc i: covers none of i's boundary
             const double phi = std::atan2(dy, dx);
-            const double half = std::acos(std::clamp((d * d + ri * ri - rj * rj) / (2.0 * d * ri),
-                                                     -1.0, 1.0));
+            const double half =
+                std::acos(std::clamp((d * d + ri * ri - rj * rj) / (2.0 * d * ri), -1.0, 1.0));
             add_wrapped(covered, phi - half, phi + half);
         }
         if (hidden) continue;

@@ -45,8 +45,8 @@ SymmetricEigen symmetric_eigen(const Mat3& input) {
             for (int q = p + 1; q < 3; ++q) {
                 if (a(p, q) == 0.0) continue;
                 const double theta = (a(q, q) - a(p, p)) / (2.0 * a(p, q));
-                const double t = (theta >= 0 ? 1.0 : -1.0) /
-                                 (std::abs(theta) + std::sqrt(theta * theta + 1.0));
+                const double t =
+                    (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
                 const double c = 1.0 / std::sqrt(t * t + 1.0), s = t * c;
                 Mat3 j = Mat3::identity();
                 j(p, p) = c;
@@ -59,7 +59,8 @@ SymmetricEigen symmetric_eigen(const Mat3& input) {
         }
     }
     if (determinant(v) < 0.0) {
-        for (int r = 0; r < 3; ++r) v(r, 2) = -v(r, 2);
+        for (int r = 0; r < 3; ++r)
+            v(r, 2) = -v(r, 2);
     }
     return {{a(0, 0), a(1, 1), a(2, 2)}, v};
 }

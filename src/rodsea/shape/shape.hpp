@@ -13,16 +13,16 @@
 namespace rodsea {
 
 struct Shape {
-    std::vector<Vec3> offsets;   // sphere centres, principal body frame (mm)
-    std::vector<double> radii;   // mm
-    double mass = 1.0;           // arbitrary mass unit (MODEL.md: only ratios matter)
-    Vec3 principal_inertia;      // mass unit · mm², about the body axes
-    double volume = 0.0;         // mm³
-    double projected_area = 0.0; // mm², footprint lying flat (union of great discs)
-    double max_radius = 0.0;     // mm
-    double extent = 0.0;         // mm, largest distance between two points of the body
+    std::vector<Vec3> offsets;     // sphere centres, principal body frame (mm)
+    std::vector<double> radii;     // mm
+    double mass = 1.0;             // arbitrary mass unit (MODEL.md: only ratios matter)
+    Vec3 principal_inertia;        // mass unit · mm², about the body axes
+    double volume = 0.0;           // mm³
+    double projected_area = 0.0;   // mm², footprint lying flat (union of great discs)
+    double max_radius = 0.0;       // mm
+    double extent = 0.0;           // mm, largest distance between two points of the body
     Vec3 com_in_definition_frame;  // where the centre of mass was in the input frame (mm)
-    Quat definition_to_body;     // rotation from the definition frame to the principal frame
+    Quat definition_to_body;       // rotation from the definition frame to the principal frame
 
     size_t sphere_count() const { return radii.size(); }
 };

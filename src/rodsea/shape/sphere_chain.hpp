@@ -11,9 +11,9 @@
 namespace rodsea {
 
 struct PolarRodGeometry {
-    double length = 4.5;           // mm, ℓ_p
-    double thick_diameter = 1.375; // mm, at the thick end (body -x)
-    double thin_diameter = 0.4;    // mm, at the thin end (body +x)
+    double length = 4.5;            // mm, ℓ_p
+    double thick_diameter = 1.375;  // mm, at the thick end (body -x)
+    double thin_diameter = 0.4;     // mm, at the thin end (body +x)
     int sphere_count = 13;
 };
 
