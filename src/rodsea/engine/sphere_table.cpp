@@ -4,14 +4,12 @@ namespace rodsea {
 
 void SphereTable::assign(const BodyState& bodies, const std::vector<Species>& species) {
     body.clear();
-    local.clear();
     radius.clear();
     first_of.assign(1, 0);
     for (size_t b = 0; b < bodies.size(); ++b) {
         const Shape& shape = species[bodies.species[b]].shape;
         for (size_t s = 0; s < shape.sphere_count(); ++s) {
             body.push_back(static_cast<std::uint32_t>(b));
-            local.push_back(static_cast<std::uint32_t>(s));
             radius.push_back(shape.radii[s]);
         }
         first_of.push_back(static_cast<std::uint32_t>(body.size()));

@@ -1,6 +1,7 @@
 #pragma once
-// Every sphere of every body, in body order: which body and which of its shape's spheres it is,
-// its radius, and its world centre (recomputed after each free flight).
+// Every sphere of every body, in body order: which body it belongs to, its radius, and its world
+// centre (recomputed after each free flight). Body b owns spheres first_of[b] .. first_of[b+1]−1,
+// in the order of its shape's spheres.
 #include <cstdint>
 #include <vector>
 
@@ -11,7 +12,6 @@ namespace rodsea {
 
 struct SphereTable {
     std::vector<std::uint32_t> body;
-    std::vector<std::uint32_t> local;     // index into the body's shape
     std::vector<double> radius;           // mm
     std::vector<Vec3> position;           // world, mm; x, y not wrapped
     std::vector<std::uint32_t> first_of;  // first sphere of each body, plus one past the end

@@ -85,9 +85,6 @@ class PeriodicCellList2D {
         }
     }
 
-    int cells_x() const { return nx_; }
-    int cells_y() const { return ny_; }
-
   private:
     PeriodicBox2D box_;
     double cutoff_ = 0.0;
