@@ -2,7 +2,9 @@
 // the periodic boundary too.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
+#include <stdexcept>
 #include <utility>
 
 #include "rodsea/neighbors/periodic_cell_list.hpp"
@@ -83,6 +85,28 @@ TEST(PeriodicCellList, DiscModeVisitsOverlappingDiscsOfDifferentGroupsOnce) {
         }
     EXPECT_EQ(seen.size(), expected);
     EXPECT_GT(expected, 100u);
+}
+
+}  // namespace
+}  // namespace rodsea
+
+namespace rodsea {
+namespace {
+
+TEST(PeriodicCellList, RefusesCutoffsAndDiscsItCannotServe) {
+    PeriodicCellList2D cells;
+    const std::vector<Vec3> points{{1, 1, 0}, {2, 2, 0}};
+    const std::vector<double> radii{0.3, 0.9};
+    const std::vector<std::uint32_t> groups{0, 1};
+    const PeriodicBox2D box{10, 10};
+    EXPECT_THROW(cells.build(points, box, 0.0), std::invalid_argument);
+    EXPECT_THROW(cells.build(points, box, std::nan("")), std::invalid_argument);
+    EXPECT_THROW(cells.build(points, radii, {}, box, 2.0), std::invalid_argument);
+    EXPECT_THROW(cells.build(points, radii, groups, box, 1.0), std::invalid_argument);  // 2·0.9 > 1
+    EXPECT_NO_THROW(cells.build(points, radii, groups, box, 1.8));
+    // Wrapping maps into [0, L) even where x − L floor(x/L) rounds to L.
+    EXPECT_EQ(PeriodicBox2D::wrap(-1e-18, 10.0), 0.0);
+    EXPECT_EQ(PeriodicBox2D::wrap(-2.5, 10.0), 7.5);
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
 #include "rodsea/engine/free_flight.hpp"
 
+#include <algorithm>
 #include <cmath>
+
+#include "rodsea/neighbors/periodic_cell_list.hpp"
 
 namespace rodsea {
 
@@ -38,20 +41,17 @@ void rotate_free(Quat& q, Vec3& spin, const Vec3& inertia, double dt) {
     const double l = norm(l_world);
     if (l == 0.0) return;
 
-    // Index of the distinct moment for an axisymmetric body, -1 if none, 3 for a sphere.
+    // Index of the distinct moment for an axisymmetric body (x for a sphere, where the second
+    // flow below has zero rate), -1 if none.
     int axis = -1;
-    if (same(inertia.x, inertia.y) && same(inertia.y, inertia.z))
-        axis = 3;
-    else if (same(inertia.y, inertia.z))
+    if (same(inertia.y, inertia.z))
         axis = 0;
     else if (same(inertia.x, inertia.z))
         axis = 1;
     else if (same(inertia.x, inertia.y))
         axis = 2;
 
-    if (axis == 3) {
-        q = rotate_about_world(q, l_world / l, l * dt / inertia.x);
-    } else if (axis >= 0) {
+    if (axis >= 0) {
         // H = L²/2I_t + L_a²/2 (1/I_a − 1/I_t): two commuting exact flows, precession about L
         // and spin about the symmetry axis.
         const int t = axis == 0 ? 1 : 0;
@@ -80,8 +80,8 @@ void advance_free_flight(BodyState& bodies, const std::vector<Species>& species,
         x += dt * v;
         x.z -= drop;
         v.z -= gravity * dt;
-        x.x -= box.lx * std::floor(x.x / box.lx);
-        x.y -= box.ly * std::floor(x.y / box.ly);
+        x.x = PeriodicBox2D::wrap(x.x, box.lx);
+        x.y = PeriodicBox2D::wrap(x.y, box.ly);
         rotate_free(bodies.orientation[i], bodies.spin[i],
                     species[bodies.species[i]].shape.principal_inertia, dt);
     }

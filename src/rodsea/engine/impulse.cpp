@@ -20,10 +20,12 @@ Impulse stronge_impulse(const Vec3& u, const Vec3& n, const Mat3& k, double fric
     if (norm(pt) <= friction * pn) return {stick, true};
 
     // Sliding: friction opposes the slip. With no slip before the collision the slip that
-    // develops is the one the sticking impulse would have had to stop: opposite to P*_t.
+    // develops is the one the sticking impulse would have had to stop: opposite to P*_t. A slip
+    // at round-off level (u along n but for ~1e-16 |u|) has no meaningful direction: treat it
+    // as none.
     const Vec3 ut = u - un * n;
     const double ut_norm = norm(ut);
-    const Vec3 slip = ut_norm > 0.0 ? ut / ut_norm : -pt / norm(pt);
+    const Vec3 slip = ut_norm > 1e-12 * std::abs(un) ? ut / ut_norm : -pt / norm(pt);
     const Vec3 direction = n - friction * slip;
     const double denominator = dot(n, k * direction);
     if (!(denominator > 0.0)) {

@@ -74,8 +74,8 @@ void validate_bodies(const EngineParameters& params, BodyState& bodies) {
         }
     }
     for (Vec3& x : bodies.position) {
-        x.x -= params.box.lx * std::floor(x.x / params.box.lx);
-        x.y -= params.box.ly * std::floor(x.y / params.box.ly);
+        x.x = PeriodicBox2D::wrap(x.x, params.box.lx);
+        x.y = PeriodicBox2D::wrap(x.y, params.box.ly);
     }
 }
 

@@ -1,6 +1,7 @@
 #include "rodsea/neighbors/periodic_cell_list.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace rodsea {
 
@@ -11,10 +12,7 @@ int cell_count(double side, double cutoff) {
     return n >= 3 ? n : 1;
 }
 
-double wrap(double x, double side) {
-    const double w = x - side * std::floor(x / side);
-    return w < side ? w : 0.0;  // x just below 0 can round to exactly side
-}
+constexpr auto wrap = PeriodicBox2D::wrap;
 
 }  // namespace
 
@@ -26,6 +24,12 @@ void PeriodicCellList2D::build(std::span<const Vec3> points, const PeriodicBox2D
 void PeriodicCellList2D::build(std::span<const Vec3> points, std::span<const double> radii,
                                std::span<const std::uint32_t> groups, const PeriodicBox2D& box,
                                double cutoff) {
+    if (!(cutoff > 0.0) || !std::isfinite(cutoff) || !(box.lx > 0.0) || !(box.ly > 0.0))
+        throw std::invalid_argument("PeriodicCellList2D: cutoff and box sides must be positive");
+    if (radii.size() != groups.size() || (!radii.empty() && radii.size() != points.size()))
+        throw std::invalid_argument("PeriodicCellList2D: radii and groups need one per point");
+    if (!radii.empty() && 2.0 * *std::max_element(radii.begin(), radii.end()) > cutoff)
+        throw std::invalid_argument("PeriodicCellList2D: a disc is wider than the cutoff");
     const int nx = cell_count(box.lx, cutoff), ny = cell_count(box.ly, cutoff);
     if (nx != nx_ || ny != ny_ || !stencil_built_) {
         stencil_built_ = true;

@@ -19,6 +19,12 @@ namespace rodsea {
 struct PeriodicBox2D {
     double lx = 0.0, ly = 0.0;
 
+    // x mapped into [0, side): exactly, including the x just below 0 that rounds to side.
+    static double wrap(double x, double side) {
+        const double w = x - side * std::floor(x / side);
+        return w < side ? w : 0.0;
+    }
+
     // Minimum-image difference in x and y; z untouched.
     Vec3 minimum_image(Vec3 d) const {
         d.x -= lx * std::nearbyint(d.x / lx);
@@ -36,6 +42,8 @@ class PeriodicCellList2D {
     // Same, for discs: a pair is close when its discs overlap in the plane (distance <
     // r_i + r_j, each 2 r ≤ cutoff), and pairs with the same group (e.g. spheres of one rigid
     // body) are never visited. Both tests run on the cell-ordered copies, before any visit.
+    // Throws std::invalid_argument for a cutoff that is not positive and finite, radii and
+    // groups not one per point, or a disc wider than the cutoff.
     void build(std::span<const Vec3> points, std::span<const double> radii,
                std::span<const std::uint32_t> groups, const PeriodicBox2D& box, double cutoff);
 

@@ -1,5 +1,6 @@
 #include "rodsea/shape/sphere_chain.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
