@@ -51,10 +51,12 @@ void PeriodicCellList2D::build(std::span<const Vec3> points, std::span<const dou
     const size_t cells = static_cast<size_t>(nx_) * ny_;
     start_.assign(cells + 1, 0);
     cell_of_.resize(points.size());
+    wrapped_.resize(points.size());
     const double to_cx = nx_ / box.lx, to_cy = ny_ / box.ly;
     for (size_t i = 0; i < points.size(); ++i) {
-        const int cx = std::min(static_cast<int>(wrap(points[i].x, box.lx) * to_cx), nx_ - 1);
-        const int cy = std::min(static_cast<int>(wrap(points[i].y, box.ly) * to_cy), ny_ - 1);
+        wrapped_[i] = {wrap(points[i].x, box.lx), wrap(points[i].y, box.ly), points[i].z};
+        const int cx = std::min(static_cast<int>(wrapped_[i].x * to_cx), nx_ - 1);
+        const int cy = std::min(static_cast<int>(wrapped_[i].y * to_cy), ny_ - 1);
         const int c = cy * nx_ + cx;
         cell_of_[i] = static_cast<std::uint32_t>(c);
         ++start_[c + 1];
@@ -69,7 +71,7 @@ void PeriodicCellList2D::build(std::span<const Vec3> points, std::span<const dou
     for (size_t i = 0; i < points.size(); ++i) {
         const std::uint32_t slot = cursor_[cell_of_[i]]++;
         order_[slot] = static_cast<std::uint32_t>(i);
-        sorted_[slot] = {wrap(points[i].x, box.lx), wrap(points[i].y, box.ly), points[i].z};
+        sorted_[slot] = wrapped_[i];
         if (!radii.empty()) {
             sorted_radius_[slot] = radii[i];
             sorted_group_[slot] = groups[i];

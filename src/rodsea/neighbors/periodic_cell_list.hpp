@@ -106,6 +106,7 @@ class PeriodicCellList2D {
     std::vector<double> sorted_radius_;              // discs only, slot order
     std::vector<std::uint32_t> sorted_group_;        // discs only, slot order
     std::vector<std::uint32_t> cell_of_;             // scratch: cell of each point
+    std::vector<Vec3> wrapped_;                      // scratch: points wrapped into the box
     std::vector<std::uint32_t> cursor_;              // scratch: next free slot per cell
 };
 
