@@ -8,7 +8,10 @@ packages=(
     libgtest-dev libgmock-dev           # GoogleTest, through ctest
     libbenchmark-dev                    # Google Benchmark
     clang-format                        # the committed .clang-format
+    libtomlplusplus-dev                 # TOML config files (toml++)
+    libhdf5-dev                         # HDF5 trajectories and checkpoints (H5MD layout)
     python3 python3-numpy python3-matplotlib  # the demo picture (scripts/plot_snapshot.py)
+    python3-h5py python3-scipy          # reading trajectories from Python; cross-checks
 )
 
 if [ "$(id -u)" -eq 0 ]; then sudo=(); else sudo=(sudo); fi

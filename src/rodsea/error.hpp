@@ -18,6 +18,17 @@ class InvalidParameter : public std::invalid_argument {
     std::string name_;
 };
 
+// A file or directory that cannot be read or written: names the path and what went wrong.
+class FileError : public std::runtime_error {
+  public:
+    FileError(const std::string& path, const std::string& what)
+        : std::runtime_error(path + ": " + what), path_(path) {}
+    const std::string& path() const { return path_; }
+
+  private:
+    std::string path_;
+};
+
 std::string format_number(double value);
 
 // Each check throws InvalidParameter naming `name` when the value is outside the range.

@@ -1,0 +1,36 @@
+#pragma once
+// The system builder: from counts per species to an initial state with every body lying flat on
+// the base, no two bodies overlapping, random positions and orientations.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "rodsea/config/run_plan.hpp"
+#include "rodsea/engine/body_state.hpp"
+#include "rodsea/engine/parameters.hpp"
+
+namespace rodsea {
+
+// Whether the counts can be packed at all, decided before any work: `ok` false comes with a
+// message that names the species, the area it needs and the area the box offers.
+struct PackingCheck {
+    bool ok = true;
+    std::string message;
+};
+PackingCheck check_packing(const EngineParameters& params, const std::vector<long long>& counts);
+
+struct BuildReport {
+    double seconds = 0.0;                // wall time of the build
+    int sweeps = 0;                      // randomisation sweeps done
+    double acceptance = 0.0;             // fraction of accepted Monte Carlo moves
+    double min_gap = 0.0;                // smallest in-plane gap between spheres of two bodies, mm
+    std::vector<double> nematic_order;   // S per species after randomisation
+    std::vector<double> polar_order;     // P per species after randomisation
+};
+
+// Throws InvalidParameter (key "species") when check_packing fails.
+BodyState build_initial_state(const EngineParameters& params, const std::vector<long long>& counts,
+                              const BuilderOptions& options, std::uint64_t seed,
+                              BuildReport* report = nullptr);
+
+}  // namespace rodsea

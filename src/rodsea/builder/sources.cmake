@@ -1,0 +1,2 @@
+target_sources(rodsea_core PRIVATE
+)

@@ -1,0 +1,43 @@
+#pragma once
+// What a config file resolves to: everything `rodsea run` and `rodsea info` need, in the engine's
+// units (mm, s), with every default and CHOICE already applied and every key validated.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "rodsea/engine/parameters.hpp"
+
+namespace rodsea {
+
+enum class InitialOrientation { isotropic, aligned };
+
+// How the initial state is built (see builder/initial_state.hpp).
+struct BuilderOptions {
+    InitialOrientation orientation = InitialOrientation::isotropic;
+    int randomisation_sweeps = 50;  // Monte Carlo sweeps after the lattice start, [0, 100000]
+};
+
+// The run's length and cadences.
+struct RunControl {
+    double duration = 1.0;              // simulated time, s
+    double output_interval = 0.05;      // simulated time between trajectory frames and rows, s
+    double checkpoint_interval = 30.0;  // wall-clock minutes between checkpoints
+    int threads = 1;
+};
+
+struct RunPlan {
+    EngineParameters engine;        // species, box, drive, coefficients, dt, ε, seed
+    std::vector<long long> counts;  // bodies per species, same order as engine.species
+    // The area fraction each species was asked for, or a negative value when it was given as
+    // an explicit count.
+    std::vector<double> requested_area_fraction;
+    BuilderOptions builder;
+    RunControl control;
+    std::string config_toml;           // the full resolved config, every key, as TOML
+    std::vector<std::string> choices;  // each MODEL.md CHOICE in force, one line each
+
+    std::uint64_t total_steps() const;       // round(duration / dt)
+    std::uint64_t steps_per_output() const;  // round(output_interval / dt), >= 1
+};
+
+}  // namespace rodsea
