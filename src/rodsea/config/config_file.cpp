@@ -1,0 +1,49 @@
+#include "rodsea/config/config_file.hpp"
+
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+#include "rodsea/config/choices.hpp"
+#include "rodsea/config/read_toml.hpp"
+#include "rodsea/config/resolve.hpp"
+#include "rodsea/config/write_toml.hpp"
+#include "rodsea/error.hpp"
+
+namespace rodsea {
+
+ConfigSyntaxError::ConfigSyntaxError(const std::string& source, long line, long column,
+                                     const std::string& description)
+    : std::invalid_argument(source + " line " + std::to_string(line) + ", column " +
+                            std::to_string(column) + ": TOML syntax error: " + description),
+      source_(source),
+      line_(line),
+      column_(column) {}
+
+RunPlan load_config_file(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) throw FileError(path.string(), "no such file");
+    if (std::filesystem::is_directory(path, ec))
+        throw FileError(path.string(), "is a directory, not a config file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw FileError(path.string(), "cannot be opened for reading");
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw FileError(path.string(), "read failed");
+    return load_config_string(text.str(), path.string());
+}
+
+RunPlan load_config_string(std::string_view toml, std::string_view source_name) {
+    config::ConfigValues values = config::read_toml(toml, source_name);
+    RunPlan plan = config::resolve(values);
+    plan.config_toml = config::write_toml(values);
+    plan.choices = config::list_choices(values, plan);
+    return plan;
+}
+
+std::string default_config_toml() {
+    // The resolved empty config is every key at its default, commented.
+    return load_config_string("", "defaults").config_toml;
+}
+
+}  // namespace rodsea

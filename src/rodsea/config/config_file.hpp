@@ -1,0 +1,44 @@
+#pragma once
+// Reading a run's TOML config into a validated RunPlan. The key table in schema.cpp is the one
+// source of every key's type, unit, default, range and documentation: parsing, the resolved
+// TOML, the commented default config and docs/config.md are all generated from it.
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "rodsea/config/run_plan.hpp"
+
+namespace rodsea {
+
+// A config that is not valid TOML. Derives from std::invalid_argument like InvalidParameter:
+// both are bad input, not a failure of the program.
+class ConfigSyntaxError : public std::invalid_argument {
+  public:
+    ConfigSyntaxError(const std::string& source, long line, long column,
+                      const std::string& description);
+    const std::string& source() const { return source_; }
+    long line() const { return line_; }
+    long column() const { return column_; }
+
+  private:
+    std::string source_;
+    long line_;
+    long column_;
+};
+
+// Throws FileError when the file is missing or unreadable, otherwise as load_config_string.
+RunPlan load_config_file(const std::filesystem::path& path);
+
+// Parses and validates the whole config before returning: ConfigSyntaxError for bad TOML,
+// InvalidParameter (named by the key's full path, e.g. "species[1].length") for anything else.
+// `source_name` only labels error messages; it does not enter the plan.
+RunPlan load_config_string(std::string_view toml, std::string_view source_name);
+
+// A complete config with every key at its default, each commented with its unit and range.
+std::string default_config_toml();
+
+// The content of docs/config.md: one table per section of the config.
+std::string config_reference_markdown();
+
+}  // namespace rodsea

@@ -1,0 +1,328 @@
+#include "rodsea/config/resolve.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <set>
+
+#include "rodsea/config/did_you_mean.hpp"
+#include "rodsea/config/schema.hpp"
+#include "rodsea/error.hpp"
+#include "rodsea/scenes/scenes.hpp"
+
+namespace rodsea::config {
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+std::string shown(const TableValues& t, std::string_view table, std::string_view key) {
+    return find_key(table, key)->shown(t.at(key));
+}
+
+std::string seconds(double s) {
+    return format_number(s) + " s";
+}
+
+// The paper's main system (MODEL.md §2): what a config without [[species]] simulates.
+std::vector<TableValues> default_species() {
+    TableValues polar, medium;
+    polar.path = "species[0]";
+    polar.entries = {{"name", {std::string("polar"), 0}},
+                     {"kind", {std::string("polar_rod"), 0}},
+                     {"area_fraction", {0.05, 0}}};
+    medium.path = "species[1]";
+    medium.entries = {{"name", {std::string("medium"), 0}},
+                      {"kind", {std::string("apolar_rod"), 0}},
+                      {"length", {2.5, 0}},
+                      {"area_fraction", {0.50, 0}}};
+    return {polar, medium};
+}
+
+// Keys whose default is fixed (not kind-dependent) and whose alternative was not given.
+void fill_defaults(TableValues& t, std::string_view table) {
+    for (const KeySpec* spec : keys_of(table)) {
+        if (t.has(spec->name) || !spec->default_value) continue;
+        if (!spec->alternative.empty() && t.has(spec->alternative)) continue;
+        t.entries[spec->name] = {*spec->default_value, 0};
+    }
+}
+
+// rotational_diffusion is documented but cannot be used until `rodsea calibrate` exists.
+void check_noise(const TableValues& noise, const std::string& source) {
+    if (noise.has("rotational_diffusion")) {
+        throw InvalidParameter(
+            "noise.rotational_diffusion", shown(noise, "noise", "rotational_diffusion"),
+            "no value yet: give noise.epsilon (1/mm) instead",
+            join_why("D_r needs an ε → D_r calibration table from `rodsea calibrate`, which does "
+                     "not exist yet",
+                     noise.where("rotational_diffusion", source)));
+    }
+    if (noise.has("calibration_table")) {
+        throw InvalidParameter(
+            "noise.calibration_table", toml_literal(noise.at("calibration_table")), "no value yet",
+            join_why("the table serves noise.rotational_diffusion, which needs `rodsea "
+                     "calibrate` (not available yet); give noise.epsilon",
+                     noise.where("calibration_table", source)));
+    }
+}
+
+void check_unique_names(const std::vector<TableValues>& species, const std::string& source) {
+    for (size_t i = 0; i < species.size(); ++i) {
+        for (size_t j = 0; j < i; ++j) {
+            if (species[i].text("name") == species[j].text("name")) {
+                throw InvalidParameter(
+                    species[i].key_path("name"), toml_literal(species[i].at("name")),
+                    "a name no other species has",
+                    join_why(species[j].path + " has it too", species[i].where("name", source)));
+            }
+        }
+    }
+}
+
+// [[collisions.pair]] → the symmetric species × species table (empty when there are no pairs).
+std::vector<ContactCoefficients> pair_table(std::vector<TableValues>& pairs,
+                                            const std::vector<TableValues>& species,
+                                            const TableValues& collisions,
+                                            const std::string& source) {
+    if (pairs.empty()) return {};
+    const size_t n = species.size();
+    std::vector<std::string> names;
+    for (const TableValues& s : species)
+        names.push_back(s.text("name"));
+    std::vector<ContactCoefficients> table(
+        n * n, {collisions.real("friction"), collisions.real("restitution")});
+    std::set<std::pair<size_t, size_t>> seen;
+    for (TableValues& pair : pairs) {
+        if (!pair.has("species")) {
+            throw InvalidParameter(pair.key_path("species"), "missing",
+                                   find_key("collisions.pair", "species")->allowed_text(),
+                                   "every [[collisions.pair]] names its two species");
+        }
+        const auto& given = std::get<std::vector<std::string>>(pair.at("species"));
+        size_t index[2] = {0, 0};
+        for (int side = 0; side < 2; ++side) {
+            const auto it = std::find(names.begin(), names.end(), given[side]);
+            if (it == names.end()) {
+                const auto guess = closest_match(given[side], names);
+                std::string allowed;
+                for (const std::string& name : names)
+                    allowed += (allowed.empty() ? "\"" : ", \"") + name + "\"";
+                throw InvalidParameter(
+                    pair.key_path("species"), toml_literal(pair.at("species")),
+                    "names of [[species]]: " + allowed,
+                    join_why("no species is named \"" + given[side] + "\"" +
+                                 (guess ? "; did you mean \"" + *guess + "\"?" : ""),
+                             pair.where("species", source)));
+            }
+            index[side] = static_cast<size_t>(it - names.begin());
+        }
+        const auto key = std::minmax(index[0], index[1]);
+        if (!seen.insert(key).second) {
+            throw InvalidParameter(pair.key_path("species"), toml_literal(pair.at("species")),
+                                   "each pair of species once",
+                                   join_why("an earlier [[collisions.pair]] has the same pair",
+                                            pair.where("species", source)));
+        }
+        if (!pair.has("friction")) pair.entries["friction"] = {collisions.real("friction"), 0};
+        if (!pair.has("restitution"))
+            pair.entries["restitution"] = {collisions.real("restitution"), 0};
+        const ContactCoefficients c{pair.real("friction"), pair.real("restitution")};
+        table[index[0] * n + index[1]] = c;
+        table[index[1] * n + index[0]] = c;
+    }
+    return table;
+}
+
+}  // namespace
+
+void check_alternatives(const TableValues& t, std::string_view table, const std::string& source) {
+    for (const KeySpec* spec : keys_of(table)) {
+        if (spec->alternative.empty() || !t.has(spec->name) || !t.has(spec->alternative)) continue;
+        const KeySpec* alt = find_key(table, spec->alternative);
+        if (alt < spec) continue;  // reported once, naming the key that comes second
+        throw InvalidParameter(
+            t.key_path(alt->name), alt->shown(t.at(alt->name)),
+            "either " + t.key_path(spec->name) + " or " + t.key_path(alt->name) + ", not both",
+            join_why("they are alternatives", t.where(alt->name, source)));
+    }
+}
+
+namespace {
+
+// Every table present, every default in place, each table consistent on its own.
+void complete_tables(ConfigValues& c) {
+    for (const TableSpec& table : config_tables()) {
+        if (table.array) continue;
+        std::vector<TableValues>& tables = c.all(table.path);
+        if (tables.empty()) tables.push_back(TableValues{table.path, 0, {}});
+        if (table.path == "noise") check_noise(tables.front(), c.source);
+        check_alternatives(tables.front(), table.path, c.source);
+        fill_defaults(tables.front(), table.path);
+    }
+    if (c.tables.find("species") == c.tables.end()) c.tables["species"] = default_species();
+    std::vector<TableValues>& species = c.all("species");
+    if (species.empty()) {
+        throw InvalidParameter("species", "an empty array", "at least one [[species]] table");
+    }
+    for (TableValues& s : species)
+        complete_species(s, c.source);
+    check_unique_names(species, c.source);
+}
+
+void build_box_and_drive(ConfigValues& c, EngineParameters& e) {
+    const TableValues& box = c.one("box");
+    const double side =
+        box.has("side") ? box.real("side") : box.real("side_in_polar_lengths") * kPolarRodLength;
+    e.box = {side, side};
+    if (box.has("side"))
+        c.equivalents["box.side_in_polar_lengths"] = side / kPolarRodLength;
+    else
+        c.equivalents["box.side"] = side;
+
+    const TableValues& drive = c.one("drive");
+    e.drive.gamma = drive.real("gamma");
+    if (drive.has("frequency")) {
+        e.drive.angular_frequency = kTwoPi * drive.real("frequency");
+        c.equivalents["drive.angular_frequency"] = e.drive.angular_frequency;
+    } else {
+        e.drive.angular_frequency = drive.real("angular_frequency");
+        c.equivalents["drive.frequency"] = e.drive.angular_frequency / kTwoPi;
+    }
+    e.drive.gap = drive.real("gap");
+    e.drive.gravity = drive.real("gravity");
+}
+
+// Species, their counts (N = round(φL²/A) or as given) and the collision coefficients.
+void build_bodies(ConfigValues& c, RunPlan& plan) {
+    EngineParameters& e = plan.engine;
+    const double box_area = e.box.lx * e.box.ly;
+    for (const TableValues& s : c.all("species")) {
+        e.species.push_back(make_species(s));
+        const Shape& shape = e.species.back().shape;
+        if (s.has("area_fraction")) {
+            const double phi = s.real("area_fraction");
+            plan.counts.push_back(count_for_area_fraction(phi, e.box, shape));
+            plan.requested_area_fraction.push_back(phi);
+            c.equivalents[s.key_path("count")] = std::int64_t{plan.counts.back()};
+        } else {
+            plan.counts.push_back(s.integer("count"));
+            plan.requested_area_fraction.push_back(-1.0);
+            c.equivalents[s.key_path("area_fraction")] =
+                static_cast<double>(plan.counts.back()) * shape.projected_area / box_area;
+        }
+        if (e.species.back().kind == BodyKind::apolar_rod) {
+            if (s.has("length"))
+                c.equivalents[s.key_path("aspect_ratio")] = s.real("length") / kApolarRodDiameter;
+            else
+                c.equivalents[s.key_path("length")] = apolar_length(s);
+        }
+    }
+    const TableValues& collisions = c.one("collisions");
+    e.body_body = {collisions.real("friction"), collisions.real("restitution")};
+    e.body_body_by_pair =
+        pair_table(c.all("collisions.pair"), c.all("species"), collisions, c.source);
+}
+
+void build_time_and_output(ConfigValues& c, RunPlan& plan) {
+    const double period = kTwoPi / plan.engine.drive.angular_frequency;
+    const TableValues& time = c.one("time");
+    plan.engine.dt = time.real("dt");
+    if (time.has("duration")) {
+        plan.control.duration = time.real("duration");
+        c.equivalents["time.periods"] = plan.control.duration / period;
+    } else {
+        plan.control.duration = time.real("periods") * period;
+        c.equivalents["time.duration"] = plan.control.duration;
+    }
+    const TableValues& output = c.one("output");
+    if (output.has("interval")) {
+        plan.control.output_interval = output.real("interval");
+        c.equivalents["output.interval_periods"] = plan.control.output_interval / period;
+    } else {
+        plan.control.output_interval = output.real("interval_periods") * period;
+        c.equivalents["output.interval"] = plan.control.output_interval;
+    }
+    plan.control.checkpoint_interval = output.real("checkpoint_interval");
+}
+
+void build_the_rest(const ConfigValues& c, RunPlan& plan) {
+    plan.engine.noise_epsilon = c.one("noise").real("epsilon");
+    const TableValues& run = c.one("run");
+    plan.engine.seed = static_cast<std::uint64_t>(run.integer("seed"));
+    plan.control.threads = static_cast<int>(run.integer("threads"));
+    const TableValues& initial = c.one("initial");
+    plan.builder.orientation = initial.text("orientation") == "aligned"
+                                   ? InitialOrientation::aligned
+                                   : InitialOrientation::isotropic;
+    plan.builder.randomisation_sweeps = static_cast<int>(initial.integer("randomisation_sweeps"));
+    const TableValues& engine = c.one("engine");
+    plan.engine.max_sweeps = static_cast<int>(engine.integer("max_sweeps"));
+    plan.engine.approach_tolerance = engine.real("approach_tolerance");
+}
+
+// Checks across keys, each naming the key the user wrote.
+void check_across_keys(const ConfigValues& c, const RunPlan& plan) {
+    const EngineParameters& e = plan.engine;
+    long long total = 0;
+    for (const long long n : plan.counts)
+        total += n;
+    if (total < 1) {
+        throw InvalidParameter("species", "0 bodies in total", "at least one body",
+                               "every species has count 0 or rounds to 0 bodies");
+    }
+
+    const Species* longest = &e.species.front();
+    for (const Species& s : e.species)
+        if (s.shape.extent > longest->shape.extent) longest = &s;
+    const TableValues& box = c.one("box");
+    if (e.box.lx < 2.0 * longest->shape.extent) {
+        const std::string key = box.has("side") ? "side" : "side_in_polar_lengths";
+        throw InvalidParameter(
+            box.key_path(key), shown(box, "box", key),
+            ">= " + format_number(2.0 * longest->shape.extent) + " mm",
+            join_why("twice the longest body, " + std::string(to_string(longest->kind)) + " '" +
+                         longest->name + "' (" + format_number(longest->shape.extent) +
+                         " mm), so that no body meets two images of another",
+                     box.where(key, c.source)));
+    }
+
+    const TableValues& time = c.one("time");
+    const std::string duration_key = time.has("duration") ? "duration" : "periods";
+    if (!(plan.control.duration >= e.dt)) {
+        throw InvalidParameter(
+            time.key_path(duration_key), shown(time, "time", duration_key),
+            ">= time.dt = " + seconds(e.dt),
+            join_why("the run must take a step", time.where(duration_key, c.source)));
+    }
+
+    const TableValues& output = c.one("output");
+    const std::string interval_key = output.has("interval") ? "interval" : "interval_periods";
+    if (!(plan.control.output_interval >= e.dt) ||
+        !(plan.control.output_interval <= plan.control.duration)) {
+        const std::string given = shown(output, "output", interval_key);
+        throw InvalidParameter(output.key_path(interval_key),
+                               interval_key == "interval"
+                                   ? given
+                                   : given + " (" + seconds(plan.control.output_interval) + ")",
+                               "[time.dt, the run's duration] = [" + seconds(e.dt) + ", " +
+                                   seconds(plan.control.duration) + "]",
+                               output.where(interval_key, c.source));
+    }
+}
+
+}  // namespace
+
+RunPlan resolve(ConfigValues& c) {
+    complete_tables(c);
+    RunPlan plan;
+    build_box_and_drive(c, plan.engine);
+    build_bodies(c, plan);
+    build_time_and_output(c, plan);
+    build_the_rest(c, plan);
+    check_across_keys(c, plan);
+    validate(plan.engine);  // the engine's own checks, e.g. that every sphere fits the gap
+    return plan;
+}
+
+}  // namespace rodsea::config

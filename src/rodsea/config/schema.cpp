@@ -1,0 +1,496 @@
+#include "rodsea/config/schema.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <numbers>
+
+#include "rodsea/error.hpp"
+#include "rodsea/shape/sphere_chain.hpp"
+
+namespace rodsea::config {
+
+namespace {
+
+Interval closed(double lo, double hi) {
+    return {lo, hi, false, false};
+}
+Interval left_open(double lo, double hi) {
+    return {lo, hi, true, false};
+}
+
+// Fluent construction keeps each entry of the table readable as one block.
+class Key {
+  public:
+    Key(std::string table, std::string name, ValueType type) {
+        s_.table = std::move(table);
+        s_.name = std::move(name);
+        s_.type = type;
+    }
+    Key& unit(std::string u) { return s_.unit = std::move(u), *this; }
+    Key& def(Value v) { return s_.default_value = std::move(v), *this; }
+    Key& def_text(std::string t) { return s_.default_text = std::move(t), *this; }
+    Key& example(Value v) { return s_.example = std::move(v), *this; }
+    Key& range(Interval r) { return s_.range = r, *this; }
+    Key& integers(std::int64_t lo, std::int64_t hi) {
+        s_.min_integer = lo;
+        s_.max_integer = hi;
+        return *this;
+    }
+    Key& options(std::vector<std::string> o) { return s_.options = std::move(o), *this; }
+    Key& doc(std::string d) { return s_.doc = std::move(d), *this; }
+    Key& choice(std::string why, KindMask kinds = kAllKinds) {
+        s_.choice = std::move(why);
+        s_.choice_kinds = kinds;
+        return *this;
+    }
+    Key& alternative(std::string key) { return s_.alternative = std::move(key), *this; }
+    Key& kinds(KindMask k) { return s_.kinds = k, *this; }
+    Key& required() { return s_.required = true, *this; }
+    operator KeySpec() const { return s_; }
+
+  private:
+    KeySpec s_;
+};
+
+Key real(std::string table, std::string name) {
+    return Key(std::move(table), std::move(name), ValueType::real);
+}
+Key integer(std::string table, std::string name) {
+    return Key(std::move(table), std::move(name), ValueType::integer);
+}
+
+std::vector<KeySpec> make_keys() {
+    constexpr auto int64_max = std::numeric_limits<std::int64_t>::max();
+    std::vector<KeySpec> k;
+    // [box]
+    k.push_back(real("box", "side")
+                    .unit("mm")
+                    .def(252.0)
+                    .range(left_open(0.0, 1e5))
+                    .alternative("side_in_polar_lengths")
+                    .doc("Side L of the square box, periodic in x and y; the paper's 252 mm = "
+                         "56 ℓ_p. At least twice the longest body."));
+    k.push_back(real("box", "side_in_polar_lengths")
+                    .unit("ℓ_p")
+                    .def_text("(from side)")
+                    .range(left_open(0.0, 2e4))
+                    .alternative("side")
+                    .doc("The same side in units of the polar rod's length ℓ_p = 4.5 mm (the "
+                         "paper: 56)."));
+    // [drive]
+    k.push_back(real("drive", "gamma")
+                    .def(7.0)
+                    .range(closed(0.0, 1000.0))
+                    .doc("Γ = AΩ²/g, the plates' peak acceleration over g; the amplitude is "
+                         "A = Γg/Ω² (43.49 µm at the defaults)."));
+    k.push_back(real("drive", "frequency")
+                    .unit("Hz")
+                    .def(200.0)
+                    .range(left_open(0.0, 1e5))
+                    .alternative("angular_frequency")
+                    .doc("Drive frequency f = Ω/2π (the paper: 200 Hz, period 5 ms)."));
+    k.push_back(real("drive", "angular_frequency")
+                    .unit("rad/s")
+                    .def_text("(from frequency)")
+                    .range(left_open(0.0, 6e5))
+                    .alternative("frequency")
+                    .doc("Ω = 2πf."));
+    k.push_back(real("drive", "gap")
+                    .unit("mm")
+                    .def(1.5)
+                    .range(left_open(0.0, 100.0))
+                    .choice("provisional: the paper's 1.2 mm cannot hold the 1.375 mm thick end "
+                            "of its polar rod; MODEL.md §1")
+                    .doc("w, the distance from the base to the lid. Every body's largest sphere "
+                         "must fit."));
+    k.push_back(real("drive", "gravity")
+                    .unit("mm/s²")
+                    .def(9810.0)
+                    .range(closed(0.0, 1e6))
+                    .choice("the paper does not give g: 9.81 m/s²; MODEL.md §1")
+                    .doc("g, pulling every body toward the base between collisions."));
+    // [[species]]
+    k.push_back(Key("species", "name", ValueType::text)
+                    .def_text("the kind")
+                    .doc("Unique name (letters, digits, _ and -), used in outputs and in "
+                         "[[collisions.pair]]."));
+    k.push_back(Key("species", "kind", ValueType::option)
+                    .options({"polar_rod", "apolar_rod", "bead"})
+                    .required()
+                    .doc("polar_rod: ℓ_p = 4.5 mm, 1.375 mm thick at one end and 0.4 mm at the "
+                         "other; apolar_rod: 0.8 mm at the centre, 0.4 mm at both ends; bead: "
+                         "a 0.8 mm sphere (MODEL.md §2)."));
+    k.push_back(real("species", "length")
+                    .unit("mm")
+                    .def_text("required (apolar_rod)")
+                    .range(left_open(kApolarRodDiameter, 20.0))
+                    .kinds(kApolarRod)
+                    .alternative("aspect_ratio")
+                    .doc("ℓ_a, the apolar rod's length (the paper: 1.0, 1.5, 2.0, 2.5, 4.5)."));
+    k.push_back(real("species", "aspect_ratio")
+                    .def_text("(from length)")
+                    .range(left_open(1.0, 20.0 / kApolarRodDiameter))
+                    .kinds(kApolarRod)
+                    .alternative("length")
+                    .doc("σ = ℓ_a / 0.8 mm (the paper: 1.25, 1.875, 2.5, 3.125, 5.625)."));
+    k.push_back(real("species", "area_fraction")
+                    .def_text("required, or count")
+                    .range(left_open(0.0, kMaxAreaFraction))
+                    .alternative("count")
+                    .doc("φ: the count is round(φL²/A), A the area of the body lying flat "
+                         "(MODEL.md §2); 0.9069 is the densest packing of discs."));
+    k.push_back(integer("species", "count")
+                    .unit("bodies")
+                    .def_text("(from area_fraction)")
+                    .integers(0, 100'000'000)
+                    .alternative("area_fraction")
+                    .doc("The number of bodies."));
+    k.push_back(
+        integer("species", "spheres")
+            .def_text("13 (polar_rod), 4ℓ_a/mm − 1 (apolar_rod), 1 (bead)")
+            .integers(1, 200)
+            .choice("reproduces the paper's Table S1 counts; MODEL.md §2", kPolarRod | kApolarRod)
+            .doc("Spheres in the rigid chain: at least 2 for a polar rod, exactly 1 "
+                 "for a bead."));
+    k.push_back(real("species", "mass")
+                    .unit("mass units")
+                    .range(left_open(0.0, 1e6))
+                    .choice("the paper's m_apolar/m_polar = 0.20, kept for every ℓ_a and for "
+                            "beads; MODEL.md §2",
+                            kApolarRod | kBead)
+                    .doc("Mass in arbitrary units (only ratios matter); the inertia tensor "
+                         "scales with it."));
+    k.push_back(
+        real("species", "plate_friction")
+            .range(closed(0.0, 10.0))
+            .choice("the paper gives no bead–plate values: the apolar rod's; MODEL.md §3", kBead)
+            .doc("μ, Coulomb friction of collisions with the base and the lid (paper, "
+                 "Table S2)."));
+    k.push_back(
+        real("species", "plate_restitution")
+            .range(closed(0.0, 1.0))
+            .choice("the paper gives no bead–plate values: the apolar rod's; MODEL.md §3", kBead)
+            .doc("e, normal restitution of collisions with the base and the lid (paper, "
+                 "Table S2)."));
+    // [collisions]
+    k.push_back(real("collisions", "friction")
+                    .def(0.05)
+                    .range(closed(0.0, 10.0))
+                    .doc("μ, Coulomb friction of every body–body collision (paper, Table S2)."));
+    k.push_back(real("collisions", "restitution")
+                    .def(0.30)
+                    .range(closed(0.0, 1.0))
+                    .doc("e, normal restitution of every body–body collision (paper, Table S2)."));
+    k.push_back(Key("collisions.pair", "species", ValueType::name_pair)
+                    .required()
+                    .example(std::vector<std::string>{"polar", "medium"})
+                    .doc("The two species' names; the same name twice means bodies of one "
+                         "species."));
+    k.push_back(real("collisions.pair", "friction")
+                    .def_text("collisions.friction")
+                    .example(0.05)
+                    .range(closed(0.0, 10.0))
+                    .doc("μ for this pair, both orders."));
+    k.push_back(real("collisions.pair", "restitution")
+                    .def_text("collisions.restitution")
+                    .example(0.3)
+                    .range(closed(0.0, 1.0))
+                    .doc("e for this pair, both orders."));
+    // [noise]
+    k.push_back(real("noise", "epsilon")
+                    .unit("1/mm")
+                    .def(0.0)
+                    .range(closed(0.0, 1000.0))
+                    .alternative("rotational_diffusion")
+                    .choice("the kick is added to ω_z (not set), scaled by the pre-collision "
+                            "normal speed |u_n|; MODEL.md §3")
+                    .doc("ε: at each collision of a polar rod with a plate, ω_z += ε |u_n| η, "
+                         "η = ±1."));
+    k.push_back(real("noise", "rotational_diffusion")
+                    .unit("rad²/s")
+                    .def_text("none")
+                    .example(0.026)
+                    .range(closed(0.0, 100.0))
+                    .alternative("epsilon")
+                    .doc("D_r, the paper's control parameter (0, 0.026, 0.23, 1.21, 1.87). Needs "
+                         "the ε → D_r table of `rodsea calibrate`, which does not exist yet: "
+                         "give epsilon instead."));
+    k.push_back(Key("noise", "calibration_table", ValueType::text)
+                    .unit("path")
+                    .def_text("none")
+                    .example(std::string("calibration.csv"))
+                    .doc("The ε → D_r table written by `rodsea calibrate` (not available yet), "
+                         "for rotational_diffusion."));
+    // [time]
+    k.push_back(real("time", "dt")
+                    .unit("s")
+                    .def(5e-6)
+                    .range(closed(1e-9, 1e-3))
+                    .choice("1000 steps per 5 ms drive period; results must not change when it "
+                            "is halved; MODEL.md §3")
+                    .doc("The time step."));
+    k.push_back(real("time", "duration")
+                    .unit("s")
+                    .def(1.0)
+                    .range(left_open(0.0, 1e6))
+                    .alternative("periods")
+                    .doc("Simulated time; the run takes round(duration/dt) steps."));
+    k.push_back(real("time", "periods")
+                    .unit("periods")
+                    .def_text("(from duration)")
+                    .range(left_open(0.0, 1e9))
+                    .alternative("duration")
+                    .doc("Simulated time in drive periods 2π/Ω."));
+    // [output]
+    k.push_back(real("output", "interval")
+                    .unit("s")
+                    .def(0.05)
+                    .range(left_open(0.0, 1e6))
+                    .alternative("interval_periods")
+                    .doc("Simulated time between trajectory frames and observable rows, "
+                         "rounded to whole steps; at least dt, at most the duration."));
+    k.push_back(real("output", "interval_periods")
+                    .unit("periods")
+                    .def_text("(from interval)")
+                    .range(left_open(0.0, 1e9))
+                    .alternative("interval")
+                    .doc("The same in drive periods."));
+    k.push_back(real("output", "checkpoint_interval")
+                    .unit("min")
+                    .def(30.0)
+                    .range(left_open(0.0, 1e6))
+                    .doc("Wall-clock minutes between checkpoints."));
+    // [run]
+    k.push_back(integer("run", "seed")
+                    .def(std::int64_t{1})
+                    .integers(0, int64_max)
+                    .doc("Seed of every random choice (initial state, noise signs): the same "
+                         "seed gives the same run."));
+    k.push_back(integer("run", "threads")
+                    .def(std::int64_t{1})
+                    .integers(1, 256)
+                    .doc("Worker threads. The engine is single-threaded until the speed issue "
+                         "lands."));
+    // [initial]
+    k.push_back(Key("initial", "orientation", ValueType::option)
+                    .def(std::string("isotropic"))
+                    .options({"isotropic", "aligned"})
+                    .doc("isotropic: random in-plane angles; aligned: every rod along +x."));
+    k.push_back(integer("initial", "randomisation_sweeps")
+                    .def(std::int64_t{50})
+                    .integers(0, 100'000)
+                    .doc("Monte Carlo sweeps that randomise the lattice start."));
+    // [engine]
+    k.push_back(integer("engine", "max_sweeps")
+                    .def(std::int64_t{2000})
+                    .integers(1, 1'000'000'000)
+                    .doc("Impulse sweeps per step before the contacts left count as "
+                         "unresolved."));
+    k.push_back(real("engine", "approach_tolerance")
+                    .unit("mm/s")
+                    .def(1e-6)
+                    .range(closed(0.0, 1000.0))
+                    .doc("Normal relative speeds above −tolerance count as not approaching."));
+    return k;
+}
+
+std::string doc_number(double v) {
+    // Whole numbers in full ("100000", not "1e+05"): ranges and defaults read as typed.
+    if (v == std::floor(v) && std::abs(v) < 1e15) return std::to_string(static_cast<long long>(v));
+    char buffer[64];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+    return std::string(buffer, result.ptr);
+}
+
+std::string with_unit(const std::string& text, const std::string& unit) {
+    return unit.empty() ? text : text + " " + unit;
+}
+
+}  // namespace
+
+KindMask kind_bit(BodyKind kind) {
+    switch (kind) {
+        case BodyKind::polar_rod:
+            return kPolarRod;
+        case BodyKind::apolar_rod:
+            return kApolarRod;
+        case BodyKind::bead:
+            return kBead;
+    }
+    return 0;
+}
+
+bool Interval::contains(double v) const {
+    // Written so that NaN fails every comparison.
+    const bool above = lo_open ? v > lo : v >= lo;
+    const bool below = hi_open ? v < hi : v <= hi;
+    return above && below && std::isfinite(v);
+}
+
+std::string KeySpec::type_text() const {
+    switch (type) {
+        case ValueType::real:
+            return "real";
+        case ValueType::integer:
+            return "integer";
+        case ValueType::text:
+            return "string";
+        case ValueType::option:
+            return "string";
+        case ValueType::name_pair:
+            return "array of 2 strings";
+    }
+    return "";
+}
+
+std::string KeySpec::allowed_text() const {
+    switch (type) {
+        case ValueType::real: {
+            const bool has_lo = std::isfinite(range.lo), has_hi = std::isfinite(range.hi);
+            if (has_lo && has_hi) {
+                // Appended piece by piece: GCC 12 misreports `"(" + std::string` (-Wrestrict).
+                std::string s = range.lo_open ? "(" : "[";
+                s += doc_number(range.lo);
+                s += ", ";
+                s += doc_number(range.hi);
+                s += range.hi_open ? ")" : "]";
+                return with_unit(s, unit);
+            }
+            if (has_lo)
+                return with_unit((range.lo_open ? "> " : ">= ") + doc_number(range.lo), unit);
+            if (has_hi)
+                return with_unit((range.hi_open ? "< " : "<= ") + doc_number(range.hi), unit);
+            return "any finite number";
+        }
+        case ValueType::integer:
+            if (max_integer == std::numeric_limits<std::int64_t>::max())
+                return "an integer >= " + std::to_string(min_integer);
+            return "an integer in [" + std::to_string(min_integer) + ", " +
+                   std::to_string(max_integer) + "]";
+        case ValueType::text:
+            return name == "name" ? "letters, digits, _ and -" : "any string";
+        case ValueType::option: {
+            std::string s;
+            for (size_t i = 0; i < options.size(); ++i) {
+                if (i > 0) s += i + 1 == options.size() ? " or " : ", ";
+                s += "\"" + options[i] + "\"";
+            }
+            return s;
+        }
+        case ValueType::name_pair:
+            return "two names of [[species]]";
+    }
+    return "";
+}
+
+std::string doc_text(const Value& v) {
+    if (const auto* d = std::get_if<double>(&v)) return doc_number(*d);
+    return toml_literal(v);
+}
+
+std::string KeySpec::shown(const Value& v) const {
+    if (const auto* d = std::get_if<double>(&v)) return with_unit(format_number(*d), unit);
+    if (const auto* i = std::get_if<std::int64_t>(&v)) return with_unit(std::to_string(*i), unit);
+    return toml_literal(v);
+}
+
+std::string KeySpec::default_doc() const {
+    if (default_value) return doc_text(*default_value);
+    if (!default_text.empty()) return default_text;
+    if (required) return "required";
+    if (table == "species") {
+        // Group the kinds that share a default: "1 (polar_rod), 0.2 (apolar_rod, bead)".
+        std::vector<std::pair<std::string, std::string>> groups;
+        for (const BodyKind kind : {BodyKind::polar_rod, BodyKind::apolar_rod, BodyKind::bead}) {
+            const auto v = species_default(name, kind, 0.0);
+            if (!v) continue;
+            const std::string text = doc_text(*v);
+            if (!groups.empty() && groups.back().first == text)
+                groups.back().second += std::string(", ") + to_string(kind);
+            else
+                groups.emplace_back(text, to_string(kind));
+        }
+        std::string s;
+        for (const auto& [value, kinds_text] : groups)
+            s += (s.empty() ? "" : ", ") + value + " (" + kinds_text + ")";
+        return s;
+    }
+    return "none";
+}
+
+const std::vector<TableSpec>& config_tables() {
+    static const std::vector<TableSpec> tables = {
+        {"box", false, "The square box, periodic in x and y (MODEL.md §1)."},
+        {"drive", false,
+         "The vibrating plates: base at A cos Ωt, lid at A cos Ωt + w, A = Γg/Ω² (MODEL.md §1)."},
+        {"species", true,
+         "One table per kind of body (MODEL.md §2), in the order the outputs use. Without any "
+         "[[species]] the paper's main system is used: polar rods named \"polar\" at φ = 0.05 "
+         "in apolar rods of ℓ_a = 2.5 mm (σ = 3.125) named \"medium\" at φ = 0.50. Give exactly "
+         "one of area_fraction and count, and for an apolar rod exactly one of length and "
+         "aspect_ratio; a key that does not apply to the kind is an error."},
+        {"collisions", false, "Body–body collisions: the Stronge impulse of MODEL.md §3."},
+        {"collisions.pair", true,
+         "Optional, repeatable: coefficients for one pair of species, overriding [collisions]."},
+        {"noise", false,
+         "Rotational noise of polar rods at their collisions with the plates (MODEL.md §3)."},
+        {"time", false, "The time step and the length of the run."},
+        {"output", false, "How often the run writes frames, rows and checkpoints."},
+        {"run", false, "Seed and threads."},
+        {"initial", false, "The initial state: a lattice start randomised by Monte Carlo."},
+        {"engine", false, "Advanced: the impulse solver."},
+    };
+    return tables;
+}
+
+const std::vector<KeySpec>& config_keys() {
+    static const std::vector<KeySpec> keys = make_keys();
+    return keys;
+}
+
+const TableSpec* find_table(std::string_view path) {
+    for (const TableSpec& t : config_tables())
+        if (t.path == path) return &t;
+    return nullptr;
+}
+
+const KeySpec* find_key(std::string_view table, std::string_view name) {
+    for (const KeySpec& k : config_keys())
+        if (k.table == table && k.name == name) return &k;
+    return nullptr;
+}
+
+std::vector<const KeySpec*> keys_of(std::string_view table) {
+    std::vector<const KeySpec*> keys;
+    for (const KeySpec& k : config_keys())
+        if (k.table == table) keys.push_back(&k);
+    return keys;
+}
+
+std::optional<Value> species_default(std::string_view key, BodyKind kind, double length_mm) {
+    if (key == "name") return std::string(to_string(kind));
+    if (key == "spheres") {
+        switch (kind) {
+            case BodyKind::polar_rod:
+                return std::int64_t{PolarRodGeometry{}.sphere_count};
+            case BodyKind::apolar_rod:
+                return std::int64_t{ApolarRodGeometry::default_sphere_count(length_mm)};
+            case BodyKind::bead:
+                return std::int64_t{1};
+        }
+    }
+    if (key == "mass") return kind == BodyKind::polar_rod ? 1.0 : 0.2;  // MODEL.md: ratio 0.20
+    if (key == "plate_friction" || key == "plate_restitution") {
+        // The engine's species constructors hold Table S2 and the bead CHOICE; build each once.
+        static const ContactCoefficients polar = polar_rod_species().plate;
+        static const ContactCoefficients apolar = apolar_rod_species(2.5).plate;
+        static const ContactCoefficients bead = bead_species().plate;
+        const ContactCoefficients& c = kind == BodyKind::polar_rod    ? polar
+                                       : kind == BodyKind::apolar_rod ? apolar
+                                                                      : bead;
+        return key == "plate_friction" ? c.friction : c.restitution;
+    }
+    return std::nullopt;
+}
+
+}  // namespace rodsea::config
