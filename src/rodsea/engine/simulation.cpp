@@ -32,7 +32,7 @@ bool finite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-void validate_bodies(const EngineParameters& params, BodyState& bodies) {
+void validate_bodies(const EngineParameters& params, BodyState& bodies, bool fresh_start) {
     if (bodies.size() == 0) throw InvalidParameter("bodies", "0 bodies", ">= 1 body");
     const size_t n = bodies.size();
     if (bodies.position.size() != n || bodies.orientation.size() != n ||
@@ -53,10 +53,12 @@ void validate_bodies(const EngineParameters& params, BodyState& bodies) {
             throw InvalidParameter(key + ".orientation", "a zero or non-finite quaternion",
                                    "a non-zero quaternion");
         }
-        bodies.orientation[b] = normalized(q);
+        // A resumed state is taken as it is: renormalising would change its last bits.
+        if (fresh_start) bodies.orientation[b] = normalized(q);
         if (!finite(bodies.position[b]) || !finite(bodies.velocity[b]) || !finite(bodies.spin[b])) {
             throw InvalidParameter(key, "a non-finite position, velocity or spin", "finite values");
         }
+        if (!fresh_start) continue;  // a resumed body may touch a plate
         const Species& sp = params.species[bodies.species[b]];
         for (size_t s = 0; s < sp.shape.sphere_count(); ++s) {
             const double z =
@@ -93,9 +95,21 @@ void hash_bytes(std::uint64_t& h, const std::vector<T>& data) {
 Simulation::Simulation(EngineParameters params, BodyState bodies)
     : params_(std::move(params)), bodies_(std::move(bodies)) {
     validate(params_);
-    validate_bodies(params_, bodies_);
+    validate_bodies(params_, bodies_, true);
     spheres_.assign(bodies_, params_.species);
     spheres_.update_positions(bodies_, params_.species);
+}
+
+Simulation::Simulation(EngineParameters params, BodyState bodies, std::uint64_t step_count, Resumed)
+    : params_(std::move(params)), bodies_(std::move(bodies)), step_count_(step_count) {
+    validate(params_);
+    validate_bodies(params_, bodies_, false);
+    spheres_.assign(bodies_, params_.species);
+    spheres_.update_positions(bodies_, params_.species);
+}
+
+Simulation Simulation::resume(EngineParameters params, BodyState bodies, std::uint64_t step_count) {
+    return Simulation(std::move(params), std::move(bodies), step_count, Resumed{});
 }
 
 void Simulation::step() {

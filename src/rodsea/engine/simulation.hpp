@@ -57,6 +57,13 @@ class Simulation {
     // non-finite state, or a body that does not lie between the plates at t = 0.
     Simulation(EngineParameters params, BodyState bodies);
 
+    // Continues a run from a checkpointed state after `step_count` steps. The state came from
+    // the engine, so a body may touch a plate within the usual small overlap: only the species
+    // indices and finiteness are checked, not the gap. Stepping on gives the same trajectory,
+    // bit for bit, as the run that was never stopped (all inter-step state is in the bodies and
+    // the step counter; noise signs hash the step number).
+    static Simulation resume(EngineParameters params, BodyState bodies, std::uint64_t step_count);
+
     void step();
     void run(std::uint64_t steps);
 
@@ -78,6 +85,9 @@ class Simulation {
     std::uint64_t state_hash() const;                // FNV-1a over every bit of the state
 
   private:
+    struct Resumed {};
+    Simulation(EngineParameters params, BodyState bodies, std::uint64_t step_count, Resumed);
+
     EngineParameters params_;
     BodyState bodies_;
     std::uint64_t step_count_ = 0;

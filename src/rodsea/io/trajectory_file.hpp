@@ -1,0 +1,71 @@
+#pragma once
+// The trajectory file, laid out after H5MD 1.1 (https://www.nongnu.org/h5md/) so that h5py,
+// MDAnalysis and other H5MD readers find their way around it:
+//
+//   /h5md                       version = [1, 1]; author, creator (rodsea + version)
+//   /particles/bodies/box       dimension = 3, boundary = [periodic, periodic, none], edges (mm)
+//   /particles/bodies/{position, orientation, velocity, angular_velocity}/{step, time, value}
+//                               one frame per output interval; value is float32 [frames, N, 3|4]
+//   /particles/bodies/species   [N] int32 index into /parameters/rodsea/species (fixed in time)
+//   /observables/<name>/{step, time, value}   the scalar time series, one row per frame
+//   /parameters/rodsea          version, config (the full resolved TOML), units; species/<i>/...
+//                               with each species' sphere offsets and radii, mass and inertia
+//
+// Every "value" and "time" carries a `unit` attribute (mm, mm s-1, rad s-1, s, ...).
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rodsea/engine/body_state.hpp"
+#include "rodsea/engine/parameters.hpp"
+
+namespace rodsea {
+
+// A named scalar column of the time series with its unit ("1" for dimensionless).
+struct SeriesColumn {
+    std::string name;
+    std::string unit;
+};
+
+class TrajectoryFile {
+  public:
+    // Creates (or truncates) `path` and writes everything that does not change in time.
+    static TrajectoryFile create(const std::filesystem::path& path, const EngineParameters& params,
+                                 const std::vector<std::uint32_t>& species,
+                                 const std::string& config_toml,
+                                 const std::vector<SeriesColumn>& columns);
+    // Reopens a file to continue after its first `frames` frames: later frames (written after
+    // the checkpoint that is being resumed) are dropped, so none is ever duplicated.
+    static TrajectoryFile reopen(const std::filesystem::path& path, std::uint64_t frames,
+                                 const std::vector<SeriesColumn>& columns);
+
+    TrajectoryFile(TrajectoryFile&&) noexcept;
+    TrajectoryFile& operator=(TrajectoryFile&&) noexcept;
+    ~TrajectoryFile();
+
+    // One frame: the bodies and the time-series row. frames() counts it only once all of it
+    // is written, so after a failure (a full disk) it still says what is complete.
+    void append_frame(std::uint64_t step, double time, const BodyState& bodies,
+                      const std::vector<double>& series_row);
+    std::uint64_t frames() const;
+    // Makes sure the file can grow by `bytes` before a frame is written, by claiming that many
+    // disk blocks beyond its end (fallocate, keeping the size) and checking the process's
+    // file-size limit: a full disk, a quota or a limit then fails here, cleanly, and not in the
+    // middle of HDF5's own writes, which would leave a file HDF5 cannot open again. Throws
+    // FileError naming the file and the reason.
+    void reserve(std::uint64_t bytes);
+    void flush();  // makes every appended frame durable before a checkpoint refers to it
+    void close();
+
+  private:
+    struct Impl;
+    explicit TrajectoryFile(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+// The config stored in a trajectory or checkpoint file (for `--resume` and for analysis).
+std::string read_stored_config(const std::filesystem::path& path);
+
+}  // namespace rodsea
