@@ -19,13 +19,23 @@ struct PackingCheck {
 };
 PackingCheck check_packing(const EngineParameters& params, const std::vector<long long>& counts);
 
+// Every two bodies of a built state are at least this far apart in the plane (mm): far enough that
+// no contact exists at t = 0, close enough that the lattice start reaches φ ≈ 0.85.
+inline constexpr double kBuildClearance = 0.0025;
+
 struct BuildReport {
-    double seconds = 0.0;                // wall time of the build
-    int sweeps = 0;                      // randomisation sweeps done
-    double acceptance = 0.0;             // fraction of accepted Monte Carlo moves
-    double min_gap = 0.0;                // smallest in-plane gap between spheres of two bodies, mm
-    std::vector<double> nematic_order;   // S per species after randomisation
-    std::vector<double> polar_order;     // P per species after randomisation
+    double seconds = 0.0;     // wall time of the build
+    int sweeps = 0;           // randomisation sweeps done
+    double acceptance = 0.0;  // fraction of accepted Monte Carlo moves
+    double min_gap = 0.0;  // smallest in-plane gap between spheres of two bodies, mm (at most 0.01)
+    std::vector<double> nematic_order;     // S per species after randomisation
+    std::vector<double> polar_order;       // P per species after randomisation
+    bool lattice_start = true;             // false: random insertion sufficed (low density)
+    std::uint64_t insertion_attempts = 0;  // random placements tried (0 if not tried)
+    double row_height = 0.0;               // mm of the box's height the lattice rows need
+    double pitch_scale = 1.0;              // lattice pitch over the densest pitch (spread_lattice)
+    std::vector<double> translation_step;  // Monte Carlo step per species at the end, mm
+    std::vector<double> rotation_step;     // Monte Carlo turn per species at the end, rad
 };
 
 // Throws InvalidParameter (key "species") when check_packing fails.
