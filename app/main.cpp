@@ -1,44 +1,174 @@
-// rodsea: command-line entry. For now one command, `demo`, runs the built-in default scene.
-#include <algorithm>
-#include <cmath>
-#include <cstdlib>
+// rodsea: command-line entry. Each command parses its options, checks its whole input, says
+// what it will do, then does it. Exit codes: see ExitCode in rodsea/run/run_driver.hpp.
+#include <unistd.h>
+
+#include <filesystem>
+#include <functional>
 #include <iostream>
+#include <map>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
-#include "rodsea/app/demo.hpp"
+#include "rodsea/config/config_file.hpp"
 #include "rodsea/error.hpp"
+#include "rodsea/run/plan_report.hpp"
+#include "rodsea/run/run_driver.hpp"
 
 namespace {
 
+using rodsea::ExitCode;
+
 constexpr const char* kUsage =
-    R"(rodsea — vibrated granular rods: polar rods in a sea of apolar rods
+    R"(rodsea — vibrated granular rods: polar rods in a sea of apolar rods or beads
 
 usage:
-  rodsea demo [options]   run the built-in default scene and write CSV output
-  rodsea --help           this text
-  rodsea --version
+  rodsea run CONFIG [--out DIR] [--overwrite] [--quiet]   start a simulation
+  rodsea run --resume DIR [--quiet]                       continue one from its checkpoint
+  rodsea info CONFIG                                      what CONFIG would simulate
+  rodsea config --defaults | --reference                  a complete default config, or the
+                                                          key reference (docs/config.md)
+  rodsea help COMMAND | --help | --version
 
-demo options:
-  --periods N     simulated drive periods (5 ms each at 200 Hz)     [default 40]
-  --box L         side of the square periodic box, mm               [default 30]
-  --epsilon E     rotational noise strength of polar rods, 1/mm      [default 0]
-  --seed S        random seed (initial orientations, noise signs)    [default 1]
-  --out DIR       output directory                                  [default out/demo]
-  --quiet         no progress lines
-
-The demo scene: polar rods (l_p = 4.5 mm) at area fraction 0.05 among apolar rods
-(l_a = 2.5 mm) at 0.30, plates at Gamma = 7, 200 Hz, gap 1.5 mm, dt = 5 us.
-Draw the result with: /usr/bin/python3 scripts/plot_snapshot.py DIR
+Units everywhere: mm, s (and rad, Hz); masses in an arbitrary unit. Examples: examples/*.toml.
+Exit codes: 0 done, 1 unexpected failure, 2 bad input (nothing done), 74 a file could not be
+written (a checkpoint was kept), 130/143 stopped by SIGINT/SIGTERM (a checkpoint was kept).
 )";
 
-double parse_number(std::string_view flag, const char* text) {
-    char* end = nullptr;
-    const double v = std::strtod(text, &end);
-    if (end == text || *end != '\0')
-        throw rodsea::InvalidParameter(std::string(flag), std::string("'") + text + "'",
-                                       "a number");
-    return v;
+constexpr const char* kRunHelp = R"(rodsea run CONFIG [--out DIR] [--overwrite] [--quiet]
+rodsea run --resume DIR [--quiet]
+
+Reads CONFIG (TOML; every key in docs/config.md), checks all of it and the packing, prints the
+plan, builds the initial state (every body flat on the base, no overlaps) and runs it, writing
+into DIR (default: out/<config name>):
+  config.toml      the full resolved config        trajectory.h5   H5MD trajectory + time series
+  timeseries.csv   the time series as CSV          checkpoint.h5   the latest checkpoint
+On a terminal a progress bar shows simulated time, ETA, steps/s and P; otherwise a log line
+every 5 %. Checkpoints are written every output.checkpoint_interval minutes of wall time and on
+SIGINT/SIGTERM (Ctrl-C stops cleanly); --resume continues bit for bit where it stopped.
+
+  --out DIR      output directory; refused if it exists and is not empty
+  --overwrite    replace the run files in an existing DIR
+  --resume DIR   continue the run in DIR from its checkpoint.h5
+  --quiet        no plan and no progress (errors are still printed)
+)";
+
+constexpr const char* kInfoHelp = R"(rodsea info CONFIG
+
+Prints what CONFIG would simulate, without running it: the box and drive (amplitude A, peak
+plate speed), counts per species with spheres, projected areas and actual area fractions, the
+number of steps, the expected memory and output size, whether the packing is possible, and every
+MODEL.md CHOICE in force.
+)";
+
+constexpr const char* kConfigHelp = R"(rodsea config --defaults | --reference
+
+  --defaults    print a complete config with every key at its default (commented with unit and
+                allowed range): a starting point for your own
+  --reference   print the key reference in Markdown (this is docs/config.md)
+)";
+
+struct Arguments {
+    std::vector<std::string> positional;
+    std::map<std::string, std::string> values;  // --flag VALUE
+    std::vector<std::string> switches;          // --flag
+
+    bool has(std::string_view flag) const {
+        for (const std::string& s : switches)
+            if (s == flag) return true;
+        return false;
+    }
+    std::optional<std::string> value(const std::string& flag) const {
+        auto it = values.find(flag);
+        if (it == values.end()) return std::nullopt;
+        return it->second;
+    }
+};
+
+// Splits argv by the flags a command accepts; anything else is an error naming it.
+Arguments parse(int argc, char** argv, int first, const std::vector<std::string>& valued,
+                const std::vector<std::string>& switches, std::string_view command) {
+    Arguments a;
+    for (int i = first; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg.rfind("--", 0) != 0) {
+            a.positional.push_back(arg);
+            continue;
+        }
+        if (std::find(valued.begin(), valued.end(), arg) != valued.end()) {
+            if (i + 1 >= argc) throw rodsea::InvalidParameter(arg, "nothing", "a value after it");
+            a.values[arg] = argv[++i];
+        } else if (std::find(switches.begin(), switches.end(), arg) != switches.end()) {
+            a.switches.push_back(arg);
+        } else {
+            std::string allowed;
+            for (const auto& f : valued)
+                allowed += (allowed.empty() ? "" : " ") + f;
+            for (const auto& f : switches)
+                allowed += (allowed.empty() ? "" : " ") + f;
+            throw rodsea::InvalidParameter(
+                arg, "an unknown option of '" + std::string(command) + "'", allowed);
+        }
+    }
+    return a;
+}
+
+bool stdout_is_terminal() {
+    return ::isatty(STDOUT_FILENO) == 1;
+}
+
+int command_run(int argc, char** argv) {
+    const Arguments a =
+        parse(argc, argv, 2, {"--out", "--resume"}, {"--overwrite", "--quiet", "--help"}, "run");
+    if (a.has("--help")) {
+        std::cout << kRunHelp;
+        return ExitCode::kExitOk;
+    }
+    rodsea::RunOptions options;
+    options.quiet = a.has("--quiet");
+    options.overwrite = a.has("--overwrite");
+    if (const auto dir = a.value("--resume")) {
+        if (!a.positional.empty() || a.value("--out") || options.overwrite)
+            throw rodsea::InvalidParameter("--resume", *dir, "alone (with --quiet at most)",
+                                           "the config and output directory come from DIR");
+        options.out_dir = *dir;
+        return rodsea::resume_run(*dir, options, std::cout, std::cerr, stdout_is_terminal());
+    }
+    if (a.positional.size() != 1)
+        throw rodsea::InvalidParameter("CONFIG", std::to_string(a.positional.size()) + " given",
+                                       "exactly one config file (see rodsea run --help)");
+    const std::filesystem::path config = a.positional[0];
+    const rodsea::RunPlan plan = rodsea::load_config_file(config);
+    options.out_dir =
+        a.value("--out").value_or((std::filesystem::path("out") / config.stem()).string());
+    return rodsea::start_run(plan, options, std::cout, std::cerr, stdout_is_terminal());
+}
+
+int command_info(int argc, char** argv) {
+    const Arguments a = parse(argc, argv, 2, {}, {"--help"}, "info");
+    if (a.has("--help")) {
+        std::cout << kInfoHelp;
+        return ExitCode::kExitOk;
+    }
+    if (a.positional.size() != 1)
+        throw rodsea::InvalidParameter("CONFIG", std::to_string(a.positional.size()) + " given",
+                                       "exactly one config file (see rodsea info --help)");
+    const rodsea::RunPlan plan = rodsea::load_config_file(a.positional[0]);
+    std::cout << "rodsea info " << a.positional[0] << "\n";
+    rodsea::describe_plan(plan, std::cout);
+    return ExitCode::kExitOk;
+}
+
+int command_config(int argc, char** argv) {
+    const Arguments a = parse(argc, argv, 2, {}, {"--defaults", "--reference", "--help"}, "config");
+    if (a.has("--help") || (a.has("--defaults") == a.has("--reference"))) {
+        std::cout << kConfigHelp;
+        return a.has("--help") ? ExitCode::kExitOk : ExitCode::kExitBadInput;
+    }
+    std::cout << (a.has("--defaults") ? rodsea::default_config_toml()
+                                      : rodsea::config_reference_markdown());
+    return ExitCode::kExitOk;
 }
 
 }  // namespace
@@ -46,60 +176,39 @@ double parse_number(std::string_view flag, const char* text) {
 int main(int argc, char** argv) {
     if (argc < 2 || std::string_view(argv[1]) == "--help" || std::string_view(argv[1]) == "-h") {
         std::cout << kUsage;
-        return argc < 2 ? 2 : 0;
+        return argc < 2 ? ExitCode::kExitBadInput : ExitCode::kExitOk;
     }
     const std::string_view command = argv[1];
     if (command == "--version") {
         std::cout << "rodsea " << RODSEA_VERSION << "\n";
-        return 0;
+        return ExitCode::kExitOk;
     }
-    if (command != "demo") {
-        std::cerr << "rodsea: unknown command '" << command << "' (commands: demo; see --help)\n";
-        return 2;
+    const std::map<std::string_view, std::function<int(int, char**)>> commands{
+        {"run", command_run}, {"info", command_info}, {"config", command_config}};
+    if (command == "help") {
+        const std::string_view topic = argc > 2 ? argv[2] : "";
+        std::cout << (topic == "run"      ? kRunHelp
+                      : topic == "info"   ? kInfoHelp
+                      : topic == "config" ? kConfigHelp
+                                          : kUsage);
+        return ExitCode::kExitOk;
     }
-    rodsea::DemoOptions options;
+    const auto it = commands.find(command);
+    if (it == commands.end()) {
+        std::cerr << "rodsea: unknown command '" << command
+                  << "' (commands: run, info, config, help; see rodsea --help)\n";
+        return ExitCode::kExitBadInput;
+    }
     try {
-        for (int i = 2; i < argc; ++i) {
-            const std::string_view flag = argv[i];
-            if (flag == "--quiet") {
-                options.quiet = true;
-                continue;
-            }
-            if (flag == "--help" || flag == "-h") {
-                std::cout << kUsage;
-                return 0;
-            }
-            constexpr std::string_view kValued[] = {"--periods", "--box", "--epsilon", "--seed",
-                                                    "--out"};
-            if (std::find(std::begin(kValued), std::end(kValued), flag) == std::end(kValued)) {
-                std::cerr << "rodsea: unknown option '" << flag
-                          << "' (demo options: --periods --box --epsilon --seed --out --quiet)\n";
-                return 2;
-            }
-            if (i + 1 >= argc)
-                throw rodsea::InvalidParameter(std::string(flag), "nothing", "a value after it");
-            const char* value = argv[++i];
-            if (flag == "--periods") {
-                options.drive_periods = parse_number(flag, value);
-            } else if (flag == "--box") {
-                options.box_side = parse_number(flag, value);
-            } else if (flag == "--epsilon") {
-                options.noise_epsilon = parse_number(flag, value);
-            } else if (flag == "--seed") {
-                const double seed = parse_number(flag, value);
-                if (seed < 0 || seed != std::floor(seed) || seed > 9.0e15)
-                    throw rodsea::InvalidParameter("--seed", value, "an integer in [0, 9e15]");
-                options.seed = static_cast<std::uint64_t>(seed);
-            } else {
-                options.out_dir = value;
-            }
-        }
-        return rodsea::run_demo(options, std::cout);
-    } catch (const rodsea::InvalidParameter& e) {
+        return it->second(argc, argv);
+    } catch (const std::invalid_argument& e) {  // InvalidParameter, ConfigSyntaxError
         std::cerr << "rodsea: " << e.what() << "\n";
-        return 2;
+        return ExitCode::kExitBadInput;
+    } catch (const rodsea::FileError& e) {
+        std::cerr << "rodsea: " << e.what() << "\n";
+        return ExitCode::kExitIoError;
     } catch (const std::exception& e) {
         std::cerr << "rodsea: " << e.what() << "\n";
-        return 1;
+        return ExitCode::kExitFailure;
     }
 }

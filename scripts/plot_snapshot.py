@@ -1,18 +1,20 @@
 #!/usr/bin/python3
-"""Top view of a rodsea demo output directory, drawn to DIR/snapshot.png.
+"""Top view of a rodsea run directory, drawn to DIR/snapshot.png.
 
-Every body is drawn as its true outline (the union of its spheres' discs in the plane). Polar
-rods are coloured by the direction of their axis (thick -> thin) on a cyclic colour wheel; the
-medium is grey. A second panel shows the polar order P(t) from timeseries.csv.
+Reads DIR/trajectory.h5 (H5MD, written by `rodsea run`). Every body of the chosen frame is drawn
+as its true outline (the union of its spheres' discs in the plane, periodic images included).
+Polar rods are coloured by the direction of their axis (thick -> thin) on a cyclic colour wheel;
+the medium is grey. A second panel shows the polar order P(t) of polar rods and the nematic order
+S(t) of the other species, from the file's time series.
 
-usage: /usr/bin/python3 scripts/plot_snapshot.py DIR
-Needs Debian's python3-numpy and python3-matplotlib (scripts/install-deps.sh installs them).
+usage: /usr/bin/python3 scripts/plot_snapshot.py DIR [FRAME]   (FRAME defaults to the last)
+Needs Debian's python3-h5py, -numpy and -matplotlib (scripts/install-deps.sh installs them).
 """
-import csv
 import math
 import os
 import sys
 
+import h5py
 import matplotlib
 
 matplotlib.use("Agg")
@@ -22,61 +24,60 @@ from matplotlib.patches import Circle  # noqa: E402
 import numpy as np  # noqa: E402
 
 
-def read_rows(path):
-    with open(path) as f:
-        return list(csv.DictReader(line for line in f if not line.startswith("#")))
-
-
-def box_size(path):
-    with open(path) as f:
-        header = f.readline()
-    # "# sphere offsets ...; box LX x LY mm"
-    words = header.split("box", 1)[1].split()
-    return float(words[0]), float(words[2])
-
-
 def rotate(q, v):
-    w, x, y, z = q
-    u = np.array([x, y, z])
+    """Rotates the vectors v (n x 3) by the unit quaternions q (n x 4, w first)."""
+    w, u = q[:, :1], q[:, 1:]
     t = 2.0 * np.cross(u, v)
     return v + w * t + np.cross(u, t)
 
 
 def main(argv):
-    if len(argv) != 2:
+    if len(argv) not in (2, 3):
         sys.exit(__doc__)
     out = argv[1]
-    for name in ("bodies.csv", "shapes.csv", "timeseries.csv"):
-        if not os.path.exists(os.path.join(out, name)):
-            sys.exit(f"plot_snapshot: {os.path.join(out, name)} is missing; run `rodsea demo --out {out}` first")
-    lx, ly = box_size(os.path.join(out, "shapes.csv"))
-    shapes = {}
-    for row in read_rows(os.path.join(out, "shapes.csv")):
-        shapes.setdefault(row["species"], []).append(
-            (np.array([float(row["ox"]), float(row["oy"]), float(row["oz"])]), float(row["radius"])))
+    path = os.path.join(out, "trajectory.h5")
+    if not os.path.exists(path):
+        sys.exit(f"plot_snapshot: {path} is missing; run `rodsea run CONFIG --out {out}` first")
+    f = h5py.File(path, "r")
+    bodies = f["particles/bodies"]
+    frames = bodies["position/value"].shape[0]
+    frame = int(argv[2]) if len(argv) == 3 else frames - 1
+    if not -frames <= frame < frames:
+        sys.exit(f"plot_snapshot: frame {frame} is outside the {frames} frames of {path}")
+    lx, ly, _ = bodies["box/edges"][:]
+    x = bodies["position/value"][frame].astype(float)
+    q = bodies["orientation/value"][frame].astype(float)
+    species = bodies["species"][:]
+    kinds, names, shapes = [], [], []
+    table = f["parameters/rodsea/species"]
+    for s in range(len(table)):
+        g = table[str(s)]
+        kinds.append(g.attrs["kind"].decode())
+        names.append(g.attrs["name"].decode())
+        shapes.append((g["sphere_offsets"][:], g["sphere_radii"][:]))
+    axis = rotate(q, np.tile([1.0, 0.0, 0.0], (len(x), 1)))
+    theta = np.arctan2(axis[:, 1], axis[:, 0])
 
     fig, (ax, axp) = plt.subplots(1, 2, figsize=(13, 6), gridspec_kw={"width_ratios": [1.15, 1]})
-    wheel = plt.get_cmap("hsv")
     medium, polar, colours = [], [], []
-    for body in read_rows(os.path.join(out, "bodies.csv")):
-        x = np.array([float(body["x"]), float(body["y"]), float(body["z"])])
-        q = tuple(float(body[k]) for k in ("qw", "qx", "qy", "qz"))
-        is_polar = body["kind"] == "polar_rod"
-        for offset, r in shapes[body["species"]]:
-            c = x + rotate(q, offset)
-            # Draw the disc and its periodic images that reach into the box.
-            for sx in (-lx, 0.0, lx):
+    for s, (offsets, radii) in enumerate(shapes):
+        members = np.flatnonzero(species == s)
+        is_polar = kinds[s] == "polar_rod"
+        for k, r in enumerate(radii):
+            centres = x[members] + rotate(q[members], np.tile(offsets[k], (len(members), 1)))
+            for sx in (-lx, 0.0, lx):  # periodic images that reach into the box
                 for sy in (-ly, 0.0, ly):
-                    cx, cy = (c[0] % lx) + sx, (c[1] % ly) + sy
-                    if -r < cx < lx + r and -r < cy < ly + r:
-                        disc = Circle((cx, cy), r)
+                    cx, cy = centres[:, 0] % lx + sx, centres[:, 1] % ly + sy
+                    inside = (cx > -r) & (cx < lx + r) & (cy > -r) & (cy < ly + r)
+                    for i in np.flatnonzero(inside):
+                        disc = Circle((cx[i], cy[i]), r)
                         if is_polar:
                             polar.append(disc)
-                            colours.append((float(body["theta"]) % (2 * math.pi)) / (2 * math.pi))
+                            colours.append((theta[members[i]] % (2 * math.pi)) / (2 * math.pi))
                         else:
                             medium.append(disc)
     ax.add_collection(PatchCollection(medium, facecolor="0.72", edgecolor="none"))
-    pc = PatchCollection(polar, cmap=wheel, edgecolor="none")
+    pc = PatchCollection(polar, cmap=plt.get_cmap("hsv"), edgecolor="none")
     pc.set_array(np.array(colours))
     pc.set_clim(0, 1)
     ax.add_collection(pc)
@@ -85,16 +86,22 @@ def main(argv):
     ax.set_aspect("equal")
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
-    series = read_rows(os.path.join(out, "timeseries.csv"))
-    t_end = float(series[-1]["time"])
-    ax.set_title(f"t = {t_end:.3f} s, P = {float(series[-1]['P_polar']):.2f}")
+    t = f["observables"][f"polar_order_{names[0]}"]["time"][:]
+    polar_names = [n for n, k in zip(names, kinds) if k == "polar_rod"]
+    title = f"t = {bodies['position/time'][frame]:.3f} s"
+    if polar_names:
+        p_now = f["observables"][f"polar_order_{polar_names[0]}"]["value"][min(frame % frames, len(t) - 1)]
+        title += f", P = {p_now:.2f}"
+    ax.set_title(title)
     cbar = fig.colorbar(pc, ax=ax, fraction=0.046, pad=0.04, ticks=[0, 0.25, 0.5, 0.75, 1])
     cbar.ax.set_yticklabels(["0", "90°", "180°", "270°", "360°"])
     cbar.set_label("polar rod axis angle θ (thick → thin)")
 
-    t = np.array([float(r["time"]) for r in series])
-    axp.plot(t, [float(r["P_polar"]) for r in series], label="P (polar rods)")
-    axp.plot(t, [float(r["S_apolar"]) for r in series], label="S (apolar medium)")
+    for n, k in zip(names, kinds):
+        if k == "polar_rod":
+            axp.plot(t, f["observables"][f"polar_order_{n}"]["value"][:], label=f"P ({n})")
+        else:
+            axp.plot(t, f["observables"][f"nematic_order_{n}"]["value"][:], label=f"S ({n})")
     axp.set_xlabel("time (s)")
     axp.set_ylabel("order parameter")
     axp.set_ylim(0, 1.05)

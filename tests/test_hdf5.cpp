@@ -43,13 +43,6 @@ EngineParameters two_species() {
     return p;
 }
 
-std::string slurp(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 TEST(Checkpoint, RoundTripIsBitExact) {
     const ScratchDir dir("checkpoint");
     Checkpoint c;
@@ -88,7 +81,7 @@ TEST(Checkpoint, ForeignOrTruncatedFilesAreRefusedByPath) {
     Checkpoint c;
     c.bodies = random_bodies(200, 1);
     write_checkpoint(dir.path() / "good.h5", c);
-    const std::string bytes = slurp(dir.path() / "good.h5");
+    const std::string bytes = read_text(dir.path() / "good.h5");
     std::ofstream(dir.path() / "cut.h5", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
     try {
         read_checkpoint(dir.path() / "cut.h5");
@@ -108,7 +101,7 @@ TEST(AtomicFile, AFailedWriteLeavesThePreviousContent) {
                                              throw FileError(tmp.string(), "disk full");
                                          }),
                  FileError);
-    EXPECT_EQ(slurp(target), "first\n");
+    EXPECT_EQ(read_text(target), "first\n");
     EXPECT_FALSE(std::filesystem::exists(target.string() + ".tmp"));
 }
 
@@ -129,7 +122,7 @@ TEST(SeriesCsv, ReopenKeepsExactlyTheCheckpointedRows) {
         csv.append(30, 1.5, {9.0, 9.0});
         csv.flush();
     }
-    std::istringstream lines(slurp(path));
+    std::istringstream lines(read_text(path));
     std::vector<std::string> all;
     for (std::string l; std::getline(lines, l);)
         all.push_back(l);

@@ -1,2 +1,7 @@
 target_sources(rodsea_core PRIVATE
+  src/rodsea/run/series_recorder.cpp
+  src/rodsea/run/progress.cpp
+  src/rodsea/run/plan_report.cpp
+  src/rodsea/run/stop_signal.cpp
+  src/rodsea/run/run_driver.cpp
 )

@@ -1,0 +1,119 @@
+#include "rodsea/run/plan_report.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <ostream>
+#include <string>
+
+#include "rodsea/builder/initial_state.hpp"
+#include "rodsea/engine/contact.hpp"
+#include "rodsea/run/progress.hpp"
+
+namespace rodsea {
+
+namespace {
+
+// Per-body bytes: the state arrays, the inverse inertia and the resolver's bookkeeping.
+constexpr std::uint64_t kBodyBytes = sizeof(std::uint32_t) + 3 * sizeof(Vec3) + sizeof(Quat) +
+                                     sizeof(double) + 9 * sizeof(double) + sizeof(int);
+// Per-sphere bytes: the sphere table, the cell list's ordered copies, and about three contacts
+// per sphere in a dense monolayer (two neighbours and a plate).
+constexpr std::uint64_t kSphereBytes = sizeof(std::uint32_t) + sizeof(double) + sizeof(Vec3) +
+                                       2 * (sizeof(Vec3) + 16) + 3 * sizeof(Contact);
+
+std::string fixed(double v, int digits) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", digits, v);
+    return text;
+}
+
+}  // namespace
+
+std::string format_bytes(std::uint64_t bytes) {
+    const char* units[] = {"B", "kB", "MB", "GB", "TB"};
+    double v = static_cast<double>(bytes);
+    int u = 0;
+    while (v >= 1000.0 && u < 4) {
+        v /= 1000.0;
+        ++u;
+    }
+    return fixed(v, u == 0 ? 0 : 1) + " " + units[u];
+}
+
+ResourceEstimate estimate_resources(const RunPlan& plan) {
+    ResourceEstimate e;
+    for (size_t s = 0; s < plan.counts.size(); ++s) {
+        const auto n = static_cast<std::uint64_t>(plan.counts[s]);
+        e.bodies += n;
+        e.spheres += n * plan.engine.species[s].shape.sphere_count();
+    }
+    e.memory_bytes = e.bodies * kBodyBytes + e.spheres * kSphereBytes;
+    // position, velocity, angular velocity (3 floats) and orientation (4 floats) per body, and
+    // a step (int64) and time (double) per element.
+    e.frame_bytes = e.bodies * (3 + 3 + 3 + 4) * sizeof(float) + 4 * 16;
+    e.frames = plan.total_steps() / plan.steps_per_output() + 1 +
+               (plan.total_steps() % plan.steps_per_output() != 0 ? 1 : 0);
+    const std::uint64_t columns = 4 * plan.engine.species.size() + 5;
+    e.trajectory_bytes = e.frames * (e.frame_bytes + columns * 24);
+    e.checkpoint_bytes =
+        e.bodies * (3 + 3 + 3 + 4) * sizeof(double) + e.bodies * 4 + plan.config_toml.size() + 4096;
+    return e;
+}
+
+void describe_plan(const RunPlan& plan, std::ostream& out, bool brief) {
+    const EngineParameters& p = plan.engine;
+    const DriveParameters& d = p.drive;
+    const double area = p.box.lx * p.box.ly;
+    out << "box      " << p.box.lx << " x " << p.box.ly << " mm, periodic in x and y\n";
+    out << "drive    Gamma = " << d.gamma
+        << ", f = " << d.angular_frequency / (2 * std::numbers::pi)
+        << " Hz (Omega = " << fixed(d.angular_frequency, 2)
+        << " rad/s), A = " << fixed(d.amplitude() * 1e3, 3)
+        << " um, peak plate speed A*Omega = " << fixed(d.amplitude() * d.angular_frequency, 2)
+        << " mm/s\n";
+    out << "         gap w = " << d.gap << " mm, g = " << d.gravity << " mm/s^2\n";
+    out << "species  name          kind         spheres  area/mm^2   mass     count    phi"
+           "      plate mu/e\n";
+    const ResourceEstimate e = estimate_resources(plan);
+    double phi_total = 0.0;
+    for (size_t s = 0; s < p.species.size(); ++s) {
+        const Species& sp = p.species[s];
+        const double phi = static_cast<double>(plan.counts[s]) * sp.shape.projected_area / area;
+        phi_total += phi;
+        char line[256];
+        std::snprintf(line, sizeof line, "         %-13s %-12s %7zu  %9.5f  %6.3f  %8lld  %6.4f",
+                      sp.name.c_str(), to_string(sp.kind), sp.shape.sphere_count(),
+                      sp.shape.projected_area, sp.shape.mass, plan.counts[s], phi);
+        out << line;
+        if (plan.requested_area_fraction[s] >= 0)
+            out << " (asked " << plan.requested_area_fraction[s] << ")";
+        out << "  " << sp.plate.friction << "/" << sp.plate.restitution << "\n";
+    }
+    out << "         total " << e.bodies << " bodies, " << e.spheres << " spheres, area fraction "
+        << fixed(phi_total, 4) << "\n";
+    out << "contacts body-body mu = " << p.body_body.friction << ", e = " << p.body_body.restitution
+        << (p.body_body_by_pair.empty() ? " (all pairs)" : " (with per-pair overrides)") << "\n";
+    out << "noise    epsilon = " << p.noise_epsilon
+        << " 1/mm (spin kick of polar rods at plate hits)\n";
+    const double duration = static_cast<double>(plan.total_steps()) * p.dt;
+    const double period = 2.0 * std::numbers::pi / d.angular_frequency;
+    out << "time     dt = " << p.dt * 1e6 << " us, " << plan.total_steps()
+        << " steps = " << duration << " s = " << fixed(duration / period, 1)
+        << " drive periods, seed " << p.seed << ", threads " << plan.control.threads
+        << (plan.control.threads > 1 ? " (the engine runs on one thread for now)" : "") << "\n";
+    out << "output   a frame every " << plan.steps_per_output() << " steps ("
+        << static_cast<double>(plan.steps_per_output()) * p.dt << " s), " << e.frames
+        << " frames of " << format_bytes(e.frame_bytes) << " = " << format_bytes(e.trajectory_bytes)
+        << "; checkpoint " << format_bytes(e.checkpoint_bytes) << " every "
+        << format_duration(plan.control.checkpoint_interval * 60.0) << " of wall time\n";
+    out << "memory   about " << format_bytes(e.memory_bytes) << "\n";
+    const PackingCheck packing = check_packing(p, plan.counts);
+    out << "packing  " << (packing.ok ? "feasible" : "IMPOSSIBLE: " + packing.message) << "\n";
+    if (brief) return;
+    out << "CHOICEs in force (MODEL.md; each is a config key):\n";
+    for (const std::string& c : plan.choices)
+        out << "  - " << c << "\n";
+}
+
+}  // namespace rodsea

@@ -1,0 +1,28 @@
+#pragma once
+// What `rodsea info` prints and `rodsea run` shows before it starts: the system, the drive, the
+// run's length, the expected memory and output size, and every MODEL.md CHOICE in force.
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+
+#include "rodsea/config/run_plan.hpp"
+
+namespace rodsea {
+
+struct ResourceEstimate {
+    std::uint64_t bodies = 0;
+    std::uint64_t spheres = 0;
+    std::uint64_t memory_bytes = 0;      // engine state and per-step scratch, approximate
+    std::uint64_t frame_bytes = 0;       // one trajectory frame (float32 per-body arrays)
+    std::uint64_t frames = 0;            // frames the run writes, the initial one included
+    std::uint64_t trajectory_bytes = 0;  // frames × frame_bytes plus the series
+    std::uint64_t checkpoint_bytes = 0;  // one checkpoint (double precision)
+};
+ResourceEstimate estimate_resources(const RunPlan& plan);
+
+// The full report (`rodsea info`); `brief` drops the CHOICE list (the header of `rodsea run`).
+void describe_plan(const RunPlan& plan, std::ostream& out, bool brief = false);
+
+std::string format_bytes(std::uint64_t bytes);  // "5.3 MB"
+
+}  // namespace rodsea

@@ -1,0 +1,295 @@
+#include "rodsea/run/run_driver.hpp"
+
+#include <chrono>
+#include <csignal>
+#include <optional>
+#include <ostream>
+
+#include "rodsea/builder/initial_state.hpp"
+#include "rodsea/config/config_file.hpp"
+#include "rodsea/engine/simulation.hpp"
+#include "rodsea/error.hpp"
+#include "rodsea/io/atomic_file.hpp"
+#include "rodsea/io/checkpoint.hpp"
+#include "rodsea/io/series_csv.hpp"
+#include "rodsea/io/trajectory_file.hpp"
+#include "rodsea/run/plan_report.hpp"
+#include "rodsea/run/progress.hpp"
+#include "rodsea/run/series_recorder.hpp"
+#include "rodsea/run/stop_signal.hpp"
+
+namespace rodsea {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+std::size_t polar_order_column(const EngineParameters& p) {
+    for (size_t s = 0; s < p.species.size(); ++s)
+        if (p.species[s].kind == BodyKind::polar_rod) return 2 * s;
+    return 0;
+}
+
+// Everything one session of a run holds: the simulation and its open output files.
+class Session {
+  public:
+    Session(const RunPlan& plan, Simulation sim, TrajectoryFile trajectory, SeriesCsv csv,
+            std::filesystem::path dir, double wall_before)
+        : plan_(plan),
+          sim_(std::move(sim)),
+          trajectory_(std::move(trajectory)),
+          csv_(std::move(csv)),
+          recorder_(plan.engine),
+          dir_(std::move(dir)),
+          wall_before_(wall_before),
+          polar_column_(polar_order_column(plan.engine)),
+          frame_reserve_bytes_(2 * estimate_resources(plan).frame_bytes + kMetadataReserve) {}
+
+    SeriesRecorder& recorder() { return recorder_; }
+    std::uint64_t frames() const { return trajectory_.frames(); }
+
+    void write_frame(double steps_per_second) {
+        trajectory_.reserve(frame_reserve_bytes_);
+        const std::vector<double> row = recorder_.take_row(sim_, steps_per_second);
+        last_polar_order_ = row.empty() ? 0.0 : row[polar_column_];
+        trajectory_.append_frame(sim_.step_count(), sim_.time(), sim_.bodies(), row);
+        csv_.append(sim_.step_count(), sim_.time(), row);
+        trajectory_.flush();
+        csv_.flush();
+    }
+
+    void checkpoint(bool complete) {
+        Checkpoint c;
+        c.config_toml = plan_.config_toml;
+        c.step = sim_.step_count();
+        c.frames_written = trajectory_.frames();
+        c.bodies = sim_.bodies();
+        c.interval_accumulators = recorder_.interval_state();
+        c.wall_seconds = wall_before_ + seconds_since(started_);
+        c.complete = complete;
+        write_checkpoint(dir_ / kCheckpointFile, c);
+        last_checkpoint_ = Clock::now();
+    }
+
+    // Steps to the end, or until a signal or a write failure. Returns an ExitCode.
+    int run(std::ostream& out, std::ostream& err, ProgressStyle style) {
+        const std::uint64_t total = plan_.total_steps();
+        const std::uint64_t per_output = plan_.steps_per_output();
+        const double checkpoint_seconds = plan_.control.checkpoint_interval * 60.0;
+        ProgressReporter progress(out, style, sim_.step_count(), total, plan_.engine.dt);
+        last_checkpoint_ = Clock::now();
+        while (sim_.step_count() < total) {
+            sim_.step();
+            recorder_.accumulate(sim_.last_step());
+            const std::uint64_t step = sim_.step_count();
+            try {
+                if (step % per_output == 0 || step == total)
+                    write_frame(progress.steps_per_second());
+            } catch (const FileError& e) {
+                progress.finish(step, last_polar_order_);
+                return stop_after_write_failure(e, out, err);
+            }
+            progress.update(step, last_polar_order_);
+            if (const int signal = stop_signal_received(); signal != 0) {
+                progress.finish(step, last_polar_order_);
+                return stop_on_signal(signal, out, err);
+            }
+            if ((step & 63u) == 0 && seconds_since(last_checkpoint_) >= checkpoint_seconds) {
+                try {
+                    checkpoint(false);
+                } catch (const FileError& e) {
+                    err << "rodsea: cannot write the checkpoint: " << e.what()
+                        << "\n  the previous checkpoint is intact; stopping.\n";
+                    return kExitIoError;
+                }
+            }
+        }
+        progress.finish(sim_.step_count(), last_polar_order_);
+        checkpoint(true);
+        trajectory_.close();
+        if (style != ProgressStyle::quiet) report_end(out);
+        return kExitOk;
+    }
+
+  private:
+    int stop_on_signal(int signal, std::ostream& out, std::ostream& err) {
+        checkpoint(false);
+        trajectory_.close();
+        err << "rodsea: " << (signal == SIGINT ? "interrupted (SIGINT)" : "terminated (SIGTERM)")
+            << " at step " << sim_.step_count() << " (t = " << sim_.time()
+            << " s); checkpoint written.\n  continue with: rodsea run --resume " << dir_.string()
+            << "\n";
+        out.flush();
+        return signal == SIGINT ? kExitInterrupted : kExitTerminated;
+    }
+
+    int stop_after_write_failure(const FileError& e, std::ostream& out, std::ostream& err) {
+        err << "rodsea: cannot write output at step " << sim_.step_count()
+            << " (t = " << sim_.time() << " s): " << e.what() << "\n";
+        try {
+            checkpoint(false);
+            err << "  checkpoint written (" << trajectory_.frames()
+                << " complete frames are kept); free some space and continue with: rodsea run "
+                   "--resume "
+                << dir_.string() << "\n";
+        } catch (const FileError& again) {
+            err << "  the checkpoint could not be written either (" << again.what()
+                << "); the previous checkpoint is intact: free some space and resume from it "
+                   "with: rodsea run --resume "
+                << dir_.string() << "\n";
+        }
+        out.flush();
+        return kExitIoError;
+    }
+
+    void report_end(std::ostream& out) const {
+        const RunTotals& t = sim_.totals();
+        out << "done: " << sim_.step_count() << " steps, t = " << sim_.time() << " s, "
+            << trajectory_.frames() << " frames in " << (dir_ / kTrajectoryFile).string()
+            << "\n      largest overlap " << t.max_overlap_fraction * 100
+            << " % of a radius, unresolved contacts " << t.unresolved << ", most sweeps "
+            << t.max_sweeps << ", wall time "
+            << format_duration(wall_before_ + seconds_since(started_)) << "\n      state hash "
+            << std::hex << sim_.state_hash() << std::dec << "\n";
+    }
+
+    const RunPlan& plan_;
+    Simulation sim_;
+    TrajectoryFile trajectory_;
+    SeriesCsv csv_;
+    SeriesRecorder recorder_;
+    std::filesystem::path dir_;
+    double wall_before_;
+    std::size_t polar_column_;
+    // Room for two frames and HDF5's growing chunk indexes (a few kB per frame at most): a frame
+    // must never run out of space half-way (see TrajectoryFile::reserve).
+    static constexpr std::uint64_t kMetadataReserve = 64 * 1024;
+    std::uint64_t frame_reserve_bytes_;
+    double last_polar_order_ = 0.0;
+    Clock::time_point started_ = Clock::now();
+    Clock::time_point last_checkpoint_ = Clock::now();
+};
+
+// Frames a run has written once it has done `step` steps: frame 0, one per output interval,
+// and the last step's.
+std::uint64_t frames_due(const RunPlan& plan, std::uint64_t step) {
+    const std::uint64_t per = plan.steps_per_output(), total = plan.total_steps();
+    return step / per + 1 + (step == total && total % per != 0 ? 1 : 0);
+}
+
+bool is_empty_directory(const std::filesystem::path& dir) {
+    return std::filesystem::is_directory(dir) && std::filesystem::is_empty(dir);
+}
+
+// Refuses a directory that holds anything unless --overwrite; then removes only our files.
+void prepare_output_directory(const std::filesystem::path& dir, bool overwrite) {
+    std::error_code ec;
+    if (std::filesystem::exists(dir, ec)) {
+        if (!std::filesystem::is_directory(dir, ec))
+            throw FileError(dir.string(), "exists and is not a directory");
+        if (!is_empty_directory(dir)) {
+            if (!overwrite)
+                throw InvalidParameter("--out", dir.string(), "a new or empty directory",
+                                       "it exists and is not empty: choose another --out, add "
+                                       "--overwrite to replace its run files, or continue it "
+                                       "with rodsea run --resume " +
+                                           dir.string());
+            for (const char* name : {kConfigFile, kTrajectoryFile, kSeriesFile, kCheckpointFile})
+                std::filesystem::remove(dir / name, ec);
+        }
+    }
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw FileError(dir.string(), "cannot create the output directory: " + ec.message());
+}
+
+}  // namespace
+
+int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out, std::ostream& err,
+              bool progress_is_terminal) {
+    // From here on a signal asks for a clean stop, and a file-size limit fails a write instead
+    // of killing the process.
+    StopSignalGuard signals;
+    const PackingCheck packing = check_packing(plan.engine, plan.counts);
+    if (!packing.ok)
+        throw InvalidParameter("species", "these counts", "a packing that fits", packing.message);
+    prepare_output_directory(options.out_dir, options.overwrite);
+    const std::filesystem::path& dir = options.out_dir;
+    if (!options.quiet) {
+        out << "rodsea run -> " << dir.string() << "\n";
+        describe_plan(plan, out, true);
+    }
+
+    BuildReport built;
+    BodyState bodies =
+        build_initial_state(plan.engine, plan.counts, plan.builder, plan.engine.seed, &built);
+    if (!options.quiet)
+        out << "initial state built in " << format_duration(built.seconds) << " (" << built.seconds
+            << " s, " << built.sweeps << " randomisation sweeps)\n";
+    Simulation sim(plan.engine, std::move(bodies));
+
+    write_file_atomically(dir / kConfigFile, plan.config_toml);
+    const SeriesRecorder columns(plan.engine);
+    TrajectoryFile trajectory =
+        TrajectoryFile::create(dir / kTrajectoryFile, plan.engine, sim.bodies().species,
+                               plan.config_toml, columns.columns());
+    SeriesCsv csv = SeriesCsv::create(dir / kSeriesFile, columns.columns());
+    Session session(plan, std::move(sim), std::move(trajectory), std::move(csv), dir, 0.0);
+    session.write_frame(0.0);
+    session.checkpoint(false);
+    return session.run(out, err, choose_progress_style(options.quiet, progress_is_terminal));
+}
+
+int resume_run(const std::filesystem::path& dir, const RunOptions& options, std::ostream& out,
+               std::ostream& err, bool progress_is_terminal) {
+    StopSignalGuard signals;
+    const std::filesystem::path checkpoint_path = dir / kCheckpointFile;
+    if (!std::filesystem::exists(checkpoint_path))
+        throw FileError(checkpoint_path.string(),
+                        "no checkpoint here: is this a directory made by rodsea run?");
+    Checkpoint c = read_checkpoint(checkpoint_path);
+    const RunPlan plan = load_config_string(c.config_toml, checkpoint_path.string() + " [config]");
+    if (c.complete) {
+        if (!options.quiet)
+            out << "rodsea: the run in " << dir.string() << " is already complete (step " << c.step
+                << " of " << plan.total_steps() << "); nothing to do.\n";
+        return kExitOk;
+    }
+    std::uint64_t expected = 0;
+    for (long long n : plan.counts)
+        expected += static_cast<std::uint64_t>(n);
+    if (c.bodies.size() != expected)
+        throw FileError(checkpoint_path.string(), "holds " + std::to_string(c.bodies.size()) +
+                                                      " bodies but its config asks for " +
+                                                      std::to_string(expected));
+    if (!options.quiet) {
+        out << "rodsea run --resume " << dir.string() << ": from step " << c.step << " of "
+            << plan.total_steps() << " (t = " << static_cast<double>(c.step) * plan.engine.dt
+            << " s), " << c.frames_written << " frames kept\n";
+    }
+    Simulation sim = Simulation::resume(plan.engine, std::move(c.bodies), c.step);
+    const SeriesRecorder columns(plan.engine);
+    TrajectoryFile trajectory =
+        TrajectoryFile::reopen(dir / kTrajectoryFile, c.frames_written, columns.columns());
+    SeriesCsv csv = SeriesCsv::reopen(dir / kSeriesFile, c.frames_written);
+    Session session(plan, std::move(sim), std::move(trajectory), std::move(csv), dir,
+                    c.wall_seconds);
+    session.recorder().restore_interval(c.interval_accumulators);
+    // A run stopped by a failed write has its checkpoint at the step whose frame failed: that
+    // frame comes first, from the same state and interval, as the uninterrupted run wrote it.
+    const std::uint64_t due = frames_due(plan, c.step);
+    if (c.frames_written + 1 == due) {
+        session.write_frame(0.0);
+    } else if (c.frames_written != due) {
+        throw FileError(checkpoint_path.string(),
+                        "counts " + std::to_string(c.frames_written) + " frames at step " +
+                            std::to_string(c.step) + ", where the run writes " +
+                            std::to_string(due) + ": not a checkpoint of this run's config");
+    }
+    return session.run(out, err, choose_progress_style(options.quiet, progress_is_terminal));
+}
+
+}  // namespace rodsea

@@ -1,0 +1,48 @@
+#pragma once
+// `rodsea run`: builds the initial state, steps it, writes the trajectory, the time series and
+// checkpoints, and stops cleanly (with a checkpoint) on SIGINT, SIGTERM or a failing disk.
+//
+// A run directory holds:
+//   config.toml       the full resolved config (every key), for people to read
+//   trajectory.h5     H5MD trajectory and time series (io/trajectory_file.hpp)
+//   timeseries.csv    the same time series as CSV
+//   checkpoint.h5     the latest checkpoint (io/checkpoint.hpp), replaced atomically
+#include <filesystem>
+#include <iosfwd>
+
+#include "rodsea/config/run_plan.hpp"
+
+namespace rodsea {
+
+// Process exit codes of `rodsea run` (and of the other commands where they apply).
+enum ExitCode : int {
+    kExitOk = 0,
+    kExitFailure = 1,        // anything unexpected
+    kExitBadInput = 2,       // bad config, option or run directory: nothing was done
+    kExitIoError = 74,       // a file could not be written (disk full, permissions): checkpointed
+    kExitInterrupted = 130,  // SIGINT: checkpointed, resume with --resume
+    kExitTerminated = 143,   // SIGTERM: checkpointed, resume with --resume
+};
+
+struct RunOptions {
+    std::filesystem::path out_dir;
+    bool overwrite = false;  // replace the run files of an existing directory
+    bool quiet = false;      // no plan, no progress; errors still go to the error stream
+};
+
+inline const char* const kConfigFile = "config.toml";
+inline const char* const kTrajectoryFile = "trajectory.h5";
+inline const char* const kSeriesFile = "timeseries.csv";
+inline const char* const kCheckpointFile = "checkpoint.h5";
+
+// Starts a new run of `plan` in options.out_dir. Everything about the input (packing, output
+// directory) is checked before any work; problems throw InvalidParameter or FileError.
+// Returns an ExitCode; messages go to `out` (plan, progress) and `err` (what went wrong).
+int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out, std::ostream& err,
+              bool progress_is_terminal = false);
+
+// Continues the run in `dir` from its checkpoint, bit for bit as if it had never stopped.
+int resume_run(const std::filesystem::path& dir, const RunOptions& options, std::ostream& out,
+               std::ostream& err, bool progress_is_terminal = false);
+
+}  // namespace rodsea

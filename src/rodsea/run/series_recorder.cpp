@@ -1,0 +1,83 @@
+#include "rodsea/run/series_recorder.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "rodsea/analysis/order_parameters.hpp"
+
+namespace rodsea {
+
+SeriesRecorder::SeriesRecorder(const EngineParameters& params)
+    : species_count_(params.species.size()) {
+    for (const Species& sp : params.species) {
+        columns_.push_back({"polar_order_" + sp.name, "1"});
+        columns_.push_back({"nematic_order_" + sp.name, "1"});
+    }
+    for (const Species& sp : params.species) {
+        columns_.push_back({"kinetic_energy_translational_" + sp.name, "mass-unit mm2 s-2/body"});
+        columns_.push_back({"kinetic_energy_rotational_" + sp.name, "mass-unit mm2 s-2/body"});
+    }
+    columns_.push_back({"max_overlap_fraction", "1"});
+    columns_.push_back({"unresolved_contacts", "1"});
+    columns_.push_back({"max_sweeps", "1"});
+    columns_.push_back({"impulses_per_step", "1"});
+    columns_.push_back({"steps_per_second", "s-1"});
+}
+
+void SeriesRecorder::accumulate(const StepStatistics& s) {
+    max_overlap_ = std::max(max_overlap_, s.max_overlap_fraction);
+    unresolved_ += static_cast<double>(s.unresolved);
+    max_sweeps_ = std::max(max_sweeps_, static_cast<double>(s.sweeps));
+    impulses_ += static_cast<double>(s.impulses);
+    steps_ += 1.0;
+}
+
+std::vector<double> SeriesRecorder::take_row(const Simulation& sim, double steps_per_second) {
+    const BodyState& b = sim.bodies();
+    const EngineParameters& p = sim.parameters();
+    std::vector<double> row;
+    row.reserve(columns_.size());
+    for (size_t s = 0; s < species_count_; ++s) {
+        row.push_back(orientational_order(b, static_cast<std::uint32_t>(s), 1));
+        row.push_back(orientational_order(b, static_cast<std::uint32_t>(s), 2));
+    }
+    std::vector<double> translational(species_count_), rotational(species_count_),
+        count(species_count_);
+    for (size_t i = 0; i < b.size(); ++i) {
+        const Shape& shape = p.species[b.species[i]].shape;
+        const Vec3& v = b.velocity[i];
+        const Vec3 w = rotate(conjugate(b.orientation[i]), b.spin[i]);  // body frame
+        const Vec3& I = shape.principal_inertia;
+        translational[b.species[i]] += 0.5 * shape.mass * (v.x * v.x + v.y * v.y + v.z * v.z);
+        rotational[b.species[i]] += 0.5 * (I.x * w.x * w.x + I.y * w.y * w.y + I.z * w.z * w.z);
+        count[b.species[i]] += 1.0;
+    }
+    for (size_t s = 0; s < species_count_; ++s) {
+        const double n = std::max(count[s], 1.0);
+        row.push_back(translational[s] / n);
+        row.push_back(rotational[s] / n);
+    }
+    row.push_back(max_overlap_);
+    row.push_back(unresolved_);
+    row.push_back(max_sweeps_);
+    row.push_back(steps_ > 0.0 ? impulses_ / steps_ : 0.0);
+    row.push_back(steps_per_second);
+    restore_interval({0.0, 0.0, 0.0, 0.0, 0.0});
+    return row;
+}
+
+std::vector<double> SeriesRecorder::interval_state() const {
+    return {max_overlap_, unresolved_, max_sweeps_, impulses_, steps_};
+}
+
+void SeriesRecorder::restore_interval(const std::vector<double>& state) {
+    if (state.size() != 5)
+        throw std::invalid_argument("time-series interval state needs 5 numbers");
+    max_overlap_ = state[0];
+    unresolved_ = state[1];
+    max_sweeps_ = state[2];
+    impulses_ = state[3];
+    steps_ = state[4];
+}
+
+}  // namespace rodsea

@@ -1,0 +1,36 @@
+#pragma once
+// The scalar time series written every output interval: order parameters and kinetic energies
+// per species from the current state, and the engine's health (largest overlap, unresolved
+// contacts, sweeps, impulses) accumulated over the interval, so that a bad step between two
+// rows is not missed.
+#include <vector>
+
+#include "rodsea/engine/simulation.hpp"
+#include "rodsea/io/trajectory_file.hpp"
+
+namespace rodsea {
+
+class SeriesRecorder {
+  public:
+    explicit SeriesRecorder(const EngineParameters& params);
+
+    const std::vector<SeriesColumn>& columns() const { return columns_; }
+    void accumulate(const StepStatistics& step);
+    // The row for the current state; starts a new interval.
+    std::vector<double> take_row(const Simulation& sim, double steps_per_second);
+
+    // The partly filled interval, for checkpoints: a resumed run then writes the same rows.
+    std::vector<double> interval_state() const;
+    void restore_interval(const std::vector<double>& state);
+
+  private:
+    std::vector<SeriesColumn> columns_;
+    size_t species_count_ = 0;
+    double max_overlap_ = 0.0;
+    double unresolved_ = 0.0;
+    double max_sweeps_ = 0.0;
+    double impulses_ = 0.0;
+    double steps_ = 0.0;
+};
+
+}  // namespace rodsea

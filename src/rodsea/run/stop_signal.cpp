@@ -1,0 +1,41 @@
+#include "rodsea/run/stop_signal.hpp"
+
+#include <csignal>
+
+namespace rodsea {
+
+namespace {
+
+volatile std::sig_atomic_t received = 0;
+struct sigaction previous_int, previous_term, previous_xfsz;
+
+extern "C" void on_stop_signal(int signal) {
+    received = signal;
+}
+
+}  // namespace
+
+StopSignalGuard::StopSignalGuard() {
+    received = 0;
+    struct sigaction action {};
+    action.sa_handler = on_stop_signal;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &previous_int);
+    sigaction(SIGTERM, &action, &previous_term);
+    struct sigaction ignore {};
+    ignore.sa_handler = SIG_IGN;
+    sigemptyset(&ignore.sa_mask);
+    sigaction(SIGXFSZ, &ignore, &previous_xfsz);
+}
+
+StopSignalGuard::~StopSignalGuard() {
+    sigaction(SIGINT, &previous_int, nullptr);
+    sigaction(SIGTERM, &previous_term, nullptr);
+    sigaction(SIGXFSZ, &previous_xfsz, nullptr);
+}
+
+int stop_signal_received() {
+    return received;
+}
+
+}  // namespace rodsea

@@ -1,0 +1,19 @@
+#pragma once
+// SIGINT and SIGTERM ask a run to stop at the end of the current step (the handler only sets a
+// flag; the run loop writes the checkpoint). SIGXFSZ is ignored so that a file-size limit shows
+// up as a failed write, handled like a full disk, instead of killing the process.
+namespace rodsea {
+
+// Installs the handlers for its lifetime and restores the previous ones afterwards.
+class StopSignalGuard {
+  public:
+    StopSignalGuard();
+    ~StopSignalGuard();
+    StopSignalGuard(const StopSignalGuard&) = delete;
+    StopSignalGuard& operator=(const StopSignalGuard&) = delete;
+};
+
+// The signal number received since the guard was installed, or 0.
+int stop_signal_received();
+
+}  // namespace rodsea
