@@ -32,8 +32,9 @@ usage:
   rodsea help COMMAND | --help | --version
 
 Units everywhere: mm, s (and rad, Hz); masses in an arbitrary unit. Examples: examples/*.toml.
-Exit codes: 0 done, 1 unexpected failure, 2 bad input (nothing done), 74 a file could not be
-written (a checkpoint was kept), 130/143 stopped by SIGINT/SIGTERM (a checkpoint was kept).
+Exit codes: 0 done; 1 unexpected failure; 2 bad input (nothing done); 74 a file could not be
+read or written (a run in progress keeps its last checkpoint; the message says what to do);
+130/143 stopped by SIGINT/SIGTERM (a checkpoint was written).
 )";
 
 constexpr const char* kRunHelp = R"(rodsea run CONFIG [--out DIR] [--overwrite] [--quiet]

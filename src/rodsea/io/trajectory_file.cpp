@@ -5,6 +5,7 @@
 #include <sys/statvfs.h>
 #include <unistd.h>
 
+#include <array>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -51,6 +52,12 @@ struct Element {
         e.value.truncate(f, keep_frames);
         return e;
     }
+    void abandon() {
+        step.abandon();
+        time.abandon();
+        value.abandon();
+        group.release();
+    }
     void append(const h5::File& f, std::uint64_t step_number, double t, const void* data,
                 hid_t memory_type) {
         const auto s = static_cast<std::int64_t>(step_number);
@@ -76,14 +83,14 @@ void write_h5md_header(const h5::File& f) {
     h5::write_attribute(f, creator.get(), "version", std::string(RODSEA_VERSION));
 }
 
-void write_box(const h5::File& f, hid_t bodies, const EngineParameters& p) {
+// The box as H5MD's time-dependent "edges" element (one row per frame, although it never
+// changes): MDAnalysis's H5MD reader takes the box of a frame from box/edges/value[frame].
+h5::Handle write_box(const h5::File& f, hid_t bodies) {
     h5::Handle box = h5::create_group(f, bodies, "box");
-    h5::write_attribute(f, box.get(), "dimension", std::vector<std::int32_t>{3});
+    h5::write_attribute(f, box.get(), "dimension", std::int32_t{3});
     h5::write_attribute(f, box.get(), "boundary",
                         std::vector<std::string>{"periodic", "periodic", "none"});
-    // z is bounded by the moving plates, not periodic: its edge is the gap w.
-    h5::write_dataset(f, box.get(), "edges", std::vector<double>{p.box.lx, p.box.ly, p.drive.gap},
-                      {3}, "mm");
+    return box;
 }
 
 void write_species(const h5::File& f, hid_t parent, const EngineParameters& p) {
@@ -113,8 +120,11 @@ void write_species(const h5::File& f, hid_t parent, const EngineParameters& p) {
 }  // namespace
 
 struct TrajectoryFile::Impl {
+    explicit Impl(h5::File opened) : file(std::move(opened)) {}
     h5::File file;
     Element position, orientation, velocity, spin;
+    Element edges;                      // z is bounded by the plates, not periodic: its edge is w
+    std::array<double, 3> box_edges{};  // L_x, L_y, w (mm)
     std::vector<Element> series;
     std::vector<float> scratch;
     std::uint64_t complete_frames = 0;
@@ -130,12 +140,16 @@ TrajectoryFile TrajectoryFile::create(const std::filesystem::path& path,
                                       const std::vector<std::uint32_t>& species,
                                       const std::string& config_toml,
                                       const std::vector<SeriesColumn>& columns) {
-    auto impl = std::unique_ptr<Impl>(new Impl{h5::File::create(path), {}, {}, {}, {}, {}, {}, 0});
+    auto impl = std::unique_ptr<Impl>(new Impl(h5::File::create(path)));
     const h5::File& f = impl->file;
     write_h5md_header(f);
     h5::Handle particles = h5::create_group(f, f.id(), "particles");
     h5::Handle bodies = h5::create_group(f, particles.get(), "bodies");
-    write_box(f, bodies.get(), params);
+    {
+        h5::Handle box = write_box(f, bodies.get());
+        impl->edges = Element::create(f, box.get(), "edges", H5T_IEEE_F64LE, {3}, "mm");
+        impl->box_edges = {params.box.lx, params.box.ly, params.drive.gap};
+    }
     const hsize_t n = species.size();
     impl->position = Element::create(f, bodies.get(), "position", H5T_IEEE_F32LE, {n, 3}, "mm");
     impl->orientation =
@@ -169,14 +183,21 @@ TrajectoryFile TrajectoryFile::create(const std::filesystem::path& path,
 
 TrajectoryFile TrajectoryFile::reopen(const std::filesystem::path& path, std::uint64_t frames,
                                       const std::vector<SeriesColumn>& columns) {
-    auto impl =
-        std::unique_ptr<Impl>(new Impl{h5::File::open(path, true), {}, {}, {}, {}, {}, {}, 0});
+    auto impl = std::unique_ptr<Impl>(new Impl(h5::File::open(path, true)));
     const h5::File& f = impl->file;
     h5::Handle bodies = h5::open_group(f, f.id(), kBodies);
     impl->position = Element::open(f, bodies.get(), "position", frames);
     impl->orientation = Element::open(f, bodies.get(), "orientation", frames);
     impl->velocity = Element::open(f, bodies.get(), "velocity", frames);
     impl->spin = Element::open(f, bodies.get(), "angular_velocity", frames);
+    {
+        h5::Handle box = h5::open_group(f, bodies.get(), "box");
+        impl->edges = Element::open(f, box.get(), "edges", frames);
+        h5::Handle edges = h5::open_group(f, box.get(), "edges");
+        const std::vector<double> rows = h5::read_doubles(f, edges.get(), "value");
+        if (rows.size() < 3) throw FileError(path.string(), "has no box edges to continue from");
+        impl->box_edges = {rows[0], rows[1], rows[2]};
+    }
     h5::Handle observables = h5::open_group(f, f.id(), "observables");
     for (const SeriesColumn& c : columns)
         impl->series.push_back(Element::open(f, observables.get(), c.name, frames));
@@ -212,6 +233,7 @@ void TrajectoryFile::append_frame(std::uint64_t step, double time, const BodySta
     m.orientation.append(m.file, step, time, m.scratch.data(), H5T_NATIVE_FLOAT);
     put3(bodies.velocity, m.velocity);
     put3(bodies.spin, m.spin);
+    m.edges.append(m.file, step, time, m.box_edges.data(), H5T_NATIVE_DOUBLE);
     for (size_t c = 0; c < series_row.size(); ++c)
         m.series[c].append(m.file, step, time, &series_row[c], H5T_NATIVE_DOUBLE);
     ++m.complete_frames;
@@ -263,6 +285,16 @@ void TrajectoryFile::close() {
         *e = Element{};
     m.series.clear();
     m.file.close();
+}
+
+void TrajectoryFile::abandon() {
+    if (!impl_) return;
+    Impl& m = *impl_;
+    for (Element* e : {&m.position, &m.orientation, &m.velocity, &m.spin})
+        e->abandon();
+    for (Element& e : m.series)
+        e.abandon();
+    m.file.abandon();
 }
 
 std::string read_stored_config(const std::filesystem::path& path) {

@@ -1,9 +1,11 @@
 #pragma once
 // The trajectory file, laid out after H5MD 1.1 (https://www.nongnu.org/h5md/) so that h5py,
-// MDAnalysis and other H5MD readers find their way around it:
+// MDAnalysis (with convert_units=False: mm is not among its units) and other H5MD readers find
+// their way around it:
 //
 //   /h5md                       version = [1, 1]; author, creator (rodsea + version)
-//   /particles/bodies/box       dimension = 3, boundary = [periodic, periodic, none], edges (mm)
+//   /particles/bodies/box       dimension = 3, boundary = [periodic, periodic, none],
+//                               edges/{step, time, value}: (L_x, L_y, w) per frame (mm)
 //   /particles/bodies/{position, orientation, velocity, angular_velocity}/{step, time, value}
 //                               one frame per output interval; value is float32 [frames, N, 3|4]
 //   /particles/bodies/species   [N] int32 index into /parameters/rodsea/species (fixed in time)
@@ -58,6 +60,9 @@ class TrajectoryFile {
     void reserve(std::uint64_t bytes);
     void flush();  // makes every appended frame durable before a checkpoint refers to it
     void close();
+    // Drops every HDF5 id without closing it, after a failed write (see h5::Handle::release):
+    // the file on disk stays as the last successful flush left it.
+    void abandon();
 
   private:
     struct Impl;

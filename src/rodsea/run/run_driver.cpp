@@ -2,8 +2,10 @@
 
 #include <chrono>
 #include <csignal>
+#include <limits>
 #include <optional>
 #include <ostream>
+#include <sstream>
 
 #include "rodsea/builder/initial_state.hpp"
 #include "rodsea/config/config_file.hpp"
@@ -15,6 +17,7 @@
 #include "rodsea/io/trajectory_file.hpp"
 #include "rodsea/run/plan_report.hpp"
 #include "rodsea/run/progress.hpp"
+#include "rodsea/run/run_lock.hpp"
 #include "rodsea/run/series_recorder.hpp"
 #include "rodsea/run/stop_signal.hpp"
 
@@ -28,10 +31,12 @@ double seconds_since(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
+// The time-series column of the first polar species' P, shown by the progress; past the end of
+// the row (so P shows as 0) when there are no polar rods.
 std::size_t polar_order_column(const EngineParameters& p) {
     for (size_t s = 0; s < p.species.size(); ++s)
         if (p.species[s].kind == BodyKind::polar_rod) return 2 * s;
-    return 0;
+    return std::numeric_limits<std::size_t>::max();
 }
 
 // Everything one session of a run holds: the simulation and its open output files.
@@ -47,26 +52,34 @@ class Session {
           dir_(std::move(dir)),
           wall_before_(wall_before),
           polar_column_(polar_order_column(plan.engine)),
-          frame_reserve_bytes_(2 * estimate_resources(plan).frame_bytes + kMetadataReserve) {}
+          frame_reserve_bytes_(2 * estimate_resources(plan).frame_bytes + kMetadataReserve),
+          frames_written_(trajectory_.frames()) {}
 
     SeriesRecorder& recorder() { return recorder_; }
-    std::uint64_t frames() const { return trajectory_.frames(); }
 
+    // A frame counts (and its interval closes) only once the trajectory and the CSV both hold
+    // it: a failure part way leaves the count, and the interval, as a checkpoint must see them.
     void write_frame(double steps_per_second) {
         trajectory_.reserve(frame_reserve_bytes_);
-        const std::vector<double> row = recorder_.take_row(sim_, steps_per_second);
-        last_polar_order_ = row.empty() ? 0.0 : row[polar_column_];
+        const std::vector<double> row = recorder_.row(sim_, steps_per_second);
+        last_polar_order_ = polar_column_ < row.size() ? row[polar_column_] : 0.0;
         trajectory_.append_frame(sim_.step_count(), sim_.time(), sim_.bodies(), row);
         csv_.append(sim_.step_count(), sim_.time(), row);
         trajectory_.flush();
         csv_.flush();
+        recorder_.start_interval();
+        ++frames_written_;
     }
 
+    // The frames it counts are first forced to disk, so that no crash can leave a checkpoint
+    // that refers to frames the files do not have.
     void checkpoint(bool complete) {
+        sync_file(dir_ / kTrajectoryFile);
+        sync_file(dir_ / kSeriesFile);
         Checkpoint c;
         c.config_toml = plan_.config_toml;
         c.step = sim_.step_count();
-        c.frames_written = trajectory_.frames();
+        c.frames_written = frames_written_;
         c.bodies = sim_.bodies();
         c.interval_accumulators = recorder_.interval_state();
         c.wall_seconds = wall_before_ + seconds_since(started_);
@@ -82,6 +95,8 @@ class Session {
         const double checkpoint_seconds = plan_.control.checkpoint_interval * 60.0;
         ProgressReporter progress(out, style, sim_.step_count(), total, plan_.engine.dt);
         last_checkpoint_ = Clock::now();
+        if (const int signal = stop_signal_received(); signal != 0)  // during the build
+            return stop_on_signal(signal, out, err);
         while (sim_.step_count() < total) {
             sim_.step();
             recorder_.accumulate(sim_.last_step());
@@ -103,43 +118,64 @@ class Session {
                     checkpoint(false);
                 } catch (const FileError& e) {
                     err << "rodsea: cannot write the checkpoint: " << e.what()
-                        << "\n  the previous checkpoint is intact; stopping.\n";
+                        << "\n  the previous checkpoint is intact; stopping. Continue with: "
+                           "rodsea run --resume "
+                        << dir_.string() << "\n";
                     return kExitIoError;
                 }
             }
         }
         progress.finish(sim_.step_count(), last_polar_order_);
-        checkpoint(true);
-        trajectory_.close();
+        try {
+            // Closed first: a run is marked complete only with its trajectory whole.
+            trajectory_.close();
+            checkpoint(true);
+        } catch (const FileError& e) {
+            err << "rodsea: the run reached its end but its files could not be closed: " << e.what()
+                << "\n  the last checkpoint is intact; continue with: rodsea run "
+                << "--resume " << dir_.string() << "\n";
+            return kExitIoError;
+        }
         if (style != ProgressStyle::quiet) report_end(out);
         return kExitOk;
     }
 
   private:
     int stop_on_signal(int signal, std::ostream& out, std::ostream& err) {
-        checkpoint(false);
-        trajectory_.close();
-        err << "rodsea: " << (signal == SIGINT ? "interrupted (SIGINT)" : "terminated (SIGTERM)")
-            << " at step " << sim_.step_count() << " (t = " << sim_.time()
-            << " s); checkpoint written.\n  continue with: rodsea run --resume " << dir_.string()
-            << "\n";
+        const char* what = signal == SIGINT ? "interrupted (SIGINT)" : "terminated (SIGTERM)";
+        try {
+            checkpoint(false);
+            trajectory_.close();
+            err << "rodsea: " << what << " at step " << sim_.step_count() << " (t = " << sim_.time()
+                << " s); checkpoint written.\n  continue with: rodsea run --resume "
+                << dir_.string() << "\n";
+        } catch (const FileError& e) {
+            err << "rodsea: " << what << ", but the checkpoint could not be written: " << e.what()
+                << "\n  the previous checkpoint is intact; continue from it with: rodsea run "
+                   "--resume "
+                << dir_.string() << "\n";
+            out.flush();
+            return kExitIoError;
+        }
         out.flush();
         return signal == SIGINT ? kExitInterrupted : kExitTerminated;
     }
 
     int stop_after_write_failure(const FileError& e, std::ostream& out, std::ostream& err) {
+        // HDF5 cannot be trusted to close a file whose writes failed: it is left as it is.
+        trajectory_.abandon();
         err << "rodsea: cannot write output at step " << sim_.step_count()
             << " (t = " << sim_.time() << " s): " << e.what() << "\n";
         try {
             checkpoint(false);
-            err << "  checkpoint written (" << trajectory_.frames()
-                << " complete frames are kept); free some space and continue with: rodsea run "
-                   "--resume "
+            err << "  checkpoint written (" << frames_written_
+                << " complete frames are kept); make room (disk space, quota or file-size "
+                   "limit) and continue with: rodsea run --resume "
                 << dir_.string() << "\n";
         } catch (const FileError& again) {
             err << "  the checkpoint could not be written either (" << again.what()
-                << "); the previous checkpoint is intact: free some space and resume from it "
-                   "with: rodsea run --resume "
+                << "); the previous checkpoint is intact: make room and resume from it with: "
+                   "rodsea run --resume "
                 << dir_.string() << "\n";
         }
         out.flush();
@@ -149,10 +185,10 @@ class Session {
     void report_end(std::ostream& out) const {
         const RunTotals& t = sim_.totals();
         out << "done: " << sim_.step_count() << " steps, t = " << sim_.time() << " s, "
-            << trajectory_.frames() << " frames in " << (dir_ / kTrajectoryFile).string()
-            << "\n      largest overlap " << t.max_overlap_fraction * 100
+            << frames_written_ << " frames in " << (dir_ / kTrajectoryFile).string()
+            << "\n      this session: largest overlap " << t.max_overlap_fraction * 100
             << " % of a radius, unresolved contacts " << t.unresolved << ", most sweeps "
-            << t.max_sweeps << ", wall time "
+            << t.max_sweeps << "; wall time of the whole run "
             << format_duration(wall_before_ + seconds_since(started_)) << "\n      state hash "
             << std::hex << sim_.state_hash() << std::dec << "\n";
     }
@@ -169,6 +205,7 @@ class Session {
     // must never run out of space half-way (see TrajectoryFile::reserve).
     static constexpr std::uint64_t kMetadataReserve = 64 * 1024;
     std::uint64_t frame_reserve_bytes_;
+    std::uint64_t frames_written_;
     double last_polar_order_ = 0.0;
     Clock::time_point started_ = Clock::now();
     Clock::time_point last_checkpoint_ = Clock::now();
@@ -185,25 +222,28 @@ bool is_empty_directory(const std::filesystem::path& dir) {
     return std::filesystem::is_directory(dir) && std::filesystem::is_empty(dir);
 }
 
-// Refuses a directory that holds anything unless --overwrite; then removes only our files.
+// Refuses a directory that holds anything unless --overwrite, and creates it.
 void prepare_output_directory(const std::filesystem::path& dir, bool overwrite) {
     std::error_code ec;
     if (std::filesystem::exists(dir, ec)) {
         if (!std::filesystem::is_directory(dir, ec))
             throw FileError(dir.string(), "exists and is not a directory");
-        if (!is_empty_directory(dir)) {
-            if (!overwrite)
-                throw InvalidParameter("--out", dir.string(), "a new or empty directory",
-                                       "it exists and is not empty: choose another --out, add "
-                                       "--overwrite to replace its run files, or continue it "
-                                       "with rodsea run --resume " +
-                                           dir.string());
-            for (const char* name : {kConfigFile, kTrajectoryFile, kSeriesFile, kCheckpointFile})
-                std::filesystem::remove(dir / name, ec);
-        }
+        if (!is_empty_directory(dir) && !overwrite)
+            throw InvalidParameter("--out", dir.string(), "a new or empty directory",
+                                   "it exists and is not empty: choose another --out, add "
+                                   "--overwrite to replace its run files, or continue it with "
+                                   "rodsea run --resume " +
+                                       dir.string());
     }
     std::filesystem::create_directories(dir, ec);
     if (ec) throw FileError(dir.string(), "cannot create the output directory: " + ec.message());
+}
+
+// --overwrite removes only the files a run writes; anything else in the directory stays.
+void remove_run_files(const std::filesystem::path& dir) {
+    std::error_code ec;
+    for (const char* name : {kConfigFile, kTrajectoryFile, kSeriesFile, kCheckpointFile})
+        std::filesystem::remove(dir / name, ec);
 }
 
 }  // namespace
@@ -218,6 +258,8 @@ int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out,
         throw InvalidParameter("species", "these counts", "a packing that fits", packing.message);
     prepare_output_directory(options.out_dir, options.overwrite);
     const std::filesystem::path& dir = options.out_dir;
+    const RunDirectoryLock lock(dir);
+    if (options.overwrite) remove_run_files(dir);
     if (!options.quiet) {
         out << "rodsea run -> " << dir.string() << "\n";
         describe_plan(plan, out, true);
@@ -226,9 +268,18 @@ int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out,
     BuildReport built;
     BodyState bodies =
         build_initial_state(plan.engine, plan.counts, plan.builder, plan.engine.seed, &built);
-    if (!options.quiet)
-        out << "initial state built in " << format_duration(built.seconds) << " (" << built.seconds
-            << " s, " << built.sweeps << " randomisation sweeps)\n";
+    if (!options.quiet) {
+        // Dense starts keep some of the lattice's alignment (docs/builder.md): say how much.
+        std::ostringstream line;
+        line.precision(3);
+        line << "initial state built in " << built.seconds << " s (" << built.sweeps
+             << " randomisation sweeps); order left from the start:";
+        for (size_t s = 0; s < plan.engine.species.size(); ++s)
+            if (plan.engine.species[s].kind != BodyKind::bead)
+                line << " " << plan.engine.species[s].name << " P = " << built.polar_order.at(s)
+                     << ", S = " << built.nematic_order.at(s) << ";";
+        out << line.str() << "\n";
+    }
     Simulation sim(plan.engine, std::move(bodies));
 
     write_file_atomically(dir / kConfigFile, plan.config_toml);
@@ -238,8 +289,14 @@ int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out,
                                plan.config_toml, columns.columns());
     SeriesCsv csv = SeriesCsv::create(dir / kSeriesFile, columns.columns());
     Session session(plan, std::move(sim), std::move(trajectory), std::move(csv), dir, 0.0);
-    session.write_frame(0.0);
-    session.checkpoint(false);
+    try {
+        session.write_frame(0.0);
+        session.checkpoint(false);
+    } catch (const FileError& e) {
+        err << "rodsea: cannot write the run's first frame and checkpoint: " << e.what()
+            << "\n  there is nothing to resume: make room and start again with --overwrite\n";
+        return kExitIoError;
+    }
     return session.run(out, err, choose_progress_style(options.quiet, progress_is_terminal));
 }
 
@@ -250,6 +307,7 @@ int resume_run(const std::filesystem::path& dir, const RunOptions& options, std:
     if (!std::filesystem::exists(checkpoint_path))
         throw FileError(checkpoint_path.string(),
                         "no checkpoint here: is this a directory made by rodsea run?");
+    const RunDirectoryLock lock(dir);
     Checkpoint c = read_checkpoint(checkpoint_path);
     const RunPlan plan = load_config_string(c.config_toml, checkpoint_path.string() + " [config]");
     if (c.complete) {
@@ -258,6 +316,7 @@ int resume_run(const std::filesystem::path& dir, const RunOptions& options, std:
                 << " of " << plan.total_steps() << "); nothing to do.\n";
         return kExitOk;
     }
+    // Everything about the checkpoint is checked before any file is touched.
     std::uint64_t expected = 0;
     for (long long n : plan.counts)
         expected += static_cast<std::uint64_t>(n);
@@ -265,6 +324,16 @@ int resume_run(const std::filesystem::path& dir, const RunOptions& options, std:
         throw FileError(checkpoint_path.string(), "holds " + std::to_string(c.bodies.size()) +
                                                       " bodies but its config asks for " +
                                                       std::to_string(expected));
+    if (c.interval_accumulators.size() != SeriesRecorder(plan.engine).interval_state().size())
+        throw FileError(checkpoint_path.string(), "damaged: wrong time-series interval state");
+    // A run stopped by a failed write has its checkpoint at the step whose frame failed: that
+    // frame comes first, from the same state and interval, as the uninterrupted run wrote it.
+    const std::uint64_t due = frames_due(plan, c.step);
+    if (c.step > plan.total_steps() || (c.frames_written != due && c.frames_written + 1 != due))
+        throw FileError(checkpoint_path.string(),
+                        "counts " + std::to_string(c.frames_written) + " frames at step " +
+                            std::to_string(c.step) + ", where the run writes " +
+                            std::to_string(due) + ": not a checkpoint of this run's config");
     if (!options.quiet) {
         out << "rodsea run --resume " << dir.string() << ": from step " << c.step << " of "
             << plan.total_steps() << " (t = " << static_cast<double>(c.step) * plan.engine.dt
@@ -272,22 +341,20 @@ int resume_run(const std::filesystem::path& dir, const RunOptions& options, std:
     }
     Simulation sim = Simulation::resume(plan.engine, std::move(c.bodies), c.step);
     const SeriesRecorder columns(plan.engine);
+    SeriesCsv csv = SeriesCsv::reopen(dir / kSeriesFile, c.frames_written);
     TrajectoryFile trajectory =
         TrajectoryFile::reopen(dir / kTrajectoryFile, c.frames_written, columns.columns());
-    SeriesCsv csv = SeriesCsv::reopen(dir / kSeriesFile, c.frames_written);
     Session session(plan, std::move(sim), std::move(trajectory), std::move(csv), dir,
                     c.wall_seconds);
     session.recorder().restore_interval(c.interval_accumulators);
-    // A run stopped by a failed write has its checkpoint at the step whose frame failed: that
-    // frame comes first, from the same state and interval, as the uninterrupted run wrote it.
-    const std::uint64_t due = frames_due(plan, c.step);
     if (c.frames_written + 1 == due) {
-        session.write_frame(0.0);
-    } else if (c.frames_written != due) {
-        throw FileError(checkpoint_path.string(),
-                        "counts " + std::to_string(c.frames_written) + " frames at step " +
-                            std::to_string(c.step) + ", where the run writes " +
-                            std::to_string(due) + ": not a checkpoint of this run's config");
+        try {
+            session.write_frame(0.0);
+        } catch (const FileError& e) {
+            err << "rodsea: still cannot write: " << e.what()
+                << "\n  the checkpoint is intact; make room and resume again\n";
+            return kExitIoError;
+        }
     }
     return session.run(out, err, choose_progress_style(options.quiet, progress_is_terminal));
 }

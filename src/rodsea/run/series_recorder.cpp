@@ -32,14 +32,14 @@ void SeriesRecorder::accumulate(const StepStatistics& s) {
     steps_ += 1.0;
 }
 
-std::vector<double> SeriesRecorder::take_row(const Simulation& sim, double steps_per_second) {
+std::vector<double> SeriesRecorder::row(const Simulation& sim, double steps_per_second) const {
     const BodyState& b = sim.bodies();
     const EngineParameters& p = sim.parameters();
-    std::vector<double> row;
-    row.reserve(columns_.size());
+    std::vector<double> values;
+    values.reserve(columns_.size());
     for (size_t s = 0; s < species_count_; ++s) {
-        row.push_back(orientational_order(b, static_cast<std::uint32_t>(s), 1));
-        row.push_back(orientational_order(b, static_cast<std::uint32_t>(s), 2));
+        values.push_back(orientational_order(b, static_cast<std::uint32_t>(s), 1));
+        values.push_back(orientational_order(b, static_cast<std::uint32_t>(s), 2));
     }
     std::vector<double> translational(species_count_), rotational(species_count_),
         count(species_count_);
@@ -54,16 +54,15 @@ std::vector<double> SeriesRecorder::take_row(const Simulation& sim, double steps
     }
     for (size_t s = 0; s < species_count_; ++s) {
         const double n = std::max(count[s], 1.0);
-        row.push_back(translational[s] / n);
-        row.push_back(rotational[s] / n);
+        values.push_back(translational[s] / n);
+        values.push_back(rotational[s] / n);
     }
-    row.push_back(max_overlap_);
-    row.push_back(unresolved_);
-    row.push_back(max_sweeps_);
-    row.push_back(steps_ > 0.0 ? impulses_ / steps_ : 0.0);
-    row.push_back(steps_per_second);
-    restore_interval({0.0, 0.0, 0.0, 0.0, 0.0});
-    return row;
+    values.push_back(max_overlap_);
+    values.push_back(unresolved_);
+    values.push_back(max_sweeps_);
+    values.push_back(steps_ > 0.0 ? impulses_ / steps_ : 0.0);
+    values.push_back(steps_per_second);
+    return values;
 }
 
 std::vector<double> SeriesRecorder::interval_state() const {

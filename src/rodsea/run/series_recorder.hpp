@@ -16,8 +16,10 @@ class SeriesRecorder {
 
     const std::vector<SeriesColumn>& columns() const { return columns_; }
     void accumulate(const StepStatistics& step);
-    // The row for the current state; starts a new interval.
-    std::vector<double> take_row(const Simulation& sim, double steps_per_second);
+    // The row for the current state and the interval so far.
+    std::vector<double> row(const Simulation& sim, double steps_per_second) const;
+    // Called once the row is safely written: the next row covers the steps from here.
+    void start_interval() { restore_interval({0.0, 0.0, 0.0, 0.0, 0.0}); }
 
     // The partly filled interval, for checkpoints: a resumed run then writes the same rows.
     std::vector<double> interval_state() const;

@@ -19,6 +19,8 @@ StopSignalGuard::StopSignalGuard() {
     received = 0;
     struct sigaction action {};
     action.sa_handler = on_stop_signal;
+    // A second Ctrl-C kills as usual, for when the clean stop is not wanted.
+    action.sa_flags = SA_RESETHAND;
     sigemptyset(&action.sa_mask);
     sigaction(SIGINT, &action, &previous_int);
     sigaction(SIGTERM, &action, &previous_term);

@@ -1,0 +1,21 @@
+#pragma once
+// One writer per run directory: two processes resuming the same run, or --overwrite on a run
+// that is still going, would interleave their writes. The lock is an flock on DIR/.rodsea.lock,
+// held for the life of this object and released by the OS if the process dies.
+#include <filesystem>
+
+namespace rodsea {
+
+class RunDirectoryLock {
+  public:
+    // Throws InvalidParameter naming the directory when another process holds it.
+    explicit RunDirectoryLock(const std::filesystem::path& dir);
+    ~RunDirectoryLock();
+    RunDirectoryLock(const RunDirectoryLock&) = delete;
+    RunDirectoryLock& operator=(const RunDirectoryLock&) = delete;
+
+  private:
+    int fd_ = -1;
+};
+
+}  // namespace rodsea
