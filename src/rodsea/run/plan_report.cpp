@@ -50,8 +50,8 @@ ResourceEstimate estimate_resources(const RunPlan& plan) {
     }
     e.memory_bytes = e.bodies * kBodyBytes + e.spheres * kSphereBytes;
     // position, velocity, angular velocity (3 floats) and orientation (4 floats) per body, and
-    // a step (int64) and time (double) per element.
-    e.frame_bytes = e.bodies * (3 + 3 + 3 + 4) * sizeof(float) + 4 * 16;
+    // a step (int64) and time (double) per element, and the box edges.
+    e.frame_bytes = e.bodies * (3 + 3 + 3 + 4) * sizeof(float) + 5 * 16 + 3 * sizeof(double);
     e.frames = plan.total_steps() / plan.steps_per_output() + 1 +
                (plan.total_steps() % plan.steps_per_output() != 0 ? 1 : 0);
     const std::uint64_t columns = 4 * plan.engine.species.size() + 5;
