@@ -333,14 +333,6 @@ std::string read_string_dataset(const File& file, hid_t parent, const std::strin
     return text;
 }
 
-std::vector<hsize_t> dataset_shape(const File& file, hid_t parent, const std::string& name) {
-    Handle set(check(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), file, "no dataset " + name));
-    Handle space(H5Dget_space(set.get()));
-    std::vector<hsize_t> dims(static_cast<size_t>(H5Sget_simple_extent_ndims(space.get())));
-    H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
-    return dims;
-}
-
 GrowingDataset GrowingDataset::create(const File& file, hid_t parent, const std::string& name,
                                       hid_t type, const std::vector<hsize_t>& frame_dims,
                                       const std::string& unit) {

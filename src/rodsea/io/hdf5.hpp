@@ -80,12 +80,11 @@ void write_dataset(const File& file, hid_t parent, const std::string& name,
 void write_string_dataset(const File& file, hid_t parent, const std::string& name,
                           const std::string& text);
 
-// Whole-dataset reads; the shape is checked against `dims` when given.
+// Whole-dataset reads, flattened.
 std::vector<double> read_doubles(const File& file, hid_t parent, const std::string& name);
 std::vector<std::int32_t> read_ints(const File& file, hid_t parent, const std::string& name);
 std::vector<std::uint64_t> read_uint64s(const File& file, hid_t parent, const std::string& name);
 std::string read_string_dataset(const File& file, hid_t parent, const std::string& name);
-std::vector<hsize_t> dataset_shape(const File& file, hid_t parent, const std::string& name);
 
 // A dataset that grows along its first axis, one frame (a block of `frame_dims`) at a time:
 // the H5MD "value", "step" and "time" arrays.

@@ -324,7 +324,8 @@ int resume_run(const std::filesystem::path& dir, const RunOptions& options, std:
         throw FileError(checkpoint_path.string(), "holds " + std::to_string(c.bodies.size()) +
                                                       " bodies but its config asks for " +
                                                       std::to_string(expected));
-    if (c.interval_accumulators.size() != SeriesRecorder(plan.engine).interval_state().size())
+    const SeriesRecorder columns(plan.engine);
+    if (c.interval_accumulators.size() != columns.interval_state().size())
         throw FileError(checkpoint_path.string(), "damaged: wrong time-series interval state");
     // A run stopped by a failed write has its checkpoint at the step whose frame failed: that
     // frame comes first, from the same state and interval, as the uninterrupted run wrote it.
@@ -340,7 +341,6 @@ int resume_run(const std::filesystem::path& dir, const RunOptions& options, std:
             << " s), " << c.frames_written << " frames kept\n";
     }
     Simulation sim = Simulation::resume(plan.engine, std::move(c.bodies), c.step);
-    const SeriesRecorder columns(plan.engine);
     SeriesCsv csv = SeriesCsv::reopen(dir / kSeriesFile, c.frames_written);
     TrajectoryFile trajectory =
         TrajectoryFile::reopen(dir / kTrajectoryFile, c.frames_written, columns.columns());
