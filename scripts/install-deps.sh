@@ -12,7 +12,7 @@ packages=(
     libhdf5-dev                         # HDF5 trajectories and checkpoints (H5MD layout)
     python3 python3-numpy python3-matplotlib  # the demo picture (scripts/plot_snapshot.py)
     python3-h5py python3-scipy          # reading trajectories from Python; cross-checks
-    python3-mdanalysis                  # the trajectory must open in MDAnalysis (tested)
+    python3-mdanalysis python3-sklearn                  # the trajectory must open in MDAnalysis (tested)
 )
 
 if [ "$(id -u)" -eq 0 ]; then sudo=(); else sudo=(sudo); fi
