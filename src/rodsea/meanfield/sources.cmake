@@ -1,0 +1,3 @@
+target_sources(rodsea_core PRIVATE
+  src/rodsea/meanfield/mean_field.cpp
+)
