@@ -11,8 +11,10 @@
 #include <string_view>
 #include <vector>
 
+#include "rodsea/analysis/analyze_command.hpp"
 #include "rodsea/config/config_file.hpp"
 #include "rodsea/error.hpp"
+#include "rodsea/meanfield/mean_field.hpp"
 #include "rodsea/run/plan_report.hpp"
 #include "rodsea/run/run_driver.hpp"
 
@@ -29,6 +31,10 @@ usage:
   rodsea info CONFIG                                      what CONFIG would simulate
   rodsea config --defaults | --reference                  a complete default config, or the
                                                           key reference (docs/config.md)
+  rodsea analyze RUN_DIR... [--from T] [--observables ..] the paper's observables with error
+                                                          bars (docs/analysis.md)
+  rodsea meanfield [--a A --alpha AL ...]                 the paper's mean-field model
+                                                          (docs/meanfield.md)
   rodsea help COMMAND | --help | --version
 
 Units everywhere: mm, s (and rad, Hz); masses in an arbitrary unit. Examples: examples/*.toml.
@@ -172,6 +178,18 @@ int command_config(int argc, char** argv) {
     return ExitCode::kExitOk;
 }
 
+std::vector<std::string> words_after_command(int argc, char** argv) {
+    return std::vector<std::string>(argv + 2, argv + argc);
+}
+
+int command_analyze(int argc, char** argv) {
+    return rodsea::analyze_command(words_after_command(argc, argv), std::cout, std::cout);
+}
+
+int command_meanfield(int argc, char** argv) {
+    return rodsea::meanfield_command(words_after_command(argc, argv), std::cout);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -185,19 +203,26 @@ int main(int argc, char** argv) {
         return ExitCode::kExitOk;
     }
     const std::map<std::string_view, std::function<int(int, char**)>> commands{
-        {"run", command_run}, {"info", command_info}, {"config", command_config}};
+        {"run", command_run},
+        {"info", command_info},
+        {"config", command_config},
+        {"analyze", command_analyze},
+        {"meanfield", command_meanfield}};
     if (command == "help") {
         const std::string_view topic = argc > 2 ? argv[2] : "";
-        std::cout << (topic == "run"      ? kRunHelp
-                      : topic == "info"   ? kInfoHelp
-                      : topic == "config" ? kConfigHelp
-                                          : kUsage);
+        std::cout << (topic == "run"         ? kRunHelp
+                      : topic == "info"      ? kInfoHelp
+                      : topic == "config"    ? kConfigHelp
+                      : topic == "analyze"   ? rodsea::kAnalyzeHelp
+                      : topic == "meanfield" ? rodsea::kMeanfieldHelp
+                                             : kUsage);
         return ExitCode::kExitOk;
     }
     const auto it = commands.find(command);
     if (it == commands.end()) {
-        std::cerr << "rodsea: unknown command '" << command
-                  << "' (commands: run, info, config, help; see rodsea --help)\n";
+        std::cerr
+            << "rodsea: unknown command '" << command
+            << "' (commands: run, info, config, analyze, meanfield, help; see rodsea --help)\n";
         return ExitCode::kExitBadInput;
     }
     try {

@@ -1,0 +1,126 @@
+// Cost of each observable on one frame of the paper's largest system (L = 252 mm, 101070 beads
+// at φ = 0.80 + 800 polar rods at φ_p = 0.05: 101870 bodies), as `rodsea analyze` runs it: the
+// frame read from HDF5, the analysis frame, the shared grids, each observable's compute(), and
+// the once-per-run finish of C(t) over 1000 frames. Sum of the per-frame figures × 1000 frames
+// = the whole analysis of a 1000-frame trajectory.
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <memory>
+
+#include "rodsea/analysis/analysis_frame.hpp"
+#include "rodsea/analysis/autocorrelation_observable.hpp"
+#include "rodsea/analysis/frame_context.hpp"
+#include "rodsea/analysis/observable_registry.hpp"
+#include "rodsea/builder/initial_state.hpp"
+#include "rodsea/io/trajectory_file.hpp"
+#include "rodsea/io/trajectory_reader.hpp"
+#include "rodsea/random.hpp"
+#include "rodsea/scenes/scenes.hpp"
+
+namespace {
+
+using namespace rodsea;
+
+struct LargestSystem {
+    EngineParameters params;
+    BodyState bodies;
+    AnalysisFrame frame;
+    AnalysisSetup setup;
+    AnalysisOptions options;
+    std::filesystem::path trajectory;
+
+    LargestSystem() {
+        params.box = {252.0, 252.0};
+        params.species = {polar_rod_species(), bead_species()};
+        params.species[0].name = "polar";
+        params.species[1].name = "medium";
+        const std::vector<long long> counts{
+            count_for_area_fraction(0.05, params.box, params.species[0].shape),
+            count_for_area_fraction(0.80, params.box, params.species[1].shape)};
+        bodies = build_initial_state(params, counts, {}, 1);
+        SplitMix64 rng(2);
+        for (Vec3& v : bodies.velocity)  // granular-gas-like in-plane velocities, mm/s
+            v = {rng.uniform(-20, 20), rng.uniform(-20, 20), 0.0};
+        frame = make_analysis_frame(bodies, {252.0, 252.0}, 0, 0.0, 0);
+        setup.box = {252.0, 252.0};
+        for (std::size_t s = 0; s < 2; ++s)
+            setup.species.push_back({params.species[s].name, params.species[s].kind,
+                                     params.species[s].shape.extent, counts[s], 0.0});
+        setup.frame_interval = 0.05;
+        setup.steady_frames = 1000;
+        options = resolve_analysis_options({}, setup);
+        trajectory = std::filesystem::temp_directory_path() / "rodsea-bench-analysis.h5";
+        TrajectoryFile file = TrajectoryFile::create(trajectory, params, bodies.species, "", {});
+        file.append_frame(0, 0.0, bodies, {});
+    }
+    ~LargestSystem() { std::filesystem::remove(trajectory); }
+};
+
+LargestSystem& largest() {
+    static LargestSystem system;
+    return system;
+}
+
+void BM_ReadFrame(benchmark::State& state) {
+    const TrajectoryReader reader(largest().trajectory);
+    for (auto _ : state) {
+        const BodyState b = reader.frame(0);
+        benchmark::DoNotOptimize(b.position.data());
+    }
+    state.counters["bodies"] = static_cast<double>(largest().bodies.size());
+}
+BENCHMARK(BM_ReadFrame)->Unit(benchmark::kMillisecond);
+
+void BM_AnalysisFrame(benchmark::State& state) {
+    for (auto _ : state) {
+        const AnalysisFrame f = make_analysis_frame(largest().bodies, {252.0, 252.0}, 0, 0.0, 0);
+        benchmark::DoNotOptimize(f.theta.data());
+    }
+}
+BENCHMARK(BM_AnalysisFrame)->Unit(benchmark::kMillisecond);
+
+void BM_SharedGrids(benchmark::State& state) {
+    for (auto _ : state) {
+        const FrameContext context(largest().frame, largest().setup.species, true);
+        for (BodyGroup g : {BodyGroup::polar, BodyGroup::medium})
+            benchmark::DoNotOptimize(context.grid(g).members().data());
+    }
+}
+BENCHMARK(BM_SharedGrids)->Unit(benchmark::kMillisecond);
+
+// compute() of one observable on the frame; the grids are built outside the timing, as they
+// are shared by all observables of a frame.
+void BM_Observable(benchmark::State& state, const char* name) {
+    LargestSystem& s = largest();
+    const std::unique_ptr<Observable> observable = make_observable(name, s.setup, s.options);
+    const FrameContext context(s.frame, s.setup.species, true);
+    context.grid(BodyGroup::polar);
+    context.grid(BodyGroup::medium);
+    for (auto _ : state)
+        observable->compute(context);
+}
+BENCHMARK_CAPTURE(BM_Observable, order, "order")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Observable, pair, "pair")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Observable, corotating, "corotating")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Observable, autocorrelation, "autocorrelation")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Observable, flocks, "flocks")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Observable, segregation, "segregation")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Observable, medium_velocity, "medium_velocity")->Unit(benchmark::kMillisecond);
+
+// The once-per-run part of C(t): 800 polar rods over 1000 frames, FFT per rod, 4 blocks.
+void BM_AutocorrelationFinish(benchmark::State& state) {
+    LargestSystem& s = largest();
+    for (auto _ : state) {
+        state.PauseTiming();
+        AutocorrelationObservable o(s.setup, s.options);
+        const FrameContext context(s.frame, s.setup.species, true);
+        for (int k = 0; k < 1000; ++k)
+            o.compute(context);
+        state.ResumeTiming();
+        benchmark::DoNotOptimize(o.finish().scalars.data());
+    }
+}
+BENCHMARK(BM_AutocorrelationFinish)->Unit(benchmark::kMillisecond)->Iterations(2);
+
+}  // namespace

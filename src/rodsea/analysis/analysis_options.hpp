@@ -1,0 +1,47 @@
+#pragma once
+// Every knob of `rodsea analyze`, set with `--param KEY=VALUE`. A NaN default is resolved per run
+// from the box and the polar rod length (resolve_analysis_options), so one command line serves
+// runs of any size. Units: mm and s, as everywhere in rodsea.
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace rodsea {
+
+struct AnalysisSetup;
+
+struct AnalysisOptions {
+    static constexpr double kAuto = std::numeric_limits<double>::quiet_NaN();
+
+    double pair_r_max = kAuto;         // mm; auto: min(L/2, 10 ℓ_p)
+    double pair_bin = 0.25;            // mm
+    double medium_pair_r_max = kAuto;  // mm; auto: min(L/2, 15 mm)
+    double corotating_r_max = kAuto;   // mm; auto: min(L/2, 5 ℓ_p)
+    int corotating_r_bins = 60;
+    int corotating_theta_bins = 72;
+    double contour_level = 0.7;              // fraction of max g(r,θ) (the paper's 70 %)
+    double autocorrelation_max_lag = kAuto;  // s; auto: half the steady window
+    double autocorrelation_fit_floor = 0.2;  // fit −ln C = D_r t where C ≥ this
+    double flock_eps = kAuto;                // mm; auto: ℓ_p / 2 (MODEL.md CHOICE)
+    int flock_min_samples = 3;               // MODEL.md CHOICE
+    double segregation_cell = kAuto;         // mm; auto: 2 ℓ_p (MODEL.md CHOICE)
+    int segregation_baseline_samples = 200;
+    double medium_distance = 100.0;  // mm, the paper's d
+    double medium_r_max = kAuto;     // mm; auto: min(L/2, d)
+    double medium_bin = 1.0;         // mm
+    int blocks = 4;                  // time blocks for window-average error bars
+};
+
+// Sets `key` (e.g. "flocks.eps") from text. Throws InvalidParameter naming the key, the value and
+// the allowed range, with a did-you-mean for a misspelt key.
+void set_analysis_option(AnalysisOptions& options, const std::string& key,
+                         const std::string& value);
+
+// Fills the automatic values for this run and checks the whole set against it (radii up to half
+// the box, bins that fit). Throws InvalidParameter naming the key.
+AnalysisOptions resolve_analysis_options(AnalysisOptions options, const AnalysisSetup& setup);
+
+// The key reference as a Markdown table (docs/analysis.md, `rodsea analyze --help`).
+std::string analysis_options_reference();
+
+}  // namespace rodsea

@@ -1,0 +1,191 @@
+#include "rodsea/analysis/analyze_run.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <ostream>
+
+#include "rodsea/analysis/frame_context.hpp"
+#include "rodsea/analysis/observable_registry.hpp"
+#include "rodsea/config/config_file.hpp"
+#include "rodsea/error.hpp"
+#include "rodsea/io/trajectory_file.hpp"
+#include "rodsea/io/trajectory_reader.hpp"
+#include "rodsea/run/progress.hpp"
+
+namespace rodsea {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+AnalysisSetup make_setup(const RunPlan& plan) {
+    AnalysisSetup setup;
+    setup.box = {plan.engine.box.lx, plan.engine.box.ly};
+    const double area = setup.box.lx * setup.box.ly;
+    for (std::size_t s = 0; s < plan.engine.species.size(); ++s) {
+        const Species& sp = plan.engine.species[s];
+        setup.species.push_back(
+            {sp.name, sp.kind, sp.shape.extent, plan.counts[s],
+             static_cast<double>(plan.counts[s]) * sp.shape.projected_area / area});
+    }
+    return setup;
+}
+
+// The series whose relaxation decides the automatic steady start: P of the first polar
+// species, else S of the first rod species (the same columns `rodsea run` records).
+std::string steady_basis(const AnalysisSetup& setup) {
+    for (const SpeciesInfo& s : setup.species)
+        if (s.kind == BodyKind::polar_rod && s.count > 0) return "polar_order_" + s.name;
+    for (const SpeciesInfo& s : setup.species)
+        if (s.kind == BodyKind::apolar_rod && s.count > 0) return "nematic_order_" + s.name;
+    return "";
+}
+
+}  // namespace
+
+PreparedRun prepare_run(const fs::path& run, const AnalyzeRequest& request) {
+    PreparedRun p;
+    if (fs::is_regular_file(run)) {
+        p.trajectory = run;
+        p.run_dir = run.parent_path().empty() ? fs::path(".") : run.parent_path();
+    } else {
+        p.run_dir = run;
+        p.trajectory = run / "trajectory.h5";
+    }
+    if (!fs::exists(p.trajectory))
+        throw FileError(p.trajectory.string(),
+                        "no such file (give a directory written by `rodsea run`, or its "
+                        "trajectory.h5)");
+    const TrajectoryReader reader(p.trajectory);
+    std::string config;
+    try {
+        config = read_stored_config(p.trajectory);
+    } catch (const FileError&) {
+        throw FileError(p.trajectory.string(),
+                        "not a rodsea trajectory (no /parameters/rodsea/config)");
+    }
+    p.plan = load_config_string(config, p.trajectory.string() + ":/parameters/rodsea/config");
+    p.setup = make_setup(p.plan);
+    p.setup.blocks = request.options.blocks;
+    p.times = reader.times();
+    const std::size_t frames = p.times.size();
+    if (frames == 0) throw FileError(p.trajectory.string(), "holds no frames yet");
+    if (frames >= 2) {
+        p.setup.frame_interval =
+            (p.times.back() - p.times.front()) / static_cast<double>(frames - 1);
+        for (std::size_t k = 1; k < frames; ++k)
+            // Times are multiples of the output step: anything beyond rounding is not a rodsea run.
+            if (std::abs(p.times[k] - p.times[k - 1] - p.setup.frame_interval) >
+                1e-6 * p.setup.frame_interval)
+                throw FileError(
+                    p.trajectory.string(),
+                    "frames are not equally spaced in time (frame " + std::to_string(k) + ")");
+    } else {
+        p.setup.frame_interval = p.plan.control.output_interval;
+    }
+
+    SteadyWindow& w = p.window;
+    if (request.from) {
+        const double from = *request.from;
+        // Half a frame interval of slack: --from 0.5 must select the frame written at 0.5 s.
+        const double slack = 0.5 * p.setup.frame_interval;
+        if (!std::isfinite(from) || from > p.times.back() + slack || from < 0.0)
+            throw InvalidParameter("--from", format_number(from) + " s",
+                                   "[0, " + format_number(p.times.back()) + "] s",
+                                   "the run's frames span " + format_number(p.times.front()) +
+                                       " to " + format_number(p.times.back()) + " s");
+        while (w.first_frame < frames && p.times[w.first_frame] < from - slack)
+            ++w.first_frame;
+    } else {
+        w.automatic = true;
+        w.basis = steady_basis(p.setup);
+        if (!w.basis.empty()) {
+            const std::vector<double> series = reader.series(w.basis);
+            w.first_frame = steady_start(series);
+            const std::span<const double> kept(
+                series.begin() + static_cast<std::ptrdiff_t>(w.first_frame), series.end());
+            w.n_eff =
+                static_cast<double>(kept.size()) / (2.0 * integrated_autocorrelation_time(kept));
+        }
+    }
+    w.from = p.times[w.first_frame];
+    p.setup.steady_frames = frames - w.first_frame;
+    p.options = resolve_analysis_options(request.options, p.setup);
+    p.observables = select_observables(request.observables, p.setup, &p.skipped);
+    for (const std::string& name : p.observables)  // construction checks the parameters
+        (void)make_observable(name, p.setup, p.options);
+    return p;
+}
+
+RunAnalysis analyze_run(const PreparedRun& run, std::ostream& log, bool quiet) {
+    using clock = std::chrono::steady_clock;
+    const auto start = clock::now();
+    RunAnalysis out;
+    out.run = run;
+    const std::size_t frames = run.times.size();
+    if (!quiet) {
+        log << "analyze " << run.run_dir.string() << ": " << frames << " frames, "
+            << format_number(run.times.front()) << " to " << format_number(run.times.back())
+            << " s\n  steady window from " << format_number(run.window.from) << " s (frame "
+            << run.window.first_frame << ", " << run.setup.steady_frames << " frames; ";
+        if (run.window.automatic && !run.window.basis.empty())
+            log << "automatic: the start that maximises the independent samples of "
+                << run.window.basis << ", n_eff = " << format_number(run.window.n_eff) << ")\n";
+        else if (run.window.automatic)
+            log << "automatic: no order-parameter series, whole run)\n";
+        else
+            log << "--from)\n";
+        log << "  observables:";
+        for (const std::string& n : run.observables)
+            log << " " << n;
+        log << "\n";
+        for (const std::string& s : run.skipped)
+            log << "  skipped " << s << "\n";
+    }
+    std::vector<std::unique_ptr<Observable>> observables;
+    bool any_transient = false;
+    for (const std::string& name : run.observables) {
+        observables.push_back(make_observable(name, run.setup, run.options));
+        any_transient = any_transient || observables.back()->wants_transient();
+    }
+    std::vector<double> seconds(observables.size(), 0.0);
+    std::vector<std::size_t> computed(observables.size(), 0);
+    const TrajectoryReader reader(run.trajectory);
+    const std::size_t first = any_transient ? 0 : run.window.first_frame;
+    std::size_t next_report = 1;
+    for (std::size_t k = first; k < frames; ++k) {
+        const bool steady = k >= run.window.first_frame;
+        const AnalysisFrame frame =
+            make_analysis_frame(reader.frame(k), run.setup.box, k, run.times[k], reader.steps()[k]);
+        const FrameContext context(frame, run.setup.species, steady);
+        for (std::size_t o = 0; o < observables.size(); ++o) {
+            if (!steady && !observables[o]->wants_transient()) continue;
+            const auto t0 = clock::now();
+            observables[o]->compute(context);
+            seconds[o] += std::chrono::duration<double>(clock::now() - t0).count();
+            ++computed[o];
+        }
+        const std::size_t done = k - first + 1, total = frames - first;
+        const double elapsed = std::chrono::duration<double>(clock::now() - start).count();
+        // Short analyses stay silent: a progress line only helps when there is time to wait.
+        if (!quiet && done * 10 >= next_report * total && elapsed > 2.0) {
+            log << "  " << done << "/" << total << " frames, " << format_duration(elapsed)
+                << " elapsed, ETA "
+                << format_duration(elapsed * static_cast<double>(total - done) /
+                                   static_cast<double>(done))
+                << "\n";
+            while (next_report * total <= done * 10)
+                ++next_report;
+        }
+    }
+    for (std::size_t o = 0; o < observables.size(); ++o) {
+        ObservableResults r = observables[o]->finish();
+        r.frames = computed[o];
+        r.seconds = seconds[o];
+        out.results.push_back(std::move(r));
+    }
+    out.seconds = std::chrono::duration<double>(clock::now() - start).count();
+    return out;
+}
+
+}  // namespace rodsea

@@ -1,0 +1,25 @@
+#pragma once
+// The flock shape of the paper (SI): the closed contour of g(r,θ) at a fraction (70 %) of its
+// maximum. Along each θ ray the contour sits where g last stays above the level, counted from
+// the first bin that reaches it, so the excluded-volume hole near r = 0 of real rods lies
+// inside the contour. σ_f is the contour's extent along the reference rod's axis (x') over its
+// extent across it (y').
+#include <span>
+#include <vector>
+
+namespace rodsea {
+
+struct FlockContour {
+    std::vector<double> theta;     // rad, centre of each angular bin
+    std::vector<double> radius;    // mm, contour distance along that ray (0: g never reaches it)
+    double level = 0.0;            // the g value of the contour
+    double aspect_ratio = 0.0;     // σ_f = x' extent / y' extent; NaN when degenerate
+    double enclosed_g_area = 0.0;  // Σ g · bin area inside the contour, mm²
+    bool closed = true;            // false: some ray stays above the level to the map's edge
+};
+
+// `g` is [r_bin * theta_bins + theta_bin]; bins without data are NaN and count as below level.
+FlockContour flock_contour(std::span<const double> g, std::span<const double> r_edges,
+                           std::span<const double> theta_edges, double level_fraction);
+
+}  // namespace rodsea

@@ -1,0 +1,107 @@
+#include "rodsea/analysis/statistics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rodsea {
+
+double integrated_autocorrelation_time(std::span<const double> x) {
+    const std::size_t n = x.size();
+    if (n < 2) return 0.5;
+    double mean = 0.0;
+    for (double v : x)
+        mean += v;
+    mean /= static_cast<double>(n);
+    double c0 = 0.0;
+    for (double v : x)
+        c0 += (v - mean) * (v - mean);
+    c0 /= static_cast<double>(n);
+    // Relative to the series' scale, a variance at rounding level is a constant series.
+    if (!(c0 > 1e-28 * std::max(1.0, mean * mean))) return 0.5;
+    double tau = 0.5;
+    for (std::size_t t = 1; t < n; ++t) {
+        double ct = 0.0;
+        for (std::size_t i = 0; i + t < n; ++i)
+            ct += (x[i] - mean) * (x[i + t] - mean);
+        tau += ct / static_cast<double>(n) / c0;
+        if (static_cast<double>(t) >= 5.0 * tau) break;
+    }
+    return std::max(tau, 0.5);
+}
+
+Estimate estimate_mean(std::span<const double> x) {
+    Estimate e;
+    e.samples = x.size();
+    if (x.empty()) {
+        e.mean = e.error = std::numeric_limits<double>::quiet_NaN();
+        return e;
+    }
+    const double n = static_cast<double>(x.size());
+    for (double v : x)
+        e.mean += v;
+    e.mean /= n;
+    e.tau_int = integrated_autocorrelation_time(x);
+    e.n_eff = n / (2.0 * e.tau_int);
+    if (x.size() < 2) {
+        e.error = std::numeric_limits<double>::quiet_NaN();
+        return e;
+    }
+    double var = 0.0;
+    for (double v : x)
+        var += (v - e.mean) * (v - e.mean);
+    var /= n - 1.0;
+    e.error = std::sqrt(var * 2.0 * e.tau_int / n);
+    return e;
+}
+
+Estimate estimate_from_blocks(double full, std::span<const double> blocks) {
+    Estimate e;
+    e.mean = full;
+    e.samples = blocks.size();
+    e.n_eff = static_cast<double>(blocks.size());
+    std::vector<double> finite;
+    for (double b : blocks)
+        if (std::isfinite(b)) finite.push_back(b);
+    if (finite.size() < 2) {
+        e.error = std::numeric_limits<double>::quiet_NaN();
+        return e;
+    }
+    double mean = 0.0, var = 0.0;
+    for (double b : finite)
+        mean += b;
+    mean /= static_cast<double>(finite.size());
+    for (double b : finite)
+        var += (b - mean) * (b - mean);
+    var /= static_cast<double>(finite.size() - 1);
+    e.error = std::sqrt(var / static_cast<double>(finite.size()));
+    return e;
+}
+
+std::size_t steady_start(std::span<const double> x) {
+    const std::size_t n = x.size();
+    if (n < 4) return 0;
+    const std::size_t stride = std::max<std::size_t>(1, n / 50);
+    std::size_t best = 0;
+    double best_neff = -1.0;
+    for (std::size_t t0 = 0; t0 <= n / 2; t0 += stride) {
+        const double neff =
+            static_cast<double>(n - t0) / (2.0 * integrated_autocorrelation_time(x.subspan(t0)));
+        if (neff > best_neff) {  // strict: ties keep the earliest start
+            best_neff = neff;
+            best = t0;
+        }
+    }
+    return best;
+}
+
+double slope_through_origin(std::span<const double> t, std::span<const double> y) {
+    double ty = 0.0, tt = 0.0;
+    for (std::size_t i = 0; i < t.size() && i < y.size(); ++i) {
+        ty += t[i] * y[i];
+        tt += t[i] * t[i];
+    }
+    return tt > 0.0 ? ty / tt : std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace rodsea

@@ -1,0 +1,38 @@
+#pragma once
+// Time averages of correlated samples. Error bars come from the integrated autocorrelation time
+// τ_int (Sokal's automatic window), so a series with long memory gets the wide error bar it
+// deserves: error = sqrt(var · 2τ_int / n). The steady-state start follows Chodera (J. Chem.
+// Theory Comput. 12, 1799 (2016)): the earliest start that maximises the number of
+// statistically independent samples n_eff = (n − t0) / (2τ_int).
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace rodsea {
+
+struct Estimate {
+    double mean = 0.0;
+    double error = 0.0;    // one standard error of the mean; NaN when it cannot be estimated
+    double tau_int = 0.5;  // integrated autocorrelation time, in samples (0.5: uncorrelated)
+    double n_eff = 0.0;    // statistically independent samples, n / (2 τ_int)
+    std::size_t samples = 0;
+};
+
+// Sokal's windowed estimate: τ = 1/2 + Σ_{t=1..W} ρ(t) with the smallest W ≥ 5 τ(W). A constant
+// series has τ = 1/2.
+double integrated_autocorrelation_time(std::span<const double> x);
+
+Estimate estimate_mean(std::span<const double> x);
+
+// Mean of `full` with the error from the spread of independent block values (standard error of
+// the block mean); for quantities that only exist as a whole-window average (fits, contours).
+Estimate estimate_from_blocks(double full, std::span<const double> blocks);
+
+// Index of the first steady sample of `x` (Chodera's rule over starts every n/50 samples, up to
+// half the series, so that at least half of the data is always kept).
+std::size_t steady_start(std::span<const double> x);
+
+// Slope D of y = D t through the origin, least squares.
+double slope_through_origin(std::span<const double> t, std::span<const double> y);
+
+}  // namespace rodsea

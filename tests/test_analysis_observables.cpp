@@ -1,0 +1,396 @@
+// Observables on constructed frames with known answers (MODEL.md §4).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "analysis_frames.hpp"
+#include "rodsea/analysis/autocorrelation_observable.hpp"
+#include "rodsea/analysis/corotating_maps_observable.hpp"
+#include "rodsea/analysis/flock_observable.hpp"
+#include "rodsea/analysis/medium_velocity_observable.hpp"
+#include "rodsea/analysis/order_parameter_observable.hpp"
+#include "rodsea/analysis/pair_correlation_observable.hpp"
+#include "rodsea/analysis/segregation_observable.hpp"
+#include "rodsea/analysis/time_correlation.hpp"
+
+namespace rodsea::testing {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+TEST(BodyGrid, FindsExactlyTheBruteForceNeighboursAtAnyRadius) {
+    // Radii from below a cell to half the box: the stencil path, and the path where the
+    // stencil wraps around the box (min image per candidate) in one or both directions.
+    SplitMix64 rng(20);
+    const double side = 30.0;
+    const auto bodies = uniform_bodies(600, side, rng);
+    const AnalysisFrame f = make_frame(side, bodies);
+    std::vector<std::uint32_t> all(bodies.size());
+    for (std::uint32_t i = 0; i < all.size(); ++i)
+        all[i] = i;
+    BodyGrid grid;
+    grid.build(f, all, 2.5);
+    for (const double radius : {1.0, 2.5, 6.0, 11.0, 15.0}) {
+        for (std::uint32_t i = 0; i < 50; ++i) {
+            std::vector<std::uint32_t> expected, found;
+            for (std::uint32_t j = 0; j < bodies.size(); ++j) {
+                const Vec3 d = f.box.minimum_image({f.x[j] - f.x[i], f.y[j] - f.y[i], 0.0});
+                if (d.x * d.x + d.y * d.y < radius * radius) expected.push_back(j);
+            }
+            grid.for_each_within(
+                f.x[i], f.y[i], radius, [&](std::uint32_t j, double dx, double dy) {
+                    found.push_back(j);
+                    const Vec3 d = f.box.minimum_image({f.x[j] - f.x[i], f.y[j] - f.y[i], 0.0});
+                    EXPECT_NEAR(dx, d.x, 1e-12);
+                    EXPECT_NEAR(dy, d.y, 1e-12);
+                });
+            std::sort(found.begin(), found.end());
+            EXPECT_EQ(found, expected) << "radius " << radius << " body " << i;
+        }
+    }
+}
+
+TEST(OrderParameters, AlignedRodsHavePAndSOne) {
+    SplitMix64 rng(1);
+    auto bodies = uniform_bodies(500, 60.0, rng);
+    for (Body& b : bodies)
+        b.theta = 0.7;
+    const auto setup = make_setup(60.0, bodies, 1);
+    OrderParameterObservable o(setup);
+    const auto r = run_on(o, {make_frame(60.0, bodies)}, setup);
+    // Exact up to the rounding of 500 cos/sin sums.
+    EXPECT_NEAR(scalar(r, "P_polar").estimate.mean, 1.0, 1e-12);
+    EXPECT_NEAR(scalar(r, "S_polar").estimate.mean, 1.0, 1e-12);
+}
+
+TEST(OrderParameters, ApolarRodsHalfEachWayHavePZeroSOne) {
+    SplitMix64 rng(2);
+    auto bodies = uniform_bodies(400, 60.0, rng);
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+        bodies[i].theta = 0.3 + (i % 2 ? kPi : 0.0);
+    EXPECT_NEAR(orientational_order(std::vector<double>{0.3, 0.3 + kPi}, 1), 0.0, 1e-15);
+    const auto setup = make_setup(60.0, bodies, 1);
+    OrderParameterObservable o(setup);
+    const auto r = run_on(o, {make_frame(60.0, bodies)}, setup);
+    EXPECT_NEAR(scalar(r, "P_polar").estimate.mean, 0.0, 1e-12);
+    EXPECT_NEAR(scalar(r, "S_polar").estimate.mean, 1.0, 1e-12);
+}
+
+TEST(OrderParameters, IsotropicRodsHavePOfOrderOneOverSqrtN) {
+    // For N independent uniform angles E[N P²] = 1 exactly, and N P² is close to exponential
+    // with unit spread, so the mean of 400 draws is 1 ± 0.05: 0.2 is four standard errors.
+    SplitMix64 rng(3);
+    const std::size_t n = 1000;
+    double sum = 0.0;
+    const int draws = 400;
+    for (int d = 0; d < draws; ++d) {
+        std::vector<double> angles;
+        for (std::size_t i = 0; i < n; ++i)
+            angles.push_back(rng.uniform(-kPi, kPi));
+        const double p = orientational_order(angles, 1);
+        sum += static_cast<double>(n) * p * p;
+    }
+    EXPECT_NEAR(sum / draws, 1.0, 0.2);
+}
+
+TEST(PairCorrelation, UniformRandomPointsHaveGOfROne) {
+    SplitMix64 rng(4);
+    const double side = 80.0;
+    std::vector<AnalysisFrame> frames;
+    std::vector<Body> first;
+    for (std::size_t k = 0; k < 10; ++k) {
+        const auto bodies = uniform_bodies(1500, side, rng);
+        if (k == 0) first = bodies;
+        frames.push_back(make_frame(side, bodies, k));
+    }
+    const auto setup = make_setup(side, first, frames.size());
+    AnalysisOptions options;
+    options.pair_r_max = 20.0;
+    options.pair_bin = 0.5;
+    PairCorrelationObservable o(setup, resolved(setup, options));
+    const auto r = run_on(o, frames, setup);
+    const TableResult& t = table(r, "pair_correlation_polar");
+    double pairs = 0.0, ideal = 0.0;
+    for (const auto& row : t.rows) {
+        const double count = row[column(t, "pairs")], g = row[column(t, "g")];
+        // Poisson counts: g within 5 standard errors in every one of the 40 bins.
+        EXPECT_NEAR(g, 1.0, 5.0 / std::sqrt(count / g)) << "r = " << row[0];
+        pairs += count;
+        ideal += count / g;
+        // Independent angles: G and G2 average to 0 within their sampling error.
+        EXPECT_NEAR(row[column(t, "G")], 0.0, 5.0 / std::sqrt(count));
+    }
+    EXPECT_NEAR(pairs / ideal, 1.0, 5.0 / std::sqrt(ideal));
+}
+
+// Rods on a rectangular lattice, 5.25 mm apart along their axis and 1.75 mm across it (mid-bin
+// distances), the lattice turned with the rods by `angle`.
+std::vector<Body> aligned_lattice(double side, double angle, double x0, double y0) {
+    std::vector<Body> bodies;
+    const int along = 6, across = 20;
+    const double c = std::cos(angle), s = std::sin(angle);
+    for (int i = 0; i < along; ++i)
+        for (int j = 0; j < across; ++j) {
+            const double u = 5.25 * i, v = 1.75 * j;
+            bodies.push_back({x0 + u * c - v * s, y0 + u * s + v * c, angle, 0});
+        }
+    (void)side;
+    return bodies;
+}
+
+TEST(CorotatingMaps, AlignedLatticeIsAnisotropicInTheRodFrame) {
+    const double side = 100.0;
+    AnalysisOptions options;
+    options.corotating_r_max = 6.0;
+    options.corotating_r_bins = 12;     // 0.5 mm rings
+    options.corotating_theta_bins = 8;  // 45° sectors centred on ±22.5°, ±67.5°, ...
+    for (const double angle : {0.0, 0.9, -2.3}) {
+        const auto bodies = aligned_lattice(side, angle, 3.0, 97.0);  // across the corner
+        const auto setup = make_setup(side, bodies, 1);
+        CorotatingMapsObservable o(setup, resolved(setup, options));
+        const auto r = run_on(o, {make_frame(side, bodies)}, setup);
+        const MapResult& g = r.maps[0];
+        const MapResult& G = r.maps[1];
+        const auto at = [&](const MapResult& m, double radius, double theta) {
+            const auto k = static_cast<std::size_t>(radius / 0.5);
+            const auto t = static_cast<std::size_t>((theta + kPi) / (2 * kPi / 8));
+            return m.values[k * 8 + t];
+        };
+        // The neighbours across the axis (1.75 mm, θ' = ±90°) fill the sectors around ±90°; the
+        // sectors along the axis at that distance are empty; the next rod ahead is 5.25 mm away.
+        // A neighbour exactly at θ' = ±90° or 0 sits on a sector edge and may fall either side.
+        const auto either_side = [&](double radius, double theta) {
+            const double wrapped = theta + 0.2 > kPi ? theta + 0.2 - 2 * kPi : theta + 0.2;
+            return std::max(at(g, radius, theta - 0.2), at(g, radius, wrapped));
+        };
+        EXPECT_GT(either_side(1.75, kPi / 2), 10.0) << "angle " << angle;
+        EXPECT_GT(either_side(1.75, -kPi / 2), 10.0) << "angle " << angle;
+        EXPECT_EQ(at(g, 1.75, 0.2), 0.0) << "angle " << angle;
+        EXPECT_EQ(at(g, 1.75, -0.2), 0.0) << "angle " << angle;
+        EXPECT_EQ(at(g, 1.75, kPi - 0.2), 0.0) << "angle " << angle;
+        EXPECT_GT(either_side(5.25, 0.0), 10.0) << "angle " << angle;
+        EXPECT_GT(either_side(5.25, kPi - 0.0001), 10.0) << "angle " << angle;
+        // All rods point the same way: G = 1 wherever there are pairs.
+        for (std::size_t b = 0; b < G.values.size(); ++b) {
+            if (std::isfinite(G.values[b])) {
+                EXPECT_NEAR(G.values[b], 1.0, 1e-12);
+            }
+        }
+    }
+}
+
+// Points uniform in an ellipse with semi-axes (a, b) along and across the rods (θ = 0), at
+// random centres, one cluster per frame: the ellipse's autocorrelation has elliptical level
+// sets of aspect a/b, so the 70 % contour of g(r,θ) has σ_f = a/b.
+std::vector<AnalysisFrame> elliptical_clusters(double side, double a, double b, std::size_t frames,
+                                               double cx, double cy, SplitMix64& rng,
+                                               std::vector<Body>* first) {
+    std::vector<AnalysisFrame> out;
+    for (std::size_t k = 0; k < frames; ++k) {
+        std::vector<Body> bodies;
+        while (bodies.size() < 400) {
+            const double u = rng.uniform(-1, 1), v = rng.uniform(-1, 1);
+            if (u * u + v * v <= 1.0) bodies.push_back({cx + a * u, cy + b * v, 0.0, 0});
+        }
+        if (k == 0 && first) *first = bodies;
+        out.push_back(make_frame(side, bodies, k));
+    }
+    return out;
+}
+
+TEST(CorotatingMaps, PlantedEllipticalFlockGivesItsAspectRatio) {
+    const double side = 200.0;
+    for (const double aspect : {3.0, 0.5}) {
+        SplitMix64 rng(5);
+        std::vector<Body> first;
+        const double a = aspect >= 1 ? 12.0 : 4.0, b = aspect >= 1 ? 4.0 : 8.0;
+        const auto frames = elliptical_clusters(side, a, b, 100, 100.0, 100.0, rng, &first);
+        auto setup = make_setup(side, first, frames.size());
+        AnalysisOptions options;
+        options.corotating_r_max = 2.2 * std::max(a, b);
+        options.corotating_r_bins = 60;
+        options.corotating_theta_bins = 72;
+        CorotatingMapsObservable o(setup, resolved(setup, options));
+        const auto r = run_on(o, frames, setup);
+        // The tolerance: 10 %; binning (0.4 mm rings) and the noise of the map's
+        // maximum stay well inside it with 400 points × 100 frames.
+        EXPECT_NEAR(scalar(r, "sigma_f").estimate.mean, aspect, 0.1 * aspect);
+    }
+}
+
+TEST(CorotatingMaps, FlockAcrossThePeriodicCornerGivesTheSameMap) {
+    const double side = 200.0;
+    SplitMix64 rng_a(6), rng_b(6);
+    std::vector<Body> first;
+    const auto inside = elliptical_clusters(side, 10.0, 4.0, 20, 100.0, 100.0, rng_a, &first);
+    const auto corner = elliptical_clusters(side, 10.0, 4.0, 20, 0.0, 0.0, rng_b, nullptr);
+    const auto setup = make_setup(side, first, inside.size());
+    AnalysisOptions options;
+    options.corotating_r_max = 22.0;
+    CorotatingMapsObservable a(setup, resolved(setup, options)), b(setup, resolved(setup, options));
+    const auto ra = run_on(a, inside, setup), rb = run_on(b, corner, setup);
+    // The same relative positions up to rounding of the shift: at most a few of the 1.6·10⁵
+    // pairs per frame can change bin, so the maps agree to a part in 10⁴.
+    double diff = 0.0, total = 0.0;
+    for (std::size_t i = 0; i < ra.maps[0].values.size(); ++i) {
+        diff += std::abs(ra.maps[0].values[i] - rb.maps[0].values[i]);
+        total += ra.maps[0].values[i];
+    }
+    EXPECT_LT(diff / total, 1e-4);
+    EXPECT_NEAR(scalar(ra, "sigma_f").estimate.mean, scalar(rb, "sigma_f").estimate.mean, 1e-3);
+}
+
+TEST(Autocorrelation, FftMatchesTheDirectSum) {
+    SplitMix64 rng(7);
+    const std::size_t frames = 37, bodies = 5;
+    std::vector<float> angles(frames * bodies);
+    for (auto& a : angles)
+        a = static_cast<float>(rng.uniform(-kPi, kPi));
+    for (int m : {1, 2}) {
+        const auto c = orientation_autocorrelation(angles, frames, bodies, m, frames - 1);
+        for (std::size_t lag = 0; lag < frames; ++lag) {
+            double direct = 0.0;
+            for (std::size_t b = 0; b < bodies; ++b)
+                for (std::size_t t = 0; t + lag < frames; ++t)
+                    direct += std::cos(m * (static_cast<double>(angles[(t + lag) * bodies + b]) -
+                                            angles[t * bodies + b]));
+            direct /= static_cast<double>(bodies * (frames - lag));
+            EXPECT_NEAR(c[lag], direct, 1e-12);  // FFT rounding on O(1) sums of 37 terms
+        }
+    }
+}
+
+TEST(Autocorrelation, RecoversTheRotationalDiffusionOfARandomWalk) {
+    // θ(t + Δ) = θ(t) + sqrt(2 D_r Δ) ξ: C(t) = exp(−D_r t) and C₂(t) = exp(−4 D_r t).
+    const double dr = 0.8, interval = 0.01, side = 60.0;
+    const std::size_t rods = 300, frames = 600;
+    SplitMix64 rng(8);
+    std::vector<Body> bodies = uniform_bodies(rods, side, rng);
+    std::vector<AnalysisFrame> out;
+    const auto gaussian = [&] {  // Box–Muller from the project's portable generator
+        const double u = 1.0 - rng.uniform(), v = rng.uniform();
+        return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * kPi * v);
+    };
+    for (std::size_t k = 0; k < frames; ++k) {
+        out.push_back(make_frame(side, bodies, k, interval));
+        for (Body& b : bodies)
+            b.theta += std::sqrt(2.0 * dr * interval) * gaussian();
+    }
+    const auto setup = make_setup(side, bodies, frames, interval);
+    AutocorrelationObservable o(setup, resolved(setup));
+    const auto r = run_on(o, out, setup);
+    // The 5 %: with 300 rods × 600 origins the fit's statistical error is about 1 %.
+    EXPECT_NEAR(scalar(r, "D_r_polar").estimate.mean, dr, 0.05 * dr);
+    EXPECT_NEAR(scalar(r, "D_r_C2_polar").estimate.mean, dr, 0.05 * dr);
+    EXPECT_GT(scalar(r, "D_r_polar").estimate.error, 0.0);
+}
+
+TEST(Segregation, MixedCellsGiveZeroAndPureCellsGiveOne) {
+    // 10 × 10 cells of 9 mm (a = 2 ℓ_p) in a 90 mm box.
+    const double side = 90.0;
+    std::vector<Body> mixed, pure;
+    for (int cx = 0; cx < 10; ++cx)
+        for (int cy = 0; cy < 10; ++cy) {
+            const double x = 9.0 * cx + 4.5, y = 9.0 * cy + 4.5;
+            // Mixed: every cell 1 polar + 3 medium, the global fraction.
+            mixed.push_back({x, y, 0.0, 0});
+            for (int k = 0; k < 3; ++k)
+                mixed.push_back({x + k - 1.0, y + 2.0, 0.0, 1});
+            // Pure: a quarter of the cells polar only (a 5 × 5 block across the periodic edge).
+            const bool polar = (cx + 2) % 10 < 5 && (cy + 7) % 10 < 5;
+            for (int k = 0; k < 4; ++k)
+                pure.push_back({x + k - 1.5, y, 0.0, polar ? 0u : 1u});
+        }
+    for (const auto& [bodies, expected] : {std::pair{mixed, 0.0}, {pure, 1.0}}) {
+        const auto setup = make_setup(side, bodies, 1);
+        SegregationObservable o(setup, resolved(setup));
+        const auto r = run_on(o, {make_frame(side, bodies)}, setup);
+        EXPECT_NEAR(scalar(r, "Sigma_raw").estimate.mean, expected, 1e-12);
+    }
+}
+
+TEST(Segregation, RandomMixingIsZeroAfterTheBaseline) {
+    const double side = 90.0;
+    SplitMix64 rng(9);
+    std::vector<AnalysisFrame> frames;
+    std::vector<Body> first;
+    for (std::size_t k = 0; k < 40; ++k) {
+        auto bodies = uniform_bodies(100, side, rng, 0);
+        const auto medium = uniform_bodies(900, side, rng, 1);
+        bodies.insert(bodies.end(), medium.begin(), medium.end());
+        if (k == 0) first = bodies;
+        frames.push_back(make_frame(side, bodies, k));
+    }
+    const auto setup = make_setup(side, first, frames.size());
+    SegregationObservable o(setup, resolved(setup));
+    const auto r = run_on(o, frames, setup);
+    const Estimate sigma = scalar(r, "Sigma").estimate;
+    // Finite counts alone give a clearly non-zero raw Σ; the baseline takes it away to within
+    // the error bar (4 σ: 40 independent frames).
+    EXPECT_GT(scalar(r, "Sigma_raw").estimate.mean, 0.2);
+    EXPECT_NEAR(sigma.mean, 0.0, 4.0 * sigma.error);
+    EXPECT_LT(sigma.error, 0.02);
+}
+
+TEST(MediumVelocity, UniformFlowIsSeenAlongTheRodsAtEveryDistance) {
+    const double side = 60.0;
+    SplitMix64 rng(10);
+    std::vector<Body> bodies;
+    for (int i = 0; i < 20; ++i)  // polar rods along x, moving at 5 mm/s, some at the edges
+        bodies.push_back(
+            {i < 5 ? 0.2 : rng.uniform(0, side), rng.uniform(0, side), 0.0, 0, 5.0, 0.0});
+    for (int i = 0; i < 2000; ++i)  // the medium drifts at 2 mm/s along x
+        bodies.push_back(
+            {rng.uniform(0, side), rng.uniform(0, side), rng.uniform(-kPi, kPi), 1, 2.0, 0.0});
+    const auto setup = make_setup(side, bodies, 1);
+    AnalysisOptions options;
+    options.medium_distance = 20.0;
+    options.medium_bin = 2.0;
+    MediumVelocityObservable o(setup, resolved(setup, options));
+    const auto r = run_on(o, {make_frame(side, bodies)}, setup);
+    const TableResult& t = table(r, "medium_velocity");
+    for (const auto& row : t.rows) {
+        if (row[column(t, "pairs")] == 0) continue;
+        EXPECT_NEAR(row[column(t, "v_along")], 2.0, 1e-12);
+        EXPECT_NEAR(row[column(t, "v_across")], 0.0, 1e-12);
+        EXPECT_NEAR(row[column(t, "speed")], 2.0, 1e-12);
+        EXPECT_NEAR(row[column(t, "relative_v_along")], -3.0, 1e-12);
+    }
+    EXPECT_NEAR(scalar(r, "medium_v_along_at_d").estimate.mean, 2.0, 1e-12);
+    // Every medium body within r_max of a rod counts once per rod: 20 rods × 2000 bodies ×
+    // (π 20² / 60²) ≈ 6981 pairs expected, Poisson spread ≈ 84 (plus rod-position noise).
+    double pairs = 0.0;
+    for (const auto& row : t.rows)
+        pairs += row[column(t, "pairs")];
+    EXPECT_NEAR(pairs, 20.0 * 2000.0 * kPi * 400.0 / 3600.0, 600.0);
+}
+
+TEST(Flocks, LargestFlockAndLabelsOfPlantedClusters) {
+    const double side = 100.0;
+    std::vector<Body> bodies;
+    // A 7-rod flock across the x edge, a 4-rod flock, and 3 isolated rods.
+    for (int k = 0; k < 7; ++k)
+        bodies.push_back({std::fmod(98.5 + 1.0 * k, side), 50.0, 0.0, 0});
+    for (int k = 0; k < 4; ++k)
+        bodies.push_back({30.0 + 1.0 * k, 20.0, 0.0, 0});
+    for (int k = 0; k < 3; ++k)
+        bodies.push_back({70.0, 10.0 + 20.0 * k, 0.0, 0});
+    const auto setup = make_setup(side, bodies, 1);
+    FlockObservable o(setup, resolved(setup));
+    const auto r = run_on(o, {make_frame(side, bodies)}, setup);
+    EXPECT_EQ(scalar(r, "N_m").estimate.mean, 7.0);
+    EXPECT_EQ(scalar(r, "flock_count").estimate.mean, 2.0);
+    EXPECT_NEAR(scalar(r, "flock_fraction").estimate.mean, 11.0 / 14.0, 1e-15);
+    const LabelResult& labels = r.labels[0];
+    ASSERT_EQ(labels.labels.size(), bodies.size());
+    for (int k = 1; k < 7; ++k)
+        EXPECT_EQ(labels.labels[k], labels.labels[0]);
+    EXPECT_NE(labels.labels[7], labels.labels[0]);
+    for (std::size_t k = 11; k < 14; ++k)
+        EXPECT_EQ(labels.labels[k], -1);
+}
+
+}  // namespace
+}  // namespace rodsea::testing

@@ -1,0 +1,90 @@
+// Error bars and the steady-state start on series whose statistics are known exactly.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "rodsea/analysis/statistics.hpp"
+#include "rodsea/random.hpp"
+
+namespace rodsea {
+namespace {
+
+double gaussian(SplitMix64& rng) {
+    const double u = 1.0 - rng.uniform(), v = rng.uniform();
+    return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * std::numbers::pi * v);
+}
+
+// x_t = ρ x_{t−1} + ξ_t has τ_int = (1 + ρ) / (2 (1 − ρ)) exactly.
+std::vector<double> ar1(double rho, std::size_t n, std::uint64_t seed) {
+    SplitMix64 rng(seed);
+    std::vector<double> x(n);
+    double v = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+        x[i] = v = rho * v + gaussian(rng);
+    return x;
+}
+
+TEST(Statistics, IntegratedAutocorrelationTimeOfAnAr1Series) {
+    for (const double rho : {0.0, 0.5, 0.9}) {
+        const double expected = (1 + rho) / (2 * (1 - rho));
+        // Sokal's estimator has relative error ≈ sqrt(2(2W+1)/n) ≈ 3 % here: 10 % is safe.
+        EXPECT_NEAR(integrated_autocorrelation_time(ar1(rho, 200000, 11)), expected, 0.1 * expected)
+            << "rho " << rho;
+    }
+}
+
+TEST(Statistics, ErrorBarsCoverTheTrueMeanAtTheirNominalRate) {
+    // 200 independent AR(1) series (ρ = 0.8): the true mean is 0, and |mean| < error should hold
+    // for ≈ 68 % of them. Binomial spread of the count is ±6.6: accept 55–81 %.
+    int covered = 0;
+    for (std::uint64_t s = 0; s < 200; ++s) {
+        // Hashed seeds: consecutive SplitMix64 seeds would give the same stream shifted by one.
+        const Estimate e = estimate_mean(ar1(0.8, 4000, splitmix64(100 + s)));
+        if (std::abs(e.mean) < e.error) ++covered;
+    }
+    EXPECT_GE(covered, 110);
+    EXPECT_LE(covered, 162);
+}
+
+TEST(Statistics, UncorrelatedSeriesGetTheTextbookError) {
+    const auto x = ar1(0.0, 10000, 12);
+    const Estimate e = estimate_mean(x);
+    // Unit variance: error 1/sqrt(n) = 0.01, times sqrt(2 τ_int) with τ_int ≈ 0.5 ± 3 %.
+    EXPECT_NEAR(e.error, 0.01, 0.001);
+    EXPECT_NEAR(e.tau_int, 0.5, 0.05);
+}
+
+TEST(Statistics, ConstantSeriesHasZeroError) {
+    const std::vector<double> x(50, 0.25);
+    const Estimate e = estimate_mean(x);
+    EXPECT_EQ(e.mean, 0.25);
+    EXPECT_EQ(e.error, 0.0);
+}
+
+TEST(Statistics, SteadyStartSkipsAnExponentialTransient) {
+    // A relaxation 5·exp(−t/40) on top of unit white noise over 2000 samples: keeping samples
+    // before t ≈ 100 (where the bias is > 0.4 noise widths) inflates τ_int; starting after 400
+    // throws away data for nothing.
+    SplitMix64 rng(13);
+    std::vector<double> x;
+    for (int t = 0; t < 2000; ++t)
+        x.push_back(5.0 * std::exp(-t / 40.0) + gaussian(rng));
+    const std::size_t start = steady_start(x);
+    EXPECT_GE(start, 80u);
+    EXPECT_LE(start, 400u);
+    // Already steady: keep everything (up to the candidate grid's first steps).
+    EXPECT_LE(steady_start(ar1(0.0, 2000, 14)), 120u);
+}
+
+TEST(Statistics, BlockErrorIsTheStandardErrorOfTheBlocks) {
+    const std::vector<double> blocks{1.0, 2.0, 3.0, 4.0};
+    const Estimate e = estimate_from_blocks(2.5, blocks);
+    // Sample standard deviation sqrt(5/3), over sqrt(4).
+    EXPECT_NEAR(e.error, std::sqrt(5.0 / 3.0) / 2.0, 1e-15);
+    EXPECT_EQ(e.mean, 2.5);
+}
+
+}  // namespace
+}  // namespace rodsea
