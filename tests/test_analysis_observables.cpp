@@ -10,6 +10,7 @@
 #include "rodsea/analysis/corotating_maps_observable.hpp"
 #include "rodsea/analysis/flock_observable.hpp"
 #include "rodsea/analysis/medium_velocity_observable.hpp"
+#include "rodsea/analysis/observable_registry.hpp"
 #include "rodsea/analysis/order_parameter_observable.hpp"
 #include "rodsea/analysis/pair_correlation_observable.hpp"
 #include "rodsea/analysis/segregation_observable.hpp"
@@ -390,6 +391,54 @@ TEST(Flocks, LargestFlockAndLabelsOfPlantedClusters) {
     EXPECT_NE(labels.labels[7], labels.labels[0]);
     for (std::size_t k = 11; k < 14; ++k)
         EXPECT_EQ(labels.labels[k], -1);
+}
+
+TEST(PeriodicWrap, EveryObservableIsInvariantUnderAShiftOfTheWholeFrame) {
+    // A clustered mixture, then the same frame shifted by whole segregation cells (9 mm) so that
+    // clusters straddle the edges: every scalar and every table entry must be the same.
+    const double side = 90.0;
+    SplitMix64 rng(21);
+    std::vector<Body> bodies;
+    for (int c = 0; c < 6; ++c) {
+        const double cx = rng.uniform(0, side), cy = rng.uniform(0, side);
+        for (int k = 0; k < 15; ++k)
+            bodies.push_back({cx + rng.uniform(-3, 3), cy + rng.uniform(-3, 3),
+                              0.3 * c + rng.uniform(-0.2, 0.2), 0, rng.uniform(-9, 9),
+                              rng.uniform(-9, 9)});
+    }
+    for (int k = 0; k < 800; ++k)
+        bodies.push_back({rng.uniform(0, side), rng.uniform(0, side), rng.uniform(-kPi, kPi), 1,
+                          rng.uniform(-5, 5), rng.uniform(-5, 5)});
+    std::vector<Body> shifted = bodies;
+    for (Body& b : shifted)
+        b.x += 27.0, b.y += 63.0;
+    const auto setup = make_setup(side, bodies, 1);
+    AnalysisOptions options;
+    options.medium_distance = 30.0;
+    for (const std::string name :
+         {"order", "pair", "corotating", "flocks", "segregation", "medium_velocity"}) {
+        const auto a = make_observable(name, setup, resolved(setup, options));
+        const auto b = make_observable(name, setup, resolved(setup, options));
+        const auto ra = run_on(*a, {make_frame(side, bodies)}, setup);
+        const auto rb = run_on(*b, {make_frame(side, shifted)}, setup);
+        ASSERT_EQ(ra.scalars.size(), rb.scalars.size());
+        // Shifting rounds positions by an ulp: a pair could change bin only if its distance lay
+        // within ~1e-14 mm of an edge, so values agree to rounding.
+        for (std::size_t k = 0; k < ra.scalars.size(); ++k)
+            EXPECT_NEAR(ra.scalars[k].estimate.mean, rb.scalars[k].estimate.mean, 1e-9)
+                << name << " " << ra.scalars[k].name;
+        for (std::size_t t = 0; t < ra.tables.size(); ++t)
+            for (std::size_t row = 0; row < ra.tables[t].rows.size(); ++row)
+                for (std::size_t c = 0; c < ra.tables[t].rows[row].size(); ++c) {
+                    const double x = ra.tables[t].rows[row][c], y = rb.tables[t].rows[row][c];
+                    if (std::isnan(x)) {
+                        EXPECT_TRUE(std::isnan(y)) << name;
+                    } else {
+                        EXPECT_NEAR(x, y, 1e-9 * std::max(1.0, std::abs(x)))
+                            << name << " " << ra.tables[t].name << " row " << row << " col " << c;
+                    }
+                }
+    }
 }
 
 }  // namespace
