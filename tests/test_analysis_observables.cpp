@@ -182,6 +182,37 @@ TEST(CorotatingMaps, AlignedLatticeIsAnisotropicInTheRodFrame) {
     }
 }
 
+TEST(CorotatingMaps, NeighbourAheadAndLeftLandsInItsBinOnly) {
+    // Two parallel rods, the second 2 mm ahead of the first (towards its thin end) and 1 mm to
+    // its left: in the first rod's frame it sits at θ' = atan2(1, 2), and the first rod sits at
+    // atan2(−1, −2) in the second's. A mirrored frame or a reversed axis puts them elsewhere.
+    const double side = 50.0;
+    AnalysisOptions options;
+    options.corotating_r_max = 4.0;
+    options.corotating_r_bins = 8;
+    options.corotating_theta_bins = 36;
+    for (const double angle : {0.0, 1.1, -2.5, 3.0}) {
+        const double c = std::cos(angle), s = std::sin(angle);
+        const std::vector<Body> bodies{{49.5, 0.3, angle, 0},
+                                       {49.5 + 2 * c - 1 * s, 0.3 + 2 * s + 1 * c, angle, 0}};
+        const auto setup = make_setup(side, bodies, 1);
+        CorotatingMapsObservable o(setup, resolved(setup, options));
+        const auto r = run_on(o, {make_frame(side, bodies)}, setup);
+        const auto bin_of = [&](double radius, double theta) {
+            return static_cast<std::size_t>(radius / 0.5) * 36 +
+                   static_cast<std::size_t>((theta + kPi) / (2 * kPi / 36));
+        };
+        const std::size_t ahead = bin_of(std::sqrt(5.0), std::atan2(1.0, 2.0));
+        const std::size_t behind = bin_of(std::sqrt(5.0), std::atan2(-1.0, -2.0));
+        for (std::size_t b = 0; b < r.maps[0].values.size(); ++b) {
+            if (b == ahead || b == behind)
+                EXPECT_GT(r.maps[0].values[b], 0.0) << "angle " << angle;
+            else
+                EXPECT_EQ(r.maps[0].values[b], 0.0) << "angle " << angle << " bin " << b;
+        }
+    }
+}
+
 // Points uniform in an ellipse with semi-axes (a, b) along and across the rods (θ = 0), at
 // random centres, one cluster per frame: the ellipse's autocorrelation has elliptical level
 // sets of aspect a/b, so the 70 % contour of g(r,θ) has σ_f = a/b.
@@ -366,6 +397,35 @@ TEST(MediumVelocity, UniformFlowIsSeenAlongTheRodsAtEveryDistance) {
     for (const auto& row : t.rows)
         pairs += row[column(t, "pairs")];
     EXPECT_NEAR(pairs, 20.0 * 2000.0 * kPi * 400.0 / 3600.0, 600.0);
+}
+
+TEST(MediumVelocity, CrossFlowIsResolvedAlongAndAcrossTheRodAxis) {
+    // Rods at 0.6 rad moving at (5, 0) mm/s in a medium flowing at (0, 3) mm/s: along the axis
+    // 3 sin 0.6, across 3 cos 0.6; relative to the rod (−5, 3), speed √34.
+    const double side = 60.0;
+    SplitMix64 rng(22);
+    std::vector<Body> bodies;
+    for (int i = 0; i < 10; ++i)
+        bodies.push_back({rng.uniform(0, side), rng.uniform(0, side), 0.6, 0, 5.0, 0.0});
+    for (int i = 0; i < 1000; ++i)
+        bodies.push_back({rng.uniform(0, side), rng.uniform(0, side), 0.0, 1, 0.0, 3.0});
+    const auto setup = make_setup(side, bodies, 1);
+    AnalysisOptions options;
+    options.medium_distance = 20.0;
+    MediumVelocityObservable o(setup, resolved(setup, options));
+    const auto r = run_on(o, {make_frame(side, bodies)}, setup);
+    const TableResult& t = table(r, "medium_velocity");
+    for (const auto& row : t.rows) {
+        if (row[column(t, "pairs")] == 0) continue;
+        EXPECT_NEAR(row[column(t, "v_along")], 3.0 * std::sin(0.6), 1e-12);
+        EXPECT_NEAR(row[column(t, "v_across")], 3.0 * std::cos(0.6), 1e-12);
+        EXPECT_NEAR(row[column(t, "speed")], 3.0, 1e-12);
+        EXPECT_NEAR(row[column(t, "relative_v_along")], -5.0 * std::cos(0.6) + 3.0 * std::sin(0.6),
+                    1e-12);
+        EXPECT_NEAR(row[column(t, "relative_speed")], std::sqrt(34.0), 1e-12);
+    }
+    EXPECT_NEAR(scalar(r, "medium_speed_at_d").estimate.mean, std::sqrt(34.0), 1e-12);
+    EXPECT_NEAR(scalar(r, "medium_lab_speed_at_d").estimate.mean, 3.0, 1e-12);
 }
 
 TEST(Flocks, LargestFlockAndLabelsOfPlantedClusters) {

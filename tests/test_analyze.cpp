@@ -2,6 +2,7 @@
 // the files are readable from Python, and bad input is refused before anything is written.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -28,7 +29,7 @@ std::string config(bool with_polar) {
     return s.str();
 }
 
-// Two small runs shared by every test of the suite: 21 frames each, a second of simulation.
+// Two small runs shared by every test of the suite: 21 frames each over 0.04 s.
 class AnalyzeCli : public ::testing::Test {
   protected:
     static void SetUpTestSuite() {
@@ -68,6 +69,25 @@ TEST_F(AnalyzeCli, SteadyPolarOrderIsTheMeanOfTheRunsOwnSeries) {
     // they agree to float rounding (1e-6 relative in each angle).
     ASSERT_EQ(a.results[0].scalars[0].name, "P_polar");
     EXPECT_NEAR(a.results[0].scalars[0].estimate.mean, mean, 1e-5);
+}
+
+TEST_F(AnalyzeCli, OneFrameWindowGivesValuesWithoutErrorBars) {
+    // One steady frame: means exist, error bars cannot (NaN, JSON null), time blocks shrink to
+    // the frames there are, and C(t) needs two frames so it is skipped with its reason.
+    AnalyzeRequest request;
+    request.from = 0.04;
+    const PreparedRun run = prepare_run(mixture(), request);
+    EXPECT_EQ(run.setup.steady_frames, 1u);
+    EXPECT_EQ(run.setup.blocks, 1);
+    ASSERT_FALSE(run.skipped.empty());
+    EXPECT_NE(run.skipped[0].find("autocorrelation"), std::string::npos);
+    std::ostringstream log;
+    const RunAnalysis a = analyze_run(run, log, true);
+    for (const ObservableResults& r : a.results)
+        for (const ScalarResult& s : r.scalars) {
+            if (s.name == "Sigma_baseline") continue;  // not a time average
+            EXPECT_TRUE(std::isnan(s.estimate.error)) << s.name;
+        }
 }
 
 TEST_F(AnalyzeCli, WritesJsonCsvAndHdf5ThatPythonReads) {

@@ -104,6 +104,10 @@ AnalysisOptions resolve_analysis_options(AnalysisOptions o, const AnalysisSetup&
     const auto pick = [](double& v, double automatic) {
         if (std::isnan(v)) v = automatic;
     };
+    if (!std::isnan(o.autocorrelation_max_lag) && o.autocorrelation_max_lag < setup.frame_interval)
+        throw InvalidParameter(
+            "autocorrelation.max_lag", format_number(o.autocorrelation_max_lag) + " s",
+            "at least one frame interval, " + format_number(setup.frame_interval) + " s");
     pick(o.pair_r_max, std::min(half, 10.0 * lp));
     pick(o.medium_pair_r_max, std::min(half, 15.0));
     pick(o.corotating_r_max, std::min(half, 5.0 * lp));
@@ -121,9 +125,11 @@ AnalysisOptions resolve_analysis_options(AnalysisOptions o, const AnalysisSetup&
         // Beyond half the box the minimum image is not unique: a pair would count twice.
         if (value > half) throw InvalidParameter(key, format_number(value) + " mm", half_text);
     }
-    if (o.pair_bin >= o.pair_r_max)
-        throw InvalidParameter("pair.bin", format_number(o.pair_bin) + " mm",
-                               "less than pair.r_max = " + format_number(o.pair_r_max) + " mm");
+    if (o.pair_bin >= std::min(o.pair_r_max, o.medium_pair_r_max))
+        throw InvalidParameter(
+            "pair.bin", format_number(o.pair_bin) + " mm",
+            "less than pair.r_max = " + format_number(o.pair_r_max) +
+                " mm and pair.medium_r_max = " + format_number(o.medium_pair_r_max) + " mm");
     if (o.medium_bin >= o.medium_r_max)
         throw InvalidParameter(
             "medium_velocity.bin", format_number(o.medium_bin) + " mm",

@@ -1,5 +1,8 @@
 // The files of `rodsea analyze` (layout: docs/analysis.md). Each is written atomically, and
 // analysis.json last, so its presence means the set is complete.
+#include <unistd.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -22,6 +25,18 @@ std::string csv_number(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.17g", v);
     return buf;
+}
+
+// RFC 4180: a field with a comma, quote or newline is quoted, quotes doubled.
+std::string csv_quoted(const std::string& text) {
+    if (text.find_first_of(",\"\n") == std::string::npos) return text;
+    std::string q(1, '"');
+    for (char c : text) {
+        q.push_back(c);
+        if (c == '"') q.push_back('"');
+    }
+    q.push_back('"');
+    return q;
 }
 
 std::string csv_text(const TableResult& t) {
@@ -80,6 +95,8 @@ void write_estimate(JsonWriter& j, const ScalarResult& s) {
         .value("tau_int_samples", s.estimate.tau_int)
         .value("n_eff", s.estimate.n_eff)
         .value("samples", static_cast<long long>(s.estimate.samples))
+        .value("error_method", s.estimate.from_blocks ? "time blocks" : "tau_int")
+        .value("short_series", s.estimate.short_series())
         .value("description", s.description)
         .end_object();
 }
@@ -111,13 +128,9 @@ void write_run_parameters(JsonWriter& j, const PreparedRun& run) {
 
 }  // namespace
 
-std::vector<fs::path> write_run_analysis(const RunAnalysis& a, const fs::path& out_dir) {
-    std::error_code ec;
-    fs::create_directories(out_dir, ec);
-    if (ec || !fs::is_directory(out_dir))
-        throw FileError(out_dir.string(), "cannot create the output directory (" +
-                                              (ec ? ec.message() : "not a directory") + ")");
-    std::vector<fs::path> files;
+namespace {
+
+void write_analysis_files(const RunAnalysis& a, const fs::path& out_dir) {
     JsonWriter j;
     j.begin_object()
         .value("creator", std::string("rodsea ") + RODSEA_VERSION)
@@ -161,7 +174,6 @@ std::vector<fs::path> write_run_analysis(const RunAnalysis& a, const fs::path& o
         for (const TableResult& t : r.tables) {
             const fs::path file = out_dir / (t.name + ".csv");
             write_file_atomically(file, csv_text(t));
-            files.push_back(file);
             j.begin_object(t.name)
                 .value("file", file.filename().string())
                 .value("description", t.description);
@@ -193,12 +205,58 @@ std::vector<fs::path> write_run_analysis(const RunAnalysis& a, const fs::path& o
     for (const std::string& s : a.run.skipped)
         j.element(s);
     j.end_array().value("seconds", a.seconds).end_object();
-    const fs::path h5 = out_dir / "analysis.h5";
-    write_hdf5(a, h5);
-    files.push_back(h5);
-    const fs::path json = out_dir / "analysis.json";
-    write_file_atomically(json, j.str());
-    files.push_back(json);
+    write_hdf5(a, out_dir / "analysis.h5");
+    write_file_atomically(out_dir / "summary.csv", summary_table_csv({a}));
+    write_file_atomically(out_dir / "analysis.json", j.str());
+}
+
+}  // namespace
+
+void check_analysis_output_directory(const fs::path& out_dir) {
+    std::error_code ec;
+    if (!fs::exists(out_dir, ec)) return;
+    if (!fs::is_directory(out_dir))
+        throw FileError(out_dir.string(), "exists and is not a directory");
+    if (!fs::is_empty(out_dir) && !fs::exists(out_dir / "analysis.json"))
+        throw FileError(out_dir.string(),
+                        "exists, is not empty and holds no earlier analysis (analysis.json): "
+                        "refusing to replace it; choose another --out");
+}
+
+std::vector<fs::path> write_run_analysis(const RunAnalysis& a, const fs::path& out_dir) {
+    check_analysis_output_directory(out_dir);
+    // The whole set is written into a fresh directory next to the target and swapped in, so a
+    // reader never sees a mix of two analyses or files left from an earlier, larger one.
+    std::string suffix = ".";  // (not "." + ...: GCC 12 warns falsely, -Werror=restrict)
+    suffix += std::to_string(::getpid());
+    const fs::path parent = out_dir.has_parent_path() ? out_dir.parent_path() : fs::path(".");
+    const fs::path staging = parent / (out_dir.filename().string() + ".tmp" + suffix);
+    const fs::path previous = parent / (out_dir.filename().string() + ".old" + suffix);
+    std::error_code ec;
+    fs::remove_all(staging, ec);
+    fs::create_directories(staging, ec);
+    if (ec || !fs::is_directory(staging))
+        throw FileError(staging.string(), "cannot create the output directory (" +
+                                              (ec ? ec.message() : "not a directory") + ")");
+    try {
+        write_analysis_files(a, staging);
+    } catch (...) {
+        fs::remove_all(staging, ec);
+        throw;
+    }
+    const bool replacing = fs::exists(out_dir);
+    if (replacing) fs::rename(out_dir, previous, ec);
+    if (!ec) fs::rename(staging, out_dir, ec);
+    if (ec) {
+        if (replacing && !fs::exists(out_dir)) fs::rename(previous, out_dir, ec);
+        fs::remove_all(staging, ec);
+        throw FileError(out_dir.string(), "cannot move the new analysis into place");
+    }
+    fs::remove_all(previous, ec);
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(out_dir))
+        files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
     return files;
 }
 
@@ -216,7 +274,7 @@ std::string summary_table_csv(const std::vector<RunAnalysis>& runs) {
     for (const RunAnalysis& a : runs) {
         const EngineParameters& e = a.run.plan.engine;
         std::map<std::string, std::string> row;
-        row["run"] = a.run.run_dir.string();
+        row["run"] = csv_quoted(a.run.run_dir.string());
         row["box_lx_mm"] = csv_number(e.box.lx);
         row["box_ly_mm"] = csv_number(e.box.ly);
         row["gamma"] = csv_number(e.drive.gamma);

@@ -109,13 +109,19 @@ int analyze_command(const std::vector<std::string>& args, std::ostream& out, std
                                "each of several runs writes into its own RUN_DIR/analysis");
 
     std::vector<PreparedRun> prepared;
-    for (const auto& run : runs)
+    for (const auto& run : runs) {
         prepared.push_back(prepare_run(run, request));
-    const std::filesystem::path table_path =
-        table
-            ? *table
-            : (runs.size() == 1 ? out_dir.value_or(prepared[0].run_dir / "analysis") / "summary.csv"
-                                : std::filesystem::path("analysis-summary.csv"));
+        check_analysis_output_directory(out_dir.value_or(prepared.back().run_dir / "analysis"));
+    }
+    // One run's row is in its own summary.csv; a separate table only when asked or for several.
+    std::optional<std::filesystem::path> table_path = table;
+    if (!table_path && runs.size() > 1) table_path = "analysis-summary.csv";
+    if (table_path) {
+        const std::filesystem::path parent =
+            table_path->has_parent_path() ? table_path->parent_path() : ".";
+        if (!std::filesystem::is_directory(parent))
+            throw FileError(table_path->string(), "its directory does not exist");
+    }
 
     std::vector<RunAnalysis> analyses;
     for (const PreparedRun& run : prepared) {
@@ -125,16 +131,24 @@ int analyze_command(const std::vector<std::string>& args, std::ostream& out, std
         if (!quiet) {
             log << "  wrote " << (dir / "analysis.json").string() << " in "
                 << format_number(std::round(a.seconds * 100) / 100) << " s\n";
-            for (const ObservableResults& r : a.results)
+            for (const ObservableResults& r : a.results) {
                 for (const ScalarResult& s : r.scalars)
                     log << "    " << s.name << " = " << format_number(s.estimate.mean) << " ± "
                         << format_number(s.estimate.error) << (s.unit.empty() ? "" : " ") << s.unit
+                        << (s.estimate.short_series()
+                                ? "  (window < 50 τ_int: the error bar is an underestimate)"
+                                : "")
                         << "\n";
+                for (const std::string& n : r.notes)
+                    log << "    note (" << r.observable << "): " << n << "\n";
+            }
         }
         analyses.push_back(std::move(a));
     }
-    write_file_atomically(table_path, summary_table_csv(analyses));
-    if (!quiet) log << "table: " << table_path.string() << "\n";
+    if (table_path) {
+        write_file_atomically(*table_path, summary_table_csv(analyses));
+        if (!quiet) log << "table: " << table_path->string() << "\n";
+    }
     return 0;
 }
 

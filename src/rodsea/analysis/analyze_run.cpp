@@ -1,5 +1,6 @@
 #include "rodsea/analysis/analyze_run.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <ostream>
@@ -84,6 +85,15 @@ PreparedRun prepare_run(const fs::path& run, const AnalyzeRequest& request) {
         p.setup.frame_interval = p.plan.control.output_interval;
     }
 
+    // Every frame must be complete before any work starts: the last one is read in full (a
+    // file cut short fails here, not halfway through a multi-run analysis), and its body count
+    // must be the config's.
+    const BodyState last = reader.frame(frames - 1);
+    if (static_cast<long long>(last.size()) != p.setup.total_count())
+        throw FileError(p.trajectory.string(), "frames hold " + std::to_string(last.size()) +
+                                                   " bodies, the stored config " +
+                                                   std::to_string(p.setup.total_count()));
+
     SteadyWindow& w = p.window;
     if (request.from) {
         const double from = *request.from;
@@ -101,6 +111,11 @@ PreparedRun prepare_run(const fs::path& run, const AnalyzeRequest& request) {
         w.basis = steady_basis(p.setup);
         if (!w.basis.empty()) {
             const std::vector<double> series = reader.series(w.basis);
+            if (series.size() != frames)
+                throw FileError(p.trajectory.string(), "the time series " + w.basis + " has " +
+                                                           std::to_string(series.size()) +
+                                                           " rows for " + std::to_string(frames) +
+                                                           " frames");
             w.first_frame = steady_start(series);
             const std::span<const double> kept(
                 series.begin() + static_cast<std::ptrdiff_t>(w.first_frame), series.end());
@@ -110,6 +125,9 @@ PreparedRun prepare_run(const fs::path& run, const AnalyzeRequest& request) {
     }
     w.from = p.times[w.first_frame];
     p.setup.steady_frames = frames - w.first_frame;
+    // Blocks need at least one frame each; fewer than two blocks leave no error bar (NaN).
+    p.setup.blocks = static_cast<int>(std::max<std::size_t>(
+        1, std::min<std::size_t>(static_cast<std::size_t>(p.setup.blocks), p.setup.steady_frames)));
     p.options = resolve_analysis_options(request.options, p.setup);
     p.observables = select_observables(request.observables, p.setup, &p.skipped);
     for (const std::string& name : p.observables)  // construction checks the parameters

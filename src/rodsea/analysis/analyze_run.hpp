@@ -52,8 +52,12 @@ PreparedRun prepare_run(const std::filesystem::path& run, const AnalyzeRequest& 
 // Prints what it will do to `log`, then a progress line every 10 % of the frames (unless quiet).
 RunAnalysis analyze_run(const PreparedRun& run, std::ostream& log, bool quiet);
 
-// analysis.json, one CSV per table and analysis.h5 (maps, labels) in `out_dir`, each written
-// atomically. Returns the files written.
+// Throws FileError when `out_dir` exists and is not an earlier analysis (a directory holding
+// analysis.json, or empty): an analysis replaces its own output only.
+void check_analysis_output_directory(const std::filesystem::path& out_dir);
+
+// analysis.json, one CSV per table, analysis.h5 (maps, labels) and summary.csv in `out_dir`,
+// written into a staging directory and swapped in whole. Returns the files.
 std::vector<std::filesystem::path> write_run_analysis(const RunAnalysis& analysis,
                                                       const std::filesystem::path& out_dir);
 

@@ -1,5 +1,6 @@
 #include "rodsea/analysis/autocorrelation_observable.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "rodsea/error.hpp"
@@ -57,7 +58,9 @@ ObservableResults AutocorrelationObservable::finish() {
     ObservableResults r;
     r.observable = name();
     const double dt = setup_.frame_interval;
-    const auto lags = static_cast<std::size_t>(std::llround(max_lag_ / dt));
+    // The window caps the lag: a longer one has no origin to start from.
+    const auto lags = std::min(static_cast<std::size_t>(std::llround(max_lag_ / dt)),
+                               frames_ > 0 ? frames_ - 1 : 0);
     r.parameters = {{"max_lag", static_cast<double>(lags) * dt, "s"},
                     {"fit_floor", fit_floor_, ""},
                     {"frame_interval", dt, "s"}};

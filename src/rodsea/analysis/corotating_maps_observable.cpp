@@ -70,7 +70,7 @@ double CorotatingMapsObservable::n_avg(const FlockContour& c) const {
     // density g is normalised by.
     const double rho =
         static_cast<double>(setup_.polar_count() - 1) / (setup_.box.lx * setup_.box.ly);
-    return 1.0 + rho * c.enclosed_g_area;
+    return c.level > 0.0 ? 1.0 + rho * c.enclosed_g_area : std::nan("");  // no pairs, no flock
 }
 
 ObservableResults CorotatingMapsObservable::finish() {
@@ -84,10 +84,12 @@ ObservableResults CorotatingMapsObservable::finish() {
     std::vector<double> G(nr_ * nt_, std::nan(""));
     for (std::size_t b = 0; b < G.size(); ++b)
         if (all_.pairs[b] > 0.0) G[b] = all_.cos_sum[b] / all_.pairs[b];
-    const FlockContour contour = flock_contour(g, r_edges_, theta_edges_, level_);
+    const FlockContour contour =
+        flock_contour(g, r_edges_, theta_edges_, level_, all_.pairs, kMinPairsForMaximum);
     std::vector<double> sigma_blocks, navg_blocks;
     for (const Maps& m : blocks_) {
-        const FlockContour cb = flock_contour(pair_density(m), r_edges_, theta_edges_, level_);
+        const FlockContour cb = flock_contour(pair_density(m), r_edges_, theta_edges_, level_,
+                                              m.pairs, kMinPairsForMaximum);
         sigma_blocks.push_back(cb.aspect_ratio);
         navg_blocks.push_back(n_avg(cb));
     }
@@ -97,6 +99,20 @@ ObservableResults CorotatingMapsObservable::finish() {
                          estimate_from_blocks(contour.aspect_ratio, sigma_blocks)});
     r.scalars.push_back({"N_avg", "", "polar rods inside that contour (reference rod included)",
                          estimate_from_blocks(n_avg(contour), navg_blocks)});
+    double pairs = 0.0;
+    for (double p : all_.pairs)
+        pairs += p;
+    if (pairs == 0.0)
+        r.notes.push_back("no two polar rods closer than corotating.r_max = " +
+                          format_number(r_max_) + " mm: the maps are empty, σ_f and N_avg null");
+    else if (contour.sparse)
+        r.notes.push_back("no bin of g(r,θ) holds " + format_number(kMinPairsForMaximum) +
+                          " pairs: its maximum, and so the contour, is noisy; use more frames or "
+                          "fewer bins");
+    if (contour.empty_rays > 0)
+        r.notes.push_back(std::to_string(contour.empty_rays) + " of " + std::to_string(nt_) +
+                          " directions never reach the contour level: the contour passes "
+                          "through the reference rod there");
     if (!contour.closed)
         r.notes.push_back(
             "the g(r,θ) contour reaches corotating.r_max: the flock is larger than "

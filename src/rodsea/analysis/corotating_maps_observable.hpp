@@ -17,6 +17,10 @@ class CorotatingMapsObservable final : public Observable {
     ObservableResults finish() override;
 
   private:
+    // The contour's level is a fraction of the map's maximum, so the maximum is taken over bins
+    // with at least this many pairs (Poisson noise ≤ 20 %), not over a nearly empty inner bin.
+    static constexpr double kMinPairsForMaximum = 25.0;
+
     struct Maps {
         std::vector<double> pairs, cos_sum;
         double reference_pairs = 0.0;  // Σ over frames of N (N − 1)

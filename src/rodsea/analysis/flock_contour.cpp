@@ -7,12 +7,19 @@
 namespace rodsea {
 
 FlockContour flock_contour(std::span<const double> g, std::span<const double> r_edges,
-                           std::span<const double> theta_edges, double level_fraction) {
+                           std::span<const double> theta_edges, double level_fraction,
+                           std::span<const double> pairs, double min_pairs) {
     const std::size_t nr = r_edges.size() - 1, nt = theta_edges.size() - 1;
     FlockContour c;
     double gmax = 0.0;
-    for (double v : g)
-        if (std::isfinite(v)) gmax = std::max(gmax, v);
+    for (std::size_t b = 0; b < g.size(); ++b)
+        if (std::isfinite(g[b]) && (pairs.empty() || pairs[b] >= min_pairs))
+            gmax = std::max(gmax, g[b]);
+    if (gmax == 0.0 && !pairs.empty()) {
+        c.sparse = true;
+        for (double v : g)
+            if (std::isfinite(v)) gmax = std::max(gmax, v);
+    }
     c.level = level_fraction * gmax;
     const auto at = [&](std::size_t k, std::size_t t) {
         const double v = g[k * nt + t];
@@ -26,6 +33,7 @@ FlockContour flock_contour(std::span<const double> g, std::span<const double> r_
         std::size_t first = 0;
         while (first < nr && at(first, t) < c.level)
             ++first;
+        if (first == nr) ++c.empty_rays;
         if (gmax > 0.0 && first < nr) {
             std::size_t last = first;
             while (last + 1 < nr && at(last + 1, t) >= c.level)

@@ -16,10 +16,15 @@ struct FlockContour {
     double aspect_ratio = 0.0;     // σ_f = x' extent / y' extent; NaN when degenerate
     double enclosed_g_area = 0.0;  // Σ g · bin area inside the contour, mm²
     bool closed = true;            // false: some ray stays above the level to the map's edge
+    int empty_rays = 0;            // rays that never reach the level
+    bool sparse = false;           // no bin had `min_pairs`: the maximum is over every bin
 };
 
 // `g` is [r_bin * theta_bins + theta_bin]; bins without data are NaN and count as below level.
+// The maximum that sets the level is taken over bins whose `pairs` reach `min_pairs` (all bins
+// when `pairs` is empty or none does).
 FlockContour flock_contour(std::span<const double> g, std::span<const double> r_edges,
-                           std::span<const double> theta_edges, double level_fraction);
+                           std::span<const double> theta_edges, double level_fraction,
+                           std::span<const double> pairs = {}, double min_pairs = 0.0);
 
 }  // namespace rodsea

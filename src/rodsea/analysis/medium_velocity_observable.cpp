@@ -23,7 +23,7 @@ void MediumVelocityObservable::compute(const FrameContext& context) {
     // beyond the profile has no bin.
     const std::size_t d_bin =
         d_ <= r_max_ ? std::min(bins_ - 1, static_cast<std::size_t>(d_ / bin_)) : bins_;
-    double at_d_pairs = 0.0, at_d_along = 0.0, at_d_speed = 0.0;
+    double at_d_pairs = 0.0, at_d_along = 0.0, at_d_speed = 0.0, at_d_relative = 0.0;
     // The pair loop visits ~10⁷ pairs per frame of the largest system: keep it to sums.
     std::vector<double> speed(f.size());
     for (std::uint32_t j : medium.members())
@@ -43,18 +43,21 @@ void MediumVelocityObservable::compute(const FrameContext& context) {
             row[kAlong] += along;
             row[kAcross] += across;
             row[kSpeed] += speed[j];
+            const double relative_speed = std::sqrt(rx * rx + ry * ry);
             row[kRelativeAlong] += rx * c + ry * s;
-            row[kRelativeSpeed] += std::sqrt(rx * rx + ry * ry);
+            row[kRelativeSpeed] += relative_speed;
             if (b == d_bin) {
                 at_d_pairs += 1.0;
                 at_d_along += along;
                 at_d_speed += speed[j];
+                at_d_relative += relative_speed;
             }
         });
     }
     if (at_d_pairs > 0.0) {
         along_at_d_.push_back(at_d_along / at_d_pairs);
         speed_at_d_.push_back(at_d_speed / at_d_pairs);
+        relative_speed_at_d_.push_back(at_d_relative / at_d_pairs);
     }
 }
 
@@ -88,8 +91,11 @@ ObservableResults MediumVelocityObservable::finish() {
     r.scalars.push_back({"medium_v_along_at_d", "mm/s",
                          "medium velocity along the polar rod's axis" + at,
                          estimate_mean(along_at_d_)});
-    r.scalars.push_back(
-        {"medium_speed_at_d", "mm/s", "medium speed" + at, estimate_mean(speed_at_d_)});
+    r.scalars.push_back({"medium_speed_at_d", "mm/s",
+                         "medium speed relative to the polar rod (its comoving frame)" + at,
+                         estimate_mean(relative_speed_at_d_)});
+    r.scalars.push_back({"medium_lab_speed_at_d", "mm/s", "medium speed in the lab frame" + at,
+                         estimate_mean(speed_at_d_)});
     return r;
 }
 

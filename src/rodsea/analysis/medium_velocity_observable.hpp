@@ -23,7 +23,7 @@ class MediumVelocityObservable final : public Observable {
     double d_, r_max_, bin_;
     std::size_t bins_;
     std::vector<double> sums_;  // [bin][column]
-    std::vector<double> along_at_d_, speed_at_d_;
+    std::vector<double> along_at_d_, speed_at_d_, relative_speed_at_d_;
 };
 
 }  // namespace rodsea

@@ -78,7 +78,8 @@ ObservableResults SegregationObservable::finish() {
     ObservableResults r;
     r.observable = name();
     r.parameters = {{"cell", cell_, "mm"},
-                    {"cell_used", setup_.box.lx / grid_.nx, "mm"},
+                    {"cell_used_x", setup_.box.lx / grid_.nx, "mm"},
+                    {"cell_used_y", setup_.box.ly / grid_.ny, "mm"},
                     {"cells", static_cast<double>(grid_.nx * grid_.ny), ""},
                     {"baseline_samples", static_cast<double>(samples_), ""}};
     std::vector<double> corrected;

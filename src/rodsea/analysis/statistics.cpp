@@ -57,6 +57,7 @@ Estimate estimate_mean(std::span<const double> x) {
 
 Estimate estimate_from_blocks(double full, std::span<const double> blocks) {
     Estimate e;
+    e.from_blocks = true;
     e.mean = full;
     e.samples = blocks.size();
     e.n_eff = static_cast<double>(blocks.size());

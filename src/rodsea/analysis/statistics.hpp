@@ -16,6 +16,13 @@ struct Estimate {
     double tau_int = 0.5;  // integrated autocorrelation time, in samples (0.5: uncorrelated)
     double n_eff = 0.0;    // statistically independent samples, n / (2 τ_int)
     std::size_t samples = 0;
+    bool from_blocks = false;  // error from the spread of time blocks, not from τ_int
+
+    // Sokal's window needs a series many τ_int long; below 50 τ_int a non-zero error bar is an
+    // underestimate (the window closes before the correlation has decayed).
+    bool short_series() const {
+        return !from_blocks && error > 0.0 && static_cast<double>(samples) < 50.0 * tau_int;
+    }
 };
 
 // Sokal's windowed estimate: τ = 1/2 + Σ_{t=1..W} ρ(t) with the smallest W ≥ 5 τ(W). A constant
