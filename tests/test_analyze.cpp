@@ -57,6 +57,9 @@ TEST_F(AnalyzeCli, SteadyPolarOrderIsTheMeanOfTheRunsOwnSeries) {
     request.observables = {"order"};
     const PreparedRun run = prepare_run(mixture(), request);
     EXPECT_EQ(run.window.first_frame, 5u);  // frames every 2 ms
+    request.from = 0.0101;                  // the first frame at or after it: 0.012 s
+    EXPECT_EQ(prepare_run(mixture(), request).window.first_frame, 6u);
+    request.from = 0.01;
     std::ostringstream log;
     const RunAnalysis a = analyze_run(run, log, true);
     const std::vector<double> recorded =

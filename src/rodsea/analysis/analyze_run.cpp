@@ -97,8 +97,9 @@ PreparedRun prepare_run(const fs::path& run, const AnalyzeRequest& request) {
     SteadyWindow& w = p.window;
     if (request.from) {
         const double from = *request.from;
-        // Half a frame interval of slack: --from 0.5 must select the frame written at 0.5 s.
-        const double slack = 0.5 * p.setup.frame_interval;
+        // Rounding slack only: --from 0.5 must select the frame stored at 0.49999999999 s, and
+        // --from 0.515 the first frame at or after it, not the one at 0.51.
+        const double slack = 1e-6 * p.setup.frame_interval;
         if (!std::isfinite(from) || from > p.times.back() + slack || from < 0.0)
             throw InvalidParameter("--from", format_number(from) + " s",
                                    "[0, " + format_number(p.times.back()) + "] s",
