@@ -1,5 +1,5 @@
-// The files of `rodsea analyze` (layout: docs/analysis.md). Each is written atomically, and
-// analysis.json last, so its presence means the set is complete.
+// The files of `rodsea analyze` (layout: docs/analysis.md), written into a staging directory
+// that replaces the previous analysis whole.
 #include <unistd.h>
 
 #include <algorithm>

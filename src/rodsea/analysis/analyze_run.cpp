@@ -131,8 +131,6 @@ PreparedRun prepare_run(const fs::path& run, const AnalyzeRequest& request) {
         1, std::min<std::size_t>(static_cast<std::size_t>(p.setup.blocks), p.setup.steady_frames)));
     p.options = resolve_analysis_options(request.options, p.setup);
     p.observables = select_observables(request.observables, p.setup, &p.skipped);
-    for (const std::string& name : p.observables)  // construction checks the parameters
-        (void)make_observable(name, p.setup, p.options);
     return p;
 }
 

@@ -4,15 +4,6 @@
 
 namespace rodsea {
 
-double orientational_order(std::span<const double> angles, int m) {
-    double c = 0.0, s = 0.0;
-    for (double theta : angles) {
-        c += std::cos(m * theta);
-        s += std::sin(m * theta);
-    }
-    return angles.empty() ? 0.0 : std::hypot(c, s) / static_cast<double>(angles.size());
-}
-
 OrderParameterObservable::OrderParameterObservable(const AnalysisSetup& setup) : setup_(setup) {
     for (std::uint32_t s = 0; s < setup.species.size(); ++s)
         if (setup.species[s].kind != BodyKind::bead && setup.species[s].count > 0)

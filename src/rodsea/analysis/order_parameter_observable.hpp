@@ -2,11 +2,9 @@
 // P and S per species, every frame (MODEL.md §4): the time series over the whole run and the
 // steady-state means. Beads are spheres, so their axis means nothing and they are skipped.
 #include "rodsea/analysis/observable.hpp"
+#include "rodsea/analysis/order_parameters.hpp"
 
 namespace rodsea {
-
-// |⟨(cos mθ, sin mθ)⟩| over `angles`; 0 for none.
-double orientational_order(std::span<const double> angles, int m);
 
 class OrderParameterObservable final : public Observable {
   public:
