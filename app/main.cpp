@@ -17,6 +17,10 @@
 #include "rodsea/meanfield/mean_field.hpp"
 #include "rodsea/run/plan_report.hpp"
 #include "rodsea/run/run_driver.hpp"
+#include "rodsea/view/export_command.hpp"
+#include "rodsea/view/movie_command.hpp"
+#include "rodsea/view/plot_command.hpp"
+#include "rodsea/view/render_command.hpp"
 
 namespace {
 
@@ -35,6 +39,11 @@ usage:
                                                           bars (docs/analysis.md)
   rodsea meanfield [--a A --alpha AL ...]                 the paper's mean-field model
                                                           (docs/meanfield.md)
+  rodsea render RUN_DIR [--frame N|--time T] -o F.png   a top view of one frame
+  rodsea movie RUN_DIR -o F.mp4 [--fps F --every K]     an H.264 movie of the run (ffmpeg)
+  rodsea plot ANALYSIS_DIR|TABLE.csv -o DIR             the paper's figure types (matplotlib)
+  rodsea export RUN_DIR --format lammps-dump|xyz -o F   one particle per sphere, for VMD and
+                                                          OVITO (docs/visualisation.md)
   rodsea help COMMAND | --help | --version
 
 Units everywhere: mm, s (and rad, Hz); masses in an arbitrary unit. Examples: examples/*.toml.
@@ -190,6 +199,22 @@ int command_meanfield(int argc, char** argv) {
     return rodsea::meanfield_command(words_after_command(argc, argv), std::cout);
 }
 
+int command_render(int argc, char** argv) {
+    return rodsea::render_command(words_after_command(argc, argv), std::cout, std::cerr);
+}
+
+int command_movie(int argc, char** argv) {
+    return rodsea::movie_command(words_after_command(argc, argv), std::cout, std::cerr);
+}
+
+int command_plot(int argc, char** argv) {
+    return rodsea::plot_command(words_after_command(argc, argv), std::cout, std::cerr);
+}
+
+int command_export(int argc, char** argv) {
+    return rodsea::export_command(words_after_command(argc, argv), std::cout, std::cerr);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -203,11 +228,9 @@ int main(int argc, char** argv) {
         return ExitCode::kExitOk;
     }
     const std::map<std::string_view, std::function<int(int, char**)>> commands{
-        {"run", command_run},
-        {"info", command_info},
-        {"config", command_config},
-        {"analyze", command_analyze},
-        {"meanfield", command_meanfield}};
+        {"run", command_run},         {"info", command_info},           {"config", command_config},
+        {"analyze", command_analyze}, {"meanfield", command_meanfield}, {"render", command_render},
+        {"movie", command_movie},     {"plot", command_plot},           {"export", command_export}};
     if (command == "help") {
         const std::string_view topic = argc > 2 ? argv[2] : "";
         std::cout << (topic == "run"         ? kRunHelp
@@ -215,14 +238,18 @@ int main(int argc, char** argv) {
                       : topic == "config"    ? kConfigHelp
                       : topic == "analyze"   ? rodsea::kAnalyzeHelp
                       : topic == "meanfield" ? rodsea::kMeanfieldHelp
+                      : topic == "render"    ? rodsea::kRenderHelp
+                      : topic == "movie"     ? rodsea::kMovieHelp
+                      : topic == "plot"      ? rodsea::kPlotHelp
+                      : topic == "export"    ? rodsea::kExportHelp
                                              : kUsage);
         return ExitCode::kExitOk;
     }
     const auto it = commands.find(command);
     if (it == commands.end()) {
-        std::cerr
-            << "rodsea: unknown command '" << command
-            << "' (commands: run, info, config, analyze, meanfield, help; see rodsea --help)\n";
+        std::cerr << "rodsea: unknown command '" << command
+                  << "' (commands: run, info, config, analyze, meanfield, render, movie, plot, "
+                     "export, help; see rodsea --help)\n";
         return ExitCode::kExitBadInput;
     }
     try {

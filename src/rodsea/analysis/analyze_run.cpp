@@ -7,9 +7,8 @@
 
 #include "rodsea/analysis/frame_context.hpp"
 #include "rodsea/analysis/observable_registry.hpp"
-#include "rodsea/config/config_file.hpp"
 #include "rodsea/error.hpp"
-#include "rodsea/io/trajectory_file.hpp"
+#include "rodsea/io/stored_run.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
 #include "rodsea/run/progress.hpp"
 
@@ -46,31 +45,15 @@ std::string steady_basis(const AnalysisSetup& setup) {
 
 PreparedRun prepare_run(const fs::path& run, const AnalyzeRequest& request) {
     PreparedRun p;
-    if (fs::is_regular_file(run)) {
-        p.trajectory = run;
-        p.run_dir = run.parent_path().empty() ? fs::path(".") : run.parent_path();
-    } else {
-        p.run_dir = run;
-        p.trajectory = run / "trajectory.h5";
-    }
-    if (!fs::exists(p.trajectory))
-        throw FileError(p.trajectory.string(),
-                        "no such file (give a directory written by `rodsea run`, or its "
-                        "trajectory.h5)");
-    const TrajectoryReader reader(p.trajectory);
-    std::string config;
-    try {
-        config = read_stored_config(p.trajectory);
-    } catch (const FileError&) {
-        throw FileError(p.trajectory.string(),
-                        "not a rodsea trajectory (no /parameters/rodsea/config)");
-    }
-    p.plan = load_config_string(config, p.trajectory.string() + ":/parameters/rodsea/config");
+    const StoredRun stored = open_stored_run(run);
+    const TrajectoryReader& reader = stored.reader;
+    p.run_dir = stored.run_dir;
+    p.trajectory = stored.trajectory;
+    p.plan = stored.plan;
     p.setup = make_setup(p.plan);
     p.setup.blocks = request.options.blocks;
     p.times = reader.times();
     const std::size_t frames = p.times.size();
-    if (frames == 0) throw FileError(p.trajectory.string(), "holds no frames yet");
     if (frames >= 2) {
         p.setup.frame_interval =
             (p.times.back() - p.times.front()) / static_cast<double>(frames - 1);

@@ -5,4 +5,5 @@ target_sources(rodsea_core PRIVATE
   src/rodsea/io/trajectory_reader.cpp
   src/rodsea/io/series_csv.cpp
   src/rodsea/io/checkpoint.cpp
+  src/rodsea/io/stored_run.cpp
 )

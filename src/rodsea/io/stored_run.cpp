@@ -1,0 +1,85 @@
+#include "rodsea/io/stored_run.hpp"
+
+#include <cmath>
+
+#include "rodsea/config/config_file.hpp"
+#include "rodsea/error.hpp"
+#include "rodsea/io/trajectory_file.hpp"
+
+namespace rodsea {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path trajectory_of(const fs::path& run) {
+    const fs::path path = fs::is_directory(run) ? run / "trajectory.h5" : run;
+    if (!fs::exists(path))
+        throw FileError(path.string(),
+                        "no such file (give a directory written by `rodsea run`, or its "
+                        "trajectory.h5)");
+    return path;
+}
+
+}  // namespace
+
+long long StoredRun::total_bodies() const {
+    long long n = 0;
+    for (long long c : plan.counts)
+        n += c;
+    return n;
+}
+
+StoredRun open_stored_run(const fs::path& run) {
+    const fs::path trajectory = trajectory_of(run);
+    TrajectoryReader reader(trajectory);
+    std::string config;
+    try {
+        config = read_stored_config(trajectory);
+    } catch (const FileError&) {
+        throw FileError(trajectory.string(),
+                        "not a rodsea trajectory (no /parameters/rodsea/config)");
+    }
+    RunPlan plan = load_config_string(config, trajectory.string() + ":/parameters/rodsea/config");
+    if (reader.frames() == 0) throw FileError(trajectory.string(), "holds no frames yet");
+    const fs::path dir = fs::is_directory(run)              ? run
+                         : trajectory.parent_path().empty() ? fs::path(".")
+                                                            : trajectory.parent_path();
+    return StoredRun{dir, trajectory, std::move(plan), std::move(reader)};
+}
+
+std::size_t select_frame(const StoredRun& run, std::optional<long long> frame,
+                         std::optional<double> time) {
+    const std::size_t n = run.frames();
+    const long long count = static_cast<long long>(n);
+    if (frame && time)
+        throw InvalidParameter("--frame", std::to_string(*frame), "either --frame or --time",
+                               "not both");
+    if (frame) {
+        const long long k = *frame < 0 ? count + *frame : *frame;
+        if (k < 0 || k >= count)
+            throw InvalidParameter("--frame", std::to_string(*frame),
+                                   "[0, " + std::to_string(count - 1) + "] (or -1 … -" +
+                                       std::to_string(count) + " from the end)",
+                                   "the run holds " + std::to_string(count) + " frames");
+        return static_cast<std::size_t>(k);
+    }
+    if (time) {
+        const std::vector<double>& t = run.times();
+        const double interval = n > 1 ? (t.back() - t.front()) / static_cast<double>(n - 1) : 0.0;
+        // Half an output interval of slack at each end: the nearest frame is still meaningful.
+        if (!std::isfinite(*time) || *time < t.front() - 0.5 * interval ||
+            *time > t.back() + 0.5 * interval)
+            throw InvalidParameter(
+                "--time", format_number(*time) + " s",
+                "[" + format_number(t.front()) + ", " + format_number(t.back()) + "] s",
+                "the run's frames span that time");
+        std::size_t best = 0;
+        for (std::size_t k = 1; k < n; ++k)
+            if (std::abs(t[k] - *time) < std::abs(t[best] - *time)) best = k;
+        return best;
+    }
+    return n - 1;
+}
+
+}  // namespace rodsea

@@ -1,0 +1,35 @@
+#pragma once
+// A finished or running simulation as the read-side commands (analyze, render, movie, export)
+// see it: the trajectory, the config it was run with, and its frame times. Opening checks that
+// the file is a rodsea trajectory with at least one complete frame.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+#include "rodsea/config/run_plan.hpp"
+#include "rodsea/io/trajectory_reader.hpp"
+
+namespace rodsea {
+
+struct StoredRun {
+    std::filesystem::path run_dir, trajectory;
+    RunPlan plan;
+    TrajectoryReader reader;
+
+    std::size_t frames() const { return reader.times().size(); }
+    const std::vector<double>& times() const { return reader.times(); }
+    long long total_bodies() const;
+};
+
+// Accepts a run directory or its trajectory.h5. Throws FileError for a missing file, one that
+// is not a rodsea trajectory, or one without frames.
+StoredRun open_stored_run(const std::filesystem::path& run_or_trajectory);
+
+// The frame a user asked for: --frame N (0-based; negative counts from the end, -1 the last)
+// or --time T (the frame nearest T, s), or the last frame when neither is given. Throws
+// InvalidParameter naming the flag and the run's range.
+std::size_t select_frame(const StoredRun& run, std::optional<long long> frame,
+                         std::optional<double> time);
+
+}  // namespace rodsea

@@ -1,0 +1,1 @@
+#include "rodsea/view/colour_wheel.hpp"

@@ -1,0 +1,1 @@
+#include "rodsea/view/export_formats.hpp"

@@ -1,0 +1,1 @@
+#include "rodsea/view/ffmpeg_pipe.hpp"

@@ -1,0 +1,1 @@
+#include "rodsea/view/frame_renderer.hpp"

@@ -1,0 +1,1 @@
+#include "rodsea/view/png_file.hpp"
