@@ -1,1 +1,179 @@
-// placeholder
+// `rodsea movie`: the MP4 holds exactly the frames asked for, in a format browsers play
+// (H.264, yuv420p), as ffprobe reads it; without a working ffmpeg nothing is left behind.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "child_process.hpp"
+#include "constructed_run.hpp"
+#include "rodsea/config/config_file.hpp"
+#include "scratch_dir.hpp"
+
+namespace rodsea {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Runs a shell command and returns its standard output.
+std::string shell_output(const std::string& command) {
+    std::string out;
+    if (FILE* pipe = ::popen(command.c_str(), "r")) {
+        char buffer[256];
+        while (std::fgets(buffer, sizeof buffer, pipe))
+            out += buffer;
+        ::pclose(pipe);
+    }
+    return out;
+}
+
+// Sets an environment variable for the child processes of one test.
+class ScopedEnv {
+  public:
+    ScopedEnv(const char* name, const std::string& value) : name_(name) {
+        ::setenv(name, value.c_str(), 1);
+    }
+    ~ScopedEnv() { ::unsetenv(name_); }
+
+  private:
+    const char* name_;
+};
+
+class MovieCli : public ::testing::Test {
+  protected:
+    static void SetUpTestSuite() {
+        scratch_ = new ScratchDir("movie");
+        // Seven frames of two rods turning and drifting, 0.01 s apart.
+        const RunPlan plan = load_config_string(
+            "[box]\nside = 16.0\n[[species]]\nname = \"polar\"\nkind = \"polar_rod\"\n"
+            "count = 2\n",
+            "test");
+        std::vector<BodyState> frames;
+        for (int k = 0; k < 7; ++k) {
+            BodyState f;
+            add_flat_body(f, plan, 0, 4.0 + 0.5 * k, 8.0, 0.3 * k);
+            add_flat_body(f, plan, 0, 12.0, 4.0 + 0.5 * k, -0.2 * k);
+            frames.push_back(f);
+        }
+        write_constructed_run(run(), plan, frames, 0.01);
+    }
+    static void TearDownTestSuite() { delete scratch_; }
+    static fs::path run() { return scratch_->path() / "run"; }
+    static fs::path path(const std::string& name) { return scratch_->path() / name; }
+
+    // Entries of the scratch directory besides the run, the children's captured output and
+    // `keep`: what a command left behind.
+    static std::vector<std::string> leftovers(const std::string& keep = "") {
+        std::vector<std::string> found;
+        for (const auto& e : fs::directory_iterator(scratch_->path())) {
+            const std::string name = e.path().filename().string();
+            if (name != "run" && name != keep && name.rfind("child.", 0) != 0 &&
+                name != "fake-ffmpeg")
+                found.push_back(name);
+        }
+        return found;
+    }
+    static ScratchDir* scratch_;
+};
+ScratchDir* MovieCli::scratch_ = nullptr;
+
+TEST_F(MovieCli, HoldsEveryRequestedFrameAsBrowserReadyH264) {
+    const fs::path mp4 = path("every2.mp4");
+    // Frames 0, 2, 4, 6 of the seven: four video frames.
+    const ChildResult r = run_rodsea({"movie", run().string(), "-o", mp4.string(), "--every", "2",
+                                      "--size", "320", "--fps", "10"},
+                                     scratch_->path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("4 frames"), std::string::npos) << r.out;  // the plan says so first
+    const std::string probe = shell_output(
+        "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+        "stream=codec_name,pix_fmt,width,height,nb_read_frames,avg_frame_rate -of "
+        "default=noprint_wrappers=1 '" +
+        mp4.string() + "'");
+    EXPECT_NE(probe.find("codec_name=h264"), std::string::npos) << probe;
+    EXPECT_NE(probe.find("pix_fmt=yuv420p"), std::string::npos) << probe;
+    EXPECT_NE(probe.find("width=320"), std::string::npos) << probe;
+    EXPECT_NE(probe.find("height=320"), std::string::npos) << probe;
+    EXPECT_NE(probe.find("avg_frame_rate=10/1"), std::string::npos) << probe;
+    EXPECT_NE(probe.find("nb_read_frames=4"), std::string::npos) << probe;
+    EXPECT_TRUE(leftovers("every2.mp4").empty());
+    fs::remove(mp4);
+}
+
+TEST_F(MovieCli, TimeWindowSelectsItsFrames) {
+    const fs::path mp4 = path("window.mp4");
+    // t = 0.02 … 0.05 s: frames 2, 3, 4, 5.
+    const ChildResult r = run_rodsea({"movie", run().string(), "-o", mp4.string(), "--from", "0.02",
+                                      "--to", "0.05", "--size", "160", "--quiet"},
+                                     scratch_->path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(shell_output("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                           "stream=nb_read_frames -of csv=p=0 '" +
+                           mp4.string() + "'"),
+              "4\n");
+    fs::remove(mp4);
+}
+
+TEST_F(MovieCli, MissingOrFailingFfmpegLeavesNoFile) {
+    const fs::path mp4 = path("none.mp4");
+    {
+        const ScopedEnv env("RODSEA_FFMPEG", (scratch_->path() / "no-ffmpeg").string());
+        const ChildResult r =
+            run_rodsea({"movie", run().string(), "-o", mp4.string()}, scratch_->path());
+        EXPECT_NE(r.exit_code, 0);
+        EXPECT_NE(r.err.find("ffmpeg not found"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("install-deps"), std::string::npos) << r.err;
+    }
+    {
+        // An "ffmpeg" that reads a little and dies: the failure is reported with its message,
+        // and neither the partial movie nor the log is left.
+        const fs::path fake = path("fake-ffmpeg");
+        std::ofstream(fake) << "#!/bin/sh\nhead -c 1000 > /dev/null\necho 'encoder exploded' >&2\n"
+                               "exit 3\n";
+        fs::permissions(fake, fs::perms::owner_all);
+        const ScopedEnv env("RODSEA_FFMPEG", fake.string());
+        const ChildResult r =
+            run_rodsea({"movie", run().string(), "-o", mp4.string(), "--quiet"}, scratch_->path());
+        EXPECT_EQ(r.exit_code, 74) << r.err;
+        EXPECT_NE(r.err.find("encoder exploded"), std::string::npos) << r.err;
+    }
+    EXPECT_FALSE(fs::exists(mp4));
+    EXPECT_TRUE(leftovers().empty()) << leftovers().front();
+}
+
+TEST_F(MovieCli, BadInputIsRefusedBeforeAnyFrameIsDrawn) {
+    const std::string mp4 = path("bad.mp4").string();
+    struct Case {
+        std::vector<std::string> args;
+        int exit_code;
+        std::string message;
+    };
+    const std::vector<Case> cases{
+        {{"--size", "321"}, 2, "even"},
+        {{"--fps", "0"}, 2, "--fps"},
+        {{"--every", "0"}, 2, "--every"},
+        {{"--from", "0.5"}, 2, "--from"},
+        {{"--from", "0.04", "--to", "0.02"}, 2, "--to"},
+        {{"--colour", "sepia"}, 2, "direction, flock or uniform"},
+        {{"--crf", "99"}, 2, "--crf"},
+    };
+    for (const Case& c : cases) {
+        std::vector<std::string> args{"movie", run().string(), "-o", mp4};
+        args.insert(args.end(), c.args.begin(), c.args.end());
+        const ChildResult r = run_rodsea(args, scratch_->path());
+        EXPECT_EQ(r.exit_code, c.exit_code) << c.args[0] << ": " << r.err;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    }
+    const ChildResult r =
+        run_rodsea({"movie", run().string(), "-o", (path("missing-dir") / "m.mp4").string()},
+                   scratch_->path());
+    EXPECT_EQ(r.exit_code, 74);
+    EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
+    EXPECT_TRUE(leftovers().empty()) << leftovers().front();
+}
+
+}  // namespace
+}  // namespace rodsea

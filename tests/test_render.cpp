@@ -1,1 +1,229 @@
-// placeholder
+// `rodsea render` on frames placed by hand: each body's colour lands on the pixels of its true
+// outline, at the place the box coordinates say, across the periodic edge too; the colour maps
+// are periodic where the angles are; bad input is refused and leaves no file.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <numbers>
+
+#include "child_process.hpp"
+#include "constructed_run.hpp"
+#include "rodsea/config/config_file.hpp"
+#include "rodsea/view/colour_wheel.hpp"
+#include "rodsea/view/png_file.hpp"
+#include "scratch_dir.hpp"
+
+namespace rodsea {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr double kPi = std::numbers::pi;
+constexpr double kBox = 20.0;  // mm
+
+RunPlan polar_rods(int count) {
+    return load_config_string("[box]\nside = " + std::to_string(kBox) +
+                                  "\n[[species]]\nname = \"polar\"\nkind = \"polar_rod\"\n"
+                                  "count = " +
+                                  std::to_string(count) + "\n",
+                              "test");
+}
+
+struct Pixel {
+    int r = 0, g = 0, b = 0;
+};
+
+Pixel pixel_at(const Image& image, int column, int row) {
+    const std::uint32_t p = image.at(column, row);
+    return {static_cast<int>(p >> 16 & 0xff), static_cast<int>(p >> 8 & 0xff),
+            static_cast<int>(p & 0xff)};
+}
+
+// The pixel under the point (x, y) mm of a view [x0, x1] × [y0, y1] drawn `width` pixels wide:
+// columns grow with x, rows grow downwards from y1.
+Pixel pixel_under(const Image& image, double x, double y, double x0 = 0.0, double x1 = kBox,
+                  double y1 = kBox) {
+    const double s = static_cast<double>(image.width) / (x1 - x0);
+    return pixel_at(image, static_cast<int>(std::floor((x - x0) * s)),
+                    static_cast<int>(std::floor((y1 - y) * s)));
+}
+
+// 8-bit rounding of the expected colour is the only difference allowed inside a body: its
+// interior is fully covered, so antialiasing does not touch it.
+void expect_colour(const Pixel& p, const Rgb& c, const std::string& where) {
+    EXPECT_NEAR(p.r, c.r * 255.0, 1.0) << where;
+    EXPECT_NEAR(p.g, c.g * 255.0, 1.0) << where;
+    EXPECT_NEAR(p.b, c.b * 255.0, 1.0) << where;
+}
+
+void expect_background(const Pixel& p, const std::string& where) {
+    EXPECT_EQ(p.r, 255) << where;
+    EXPECT_EQ(p.g, 255) << where;
+    EXPECT_EQ(p.b, 255) << where;
+}
+
+class RenderCli : public ::testing::Test {
+  protected:
+    void SetUp() override { scratch_ = std::make_unique<ScratchDir>("render"); }
+    fs::path path(const std::string& name) const { return scratch_->path() / name; }
+
+    // Writes a one-frame run of polar rods at (x, y, θ) and renders it.
+    Image render(const std::vector<std::array<double, 3>>& rods,
+                 const std::vector<std::string>& extra = {}) {
+        const RunPlan plan = polar_rods(static_cast<int>(rods.size()));
+        BodyState frame;
+        for (const auto& [x, y, theta] : rods)
+            add_flat_body(frame, plan, 0, x, y, theta);
+        write_constructed_run(path("run"), plan, {frame}, 0.01);
+        std::vector<std::string> args{
+            "render", path("run").string(), "-o", path("out.png").string(), "--size", "400"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const ChildResult r = run_rodsea(args, scratch_->path());
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        return read_png(path("out.png"));
+    }
+
+    std::unique_ptr<ScratchDir> scratch_;
+};
+
+TEST_F(RenderCli, RodColourAtItsCentreAndBackgroundOutsideItsOutline) {
+    const double theta = 2.0;  // rad: a colour far from the wheel's red start
+    const Image image = render({{8.0, 11.0, theta}}, {"--no-annotations"});
+    ASSERT_EQ(image.width, 400);
+    ASSERT_EQ(image.height, 400);  // square box
+    expect_colour(pixel_under(image, 8.0, 11.0), direction_colour(theta), "centre of mass");
+
+    const RunPlan plan = polar_rods(1);
+    const Shape& shape = plan.engine.species[0].shape;
+    const double c = std::cos(theta), s = std::sin(theta);
+    // Beside the axis, 0.3 mm beyond the widest sphere; and 0.3 mm beyond each end.
+    const double side = shape.max_radius + 0.3;
+    expect_background(pixel_under(image, 8.0 - side * s, 11.0 + side * c), "beside the rod");
+    expect_background(pixel_under(image, 8.0 + side * s, 11.0 - side * c), "other side");
+    for (std::size_t k : {std::size_t{0}, shape.sphere_count() - 1}) {
+        const Vec3& o = shape.offsets[k];
+        const double out = (std::abs(o.x) + shape.radii[k] + 0.3) / std::abs(o.x);
+        expect_background(pixel_under(image, 8.0 + out * o.x * c, 11.0 + out * o.x * s),
+                          "beyond end sphere " + std::to_string(k));
+        // ... and the end sphere's own centre is the rod's colour: the whole outline is drawn.
+        expect_colour(pixel_under(image, 8.0 + o.x * c, 11.0 + o.x * s), direction_colour(theta),
+                      "end sphere " + std::to_string(k));
+    }
+}
+
+TEST_F(RenderCli, RodAcrossThePeriodicEdgeAppearsOnBothSides) {
+    // Axis along +x with the centre 0.4 mm from the left edge: the spheres behind the centre lie
+    // at x < 0 and must appear at x + L, the right edge of the picture.
+    const Image image = render({{0.4, 10.0, 0.0}}, {"--no-annotations"});
+    const Shape& shape = polar_rods(1).engine.species[0].shape;
+    int wrapped = 0, inside = 0;
+    for (std::size_t k = 0; k < shape.sphere_count(); ++k) {
+        const double x = 0.4 + shape.offsets[k].x;
+        if (std::abs(x) < 0.1) continue;  // too close to the edge to say which side
+        const double shown = x < 0.0 ? x + kBox : x;
+        (x < 0.0 ? wrapped : inside)++;
+        expect_colour(pixel_under(image, shown, 10.0), direction_colour(0.0),
+                      "sphere " + std::to_string(k) + " at x = " + std::to_string(x));
+    }
+    EXPECT_GT(wrapped, 0);
+    EXPECT_GT(inside, 0);
+    // Nothing is drawn where no image of the rod reaches, e.g. mid-box at the same height.
+    expect_background(pixel_under(image, 10.0, 10.0), "mid-box");
+}
+
+TEST_F(RenderCli, ZoomMapsTheRegionOntoTheWholeImage) {
+    // The view x ∈ [5, 15], y ∈ [8, 13] mm: 400 × 200 px, 40 px/mm.
+    const Image image =
+        render({{9.0, 10.0, kPi / 2}}, {"--no-annotations", "--region", "5,15,8,13"});
+    ASSERT_EQ(image.width, 400);
+    ASSERT_EQ(image.height, 200);
+    expect_colour(pixel_under(image, 9.0, 10.0, 5.0, 15.0, 13.0), direction_colour(kPi / 2),
+                  "rod centre in the zoomed view");
+    expect_background(pixel_under(image, 11.0, 10.0, 5.0, 15.0, 13.0), "2 mm to its right");
+}
+
+TEST_F(RenderCli, FlockColouringSeparatesAFlockFromALoner) {
+    // Three parallel rods 1 mm apart form a DBSCAN cluster (ε = ℓ_p/2 = 2.25 mm, 3 samples);
+    // a fourth rod 8 mm away is noise.
+    const Image image =
+        render({{5.0, 5.0, 0.0}, {5.0, 6.0, 0.0}, {5.0, 7.0, 0.0}, {15.0, 15.0, 0.0}},
+               {"--no-annotations", "--colour", "flock"});
+    for (double y : {5.0, 6.0, 7.0})
+        expect_colour(pixel_under(image, 5.0, y), label_colour(0), "flock member");
+    expect_colour(pixel_under(image, 15.0, 15.0), label_colour(-1), "loner");
+}
+
+TEST_F(RenderCli, ScaleBarIsAsLongAsItSays) {
+    // 400 px for 20 mm: the bar is the largest 1/2/5 × 10^k mm within a fifth of the width, so
+    // 2 mm = 40 px; it is the longest black run of pixels in the bottom rows.
+    const Image image = render({{10.0, 10.0, 0.0}});
+    int longest = 0;
+    for (int row = image.height - 40; row < image.height; ++row) {
+        int run = 0;
+        for (int col = 0; col < image.width / 2; ++col) {
+            const Pixel p = pixel_at(image, col, row);
+            run = (p.r + p.g + p.b < 30) ? run + 1 : 0;
+            longest = std::max(longest, run);
+        }
+    }
+    EXPECT_NEAR(longest, 40, 1);
+}
+
+TEST(ColourWheel, PeriodicInTheAngleAndDistinctForOppositeDirections) {
+    for (double theta : {0.0, 0.7, 2.0, -2.5}) {
+        const Rgb a = direction_colour(theta), b = direction_colour(theta + 2.0 * kPi);
+        EXPECT_NEAR(a.r, b.r, 1e-12);
+        EXPECT_NEAR(a.g, b.g, 1e-12);
+        EXPECT_NEAR(a.b, b.b, 1e-12);
+        const Rgb n = nematic_colour(theta), m = nematic_colour(theta + kPi);
+        EXPECT_NEAR(n.r, m.r, 1e-12);
+        EXPECT_NEAR(n.g, m.g, 1e-12);
+        EXPECT_NEAR(n.b, m.b, 1e-12);
+        // A head and a tail must not look alike: opposite directions differ by a lot in some
+        // channel (the wheel's complementary hues).
+        const Rgb o = direction_colour(theta + kPi);
+        EXPECT_GT(std::max({std::abs(a.r - o.r), std::abs(a.g - o.g), std::abs(a.b - o.b)}), 0.5);
+    }
+    // θ = 0 (along +x) is red.
+    const Rgb red = direction_colour(0.0);
+    EXPECT_GT(red.r, 0.9);
+    EXPECT_LT(std::max(red.g, red.b), 0.2);
+}
+
+TEST_F(RenderCli, BadInputIsRefusedAndWritesNothing) {
+    render({{10.0, 10.0, 0.0}});
+    fs::remove(path("out.png"));
+    struct Case {
+        std::vector<std::string> args;
+        int exit_code;
+        std::string message;
+    };
+    const std::string run = path("run").string(), png = path("out.png").string();
+    const std::vector<Case> cases{
+        {{"render", run, "--frame", "3", "-o", png}, 2, "--frame"},
+        {{"render", run, "--time", "5", "-o", png}, 2, "--time"},
+        {{"render", run, "--colour", "rainbow", "-o", png}, 2, "direction, flock or uniform"},
+        {{"render", run, "--medium", "pink", "-o", png}, 2, "neutral or nematic"},
+        {{"render", run, "--region", "5,25,0,10", "-o", png}, 2, "--region"},
+        {{"render", run, "--size", "10", "-o", png}, 2, "--size"},
+        {{"render", run, "-o", path("out.jpg").string()}, 2, ".png"},
+        {{"render", run, "-o", (path("no-such-dir") / "x.png").string()}, 74, "does not exist"},
+        {{"render", path("missing").string(), "-o", png}, 74, "no such file"},
+        {{"render", run, "--colr", "flock", "-o", png}, 2, "--colr"},
+    };
+    for (const Case& c : cases) {
+        const ChildResult r = run_rodsea(c.args, scratch_->path());
+        EXPECT_EQ(r.exit_code, c.exit_code) << c.args[2] << ": " << r.err;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    }
+    // Nothing but the run and the captured output in the scratch directory.
+    for (const auto& entry : fs::directory_iterator(scratch_->path()))
+        EXPECT_TRUE(entry.path().filename() == "run" ||
+                    entry.path().filename().string().rfind("child.", 0) == 0)
+            << entry.path();
+}
+
+}  // namespace
+}  // namespace rodsea

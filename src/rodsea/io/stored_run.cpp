@@ -82,4 +82,37 @@ std::size_t select_frame(const StoredRun& run, std::optional<long long> frame,
     return n - 1;
 }
 
+std::vector<std::size_t> select_frame_window(const StoredRun& run, std::optional<double> from,
+                                             std::optional<double> to, long long every) {
+    const std::vector<double>& t = run.times();
+    // Rounding slack only: --from 0.5 takes the frame stored at 0.49999999999 s.
+    const double slack = 1e-6 * run.plan.control.output_interval;
+    std::string range(1, '[');
+    range.append(format_number(t.front())).append(", ").append(format_number(t.back()));
+    range.append("] s");
+    std::string span("the run's frames span ");
+    span.append(format_number(t.front())).append(" to ").append(format_number(t.back()));
+    span.append(" s");
+    const double lo = from.value_or(t.front()), hi = to.value_or(t.back());
+    if (from && (!std::isfinite(*from) || *from > t.back() + slack || *from < 0.0))
+        throw InvalidParameter("--from", format_number(*from) + " s", range, span);
+    if (to && (!std::isfinite(*to) || *to < t.front() - slack))
+        throw InvalidParameter("--to", format_number(*to) + " s", range, span);
+    if (hi < lo)
+        throw InvalidParameter("--to", format_number(hi) + " s",
+                               "at least --from (" + format_number(lo) + " s)");
+    std::vector<std::size_t> frames;
+    long long in_window = 0;
+    for (std::size_t k = 0; k < t.size(); ++k) {
+        if (t[k] < lo - slack || t[k] > hi + slack) continue;
+        if (in_window++ % every == 0) frames.push_back(k);
+    }
+    if (frames.empty())
+        throw InvalidParameter(
+            "--from", format_number(lo) + " s to " + format_number(hi) + " s",
+            "a window that holds at least one frame",
+            "frames are " + format_number(run.plan.control.output_interval) + " s apart; " + span);
+    return frames;
+}
+
 }  // namespace rodsea

@@ -32,4 +32,10 @@ StoredRun open_stored_run(const std::filesystem::path& run_or_trajectory);
 std::size_t select_frame(const StoredRun& run, std::optional<long long> frame,
                          std::optional<double> time);
 
+// The frames with from − slack <= t <= to + slack (rounding slack only; none given: the run's
+// ends), then every `every`-th of them. Throws InvalidParameter naming --from or --to when the
+// window lies outside the run, is reversed, or holds no frame.
+std::vector<std::size_t> select_frame_window(const StoredRun& run, std::optional<double> from,
+                                             std::optional<double> to, long long every);
+
 }  // namespace rodsea

@@ -3,6 +3,7 @@ target_sources(rodsea_core PRIVATE
   src/rodsea/run/progress.cpp
   src/rodsea/run/plan_report.cpp
   src/rodsea/run/stop_signal.cpp
+  src/rodsea/run/count_progress.cpp
   src/rodsea/run/run_lock.cpp
   src/rodsea/run/run_driver.cpp
 )

@@ -1,14 +1,272 @@
 #include "rodsea/view/export_command.hpp"
 
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <limits>
+#include <optional>
 #include <ostream>
+#include <string_view>
+
+#include "rodsea/cli/arguments.hpp"
+#include "rodsea/config/did_you_mean.hpp"
+#include "rodsea/error.hpp"
+#include "rodsea/io/atomic_file.hpp"
+#include "rodsea/io/output_path.hpp"
+#include "rodsea/io/stored_run.hpp"
+#include "rodsea/run/count_progress.hpp"
+#include "rodsea/run/stop_signal.hpp"
+#include "rodsea/view/export_formats.hpp"
 
 namespace rodsea {
 
-const char* const kExportHelp = "rodsea export: not yet\n";
+const char* const kExportHelp =
+    R"(rodsea export RUN_DIR --format lammps-dump|xyz -o FILE [--frame N | --time T]
+              [--every K] [--from T] [--to T] [--velocities] [--quiet]
 
-int export_command(const std::vector<std::string>&, std::ostream&, std::ostream& err) {
-    err << "rodsea export: not yet\n";
-    return 1;
+Writes the run's frames as one particle per sphere, for VMD, OVITO and MDAnalysis
+(docs/export.md: the columns and the exact steps to open the file in each). Each sphere has an
+id, its body's id (molecule), its species (type, 1-based; the XYZ file names it), its radius and
+its body's orientation quaternion. Bodies are kept whole: the centre is wrapped into the box,
+spheres may stick out of [0, L) by less than a body length. Units: mm and s (times, and the
+velocities in mm/s); the box is [0, Lx] x [0, Ly] x [-A, w + A], the plates' whole travel.
+Everything is checked before anything is written; the file appears complete or not at all
+(also on a full disk or Ctrl-C).
+
+  --format F      lammps-dump: a LAMMPS custom dump (.lammpstrj; VMD, OVITO, MDAnalysis)
+                  xyz: extended XYZ (OVITO; MDAnalysis and other plain XYZ readers
+                  take the first four columns: species name, x, y, z)
+  -o, --output F  the file to write (replaced if it exists)
+  --frame N       one frame: 0-based, negative counts from the end (-1: the last)
+  --time T        one frame: the one nearest T, s
+  --every K       every K-th frame of the window (default 1: all)
+  --from T        the window's start, s (default: the first frame)
+  --to T          the window's end, s (default: the last frame)
+  --velocities    also the body centre's velocity (vx vy vz, mm/s)
+  --quiet         no plan and no progress lines
+)";
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double kHuge = 1e12;
+
+// Ctrl-C or SIGTERM between frames: unwinds through replace_file_atomically, which removes
+// the temporary file, so nothing half-written is left.
+struct ExportInterrupted {
+    int signal;
+};
+
+// Concatenation by appending: GCC 12 at -O3 warns falsely (-Wrestrict) on "literal" + string.
+std::string cat(std::initializer_list<std::string_view> parts) {
+    std::string s;
+    for (std::string_view p : parts)
+        s.append(p);
+    return s;
+}
+
+std::string quoted(const std::string& text) {
+    std::string q(1, '\'');
+    q += text;
+    q += '\'';
+    return q;
+}
+
+std::string megabytes(double bytes) {
+    return cat({format_number(std::round(bytes / 1e4) / 100), " MB"});
+}
+
+ExportFormat format_from(const std::optional<std::string>& given) {
+    std::string allowed;
+    for (const std::string& n : export_format_names()) {
+        if (!allowed.empty()) allowed += " or ";
+        allowed += n;
+    }
+    if (!given) throw InvalidParameter("--format", "none given", allowed);
+    if (const auto f = parse_export_format(*given)) return *f;
+    const auto guess = config::closest_match(*given, export_format_names());
+    std::string why;
+    if (guess) {
+        why = "did you mean '";
+        why += *guess;
+        why += "'?";
+    }
+    throw InvalidParameter("--format", quoted(*given), allowed, why);
+}
+
+// The frames the options select, in order. Throws InvalidParameter naming the flag.
+std::vector<std::size_t> select_frames(const StoredRun& run, const Arguments& a) {
+    const std::optional<std::string> frame_text = a.value("--frame"), time_text = a.value("--time");
+    if (frame_text || time_text) {
+        for (const char* flag : {"--every", "--from", "--to"})
+            if (a.value(flag))
+                throw InvalidParameter(flag, *a.value(flag), "without --frame and --time",
+                                       "--frame and --time export a single frame");
+        std::optional<long long> frame;
+        std::optional<double> time;
+        if (frame_text) frame = parse_count("--frame", *frame_text, -(1LL << 40), 1LL << 40);
+        if (time_text) time = parse_number("--time", *time_text, -kHuge, kHuge, "s");
+        return {select_frame(run, frame, time)};
+    }
+    const long long every =
+        a.value("--every") ? parse_count("--every", *a.value("--every"), 1, 1LL << 40) : 1;
+    std::optional<double> from, to;
+    if (const auto f = a.value("--from")) from = parse_number("--from", *f, 0.0, kHuge, "s");
+    if (const auto f = a.value("--to")) to = parse_number("--to", *f, 0.0, kHuge, "s");
+    return select_frame_window(run, from, to, every);
+}
+
+// The output file can be written: its directory exists and is writable, it is not a
+// directory, not the run's own trajectory, and the disk has room for it.
+void check_output(const fs::path& path, const StoredRun& run, double bytes) {
+    check_output_file("-o", path, "");
+    std::error_code ec;
+    const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    if (fs::exists(path, ec)) {
+        if (!fs::is_regular_file(path, ec))
+            throw FileError(path.string(), "exists and is not a regular file");
+        for (const fs::path& own : {run.trajectory, run.run_dir / "checkpoint.h5"})
+            if (fs::exists(own, ec) && fs::equivalent(path, own, ec))
+                throw InvalidParameter("-o", path.string(), "a file other than the run's own",
+                                       cat({"it would replace ", own.string()}));
+    }
+    const fs::space_info space = fs::space(dir, ec);
+    if (!ec && static_cast<double>(space.available) < bytes)
+        throw FileError(path.string(),
+                        cat({"needs about ", megabytes(bytes), ", but only ",
+                             megabytes(static_cast<double>(space.available)), " are free"}));
+}
+
+// The extension VMD's reader for the format is registered under (plugins lammpstrj and xyz).
+bool extension_fits(const fs::path& path, ExportFormat format) {
+    return path.extension() == (format == ExportFormat::lammps_dump ? ".lammpstrj" : ".xyz");
+}
+
+}  // namespace
+
+int export_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+    const Arguments a = parse_arguments(
+        args, {"--format", "--output", "--frame", "--time", "--every", "--from", "--to"},
+        {"--velocities", "--quiet", "--help"}, "export");
+    if (a.has("--help")) {
+        out << kExportHelp;
+        return 0;
+    }
+    if (a.positional.empty())
+        throw InvalidParameter("RUN_DIR", "none given",
+                               "one run directory (see rodsea export --help)");
+    if (a.positional.size() > 1)
+        throw InvalidParameter("RUN_DIR", quoted(a.positional[1]), "exactly one run directory",
+                               "export writes one run into one file");
+    ExportOptions options;
+    options.format = format_from(a.value("--format"));
+    options.velocities = a.has("--velocities");
+    const bool quiet = a.has("--quiet");
+    const std::optional<std::string> output = a.value("--output");
+    if (!output || output->empty())
+        throw InvalidParameter("-o", "none given", "the file to write, e.g. -o run.lammpstrj");
+    const fs::path path = *output;
+
+    const StoredRun run = open_stored_run(a.positional[0]);
+    const std::vector<std::size_t> frames = select_frames(run, a);
+    const ExportScene scene = make_export_scene(run.plan);
+    // The first frame is read now: its bodies must match the config before anything is
+    // written. Every later frame is checked as it is read.
+    BodyState first = run.reader.frame(frames.front());
+    const std::string source = run.trajectory.string();
+    const std::size_t spheres = export_sphere_count(scene, first, source);
+    const std::size_t bodies = first.size();
+    if (static_cast<long long>(bodies) != run.total_bodies())
+        throw FileError(source,
+                        cat({"frames hold ", std::to_string(bodies), " bodies, the stored config ",
+                             std::to_string(run.total_bodies())}));
+    const double frame_bytes = estimated_frame_bytes(scene, options, spheres, bodies);
+    const double total_bytes = frame_bytes * static_cast<double>(frames.size());
+    check_output(path, run, total_bytes);
+
+    const std::vector<double>& times = run.times();
+    const std::vector<std::int64_t>& steps = run.reader.steps();
+    if (!quiet) {
+        out << "export " << run.run_dir.string() << " -> " << path.string() << " ("
+            << to_string(options.format) << (options.velocities ? ", with velocities" : "")
+            << ")\n";
+        if (frames.size() == 1)
+            out << "  frame " << frames.front() << " of " << run.frames()
+                << ": t = " << format_number(times[frames.front()]) << " s, step "
+                << steps[frames.front()];
+        else
+            out << "  frames: " << frames.size() << " of " << run.frames()
+                << ", t = " << format_number(times[frames.front()]) << " to "
+                << format_number(times[frames.back()]) << " s";
+        out << "\n  spheres per frame: " << spheres << " in " << bodies << " bodies (";
+        for (std::size_t s = 0; s < scene.species.size(); ++s)
+            out << (s ? ", " : "") << "type " << s + 1 << " = " << scene.species[s].name << ": "
+                << run.plan.counts[s] << " x " << scene.species[s].radii.size() << " spheres";
+        out << ")\n  box: [0, " << format_number(scene.lx) << "] x [0, " << format_number(scene.ly)
+            << "] x [" << format_number(scene.z_lo) << ", " << format_number(scene.z_hi)
+            << "] mm; times in s (step x dt, dt = " << format_number(scene.dt)
+            << " s)\n  estimated size: " << megabytes(total_bytes) << "\n";
+        if (!extension_fits(path, options.format))
+            out << "  note: VMD picks its reader by extension; name the file ."
+                << (options.format == ExportFormat::lammps_dump ? "lammpstrj" : "xyz")
+                << " or load it with an explicit type (docs/export.md)\n";
+        out.flush();
+    }
+
+    using clock = std::chrono::steady_clock;
+    const auto start = clock::now();
+    const StopSignalGuard signals;  // Ctrl-C stops between frames; a full disk fails a write
+    try {
+        replace_file_atomically(path, [&](const fs::path& tmp) {
+            std::ofstream file(tmp, std::ios::binary | std::ios::trunc);
+            if (!file)
+                throw FileError(tmp.string(), cat({"cannot create: ", std::strerror(errno)}));
+            CountProgress progress(out, choose_progress_style(quiet, ::isatty(STDOUT_FILENO) == 1),
+                                   frames.size(), "frames");
+            for (std::size_t i = 0; i < frames.size(); ++i) {
+                if (const int s = stop_signal_received()) throw ExportInterrupted{s};
+                const std::size_t k = frames[i];
+                const BodyState frame = i == 0 ? std::move(first) : run.reader.frame(k);
+                if (frame.size() != bodies || export_sphere_count(scene, frame, source) != spheres)
+                    throw FileError(
+                        source,
+                        cat({"frame ", std::to_string(k), " holds ", std::to_string(frame.size()),
+                             " bodies, the first exported frame ", std::to_string(bodies)}));
+                write_export_frame(file, scene, options, frame, steps[k], times[k]);
+                if (!file)
+                    throw FileError(path.string(),
+                                    cat({"write failed: ", std::strerror(errno),
+                                         " (nothing written; the disk may be full)"}));
+                progress.update(i + 1);
+            }
+            file.close();
+            if (!file)
+                throw FileError(path.string(), cat({"write failed: ", std::strerror(errno),
+                                                    " (nothing written)"}));
+            progress.finish();
+        });
+    } catch (const ExportInterrupted& stop) {
+        err << "rodsea: export stopped by signal " << stop.signal << "; nothing written ("
+            << path.string() << " is unchanged)\n";
+        return 128 + stop.signal;
+    }
+    if (!quiet) {
+        std::error_code ec;
+        const auto size = fs::file_size(path, ec);
+        const double seconds = std::chrono::duration<double>(clock::now() - start).count();
+        out << "  wrote " << path.string() << ": " << frames.size()
+            << (frames.size() == 1 ? " frame, " : " frames, ")
+            << megabytes(ec ? total_bytes : static_cast<double>(size)) << " in "
+            << format_number(std::round(seconds * 100) / 100) << " s\n";
+    }
+    return 0;
 }
 
 }  // namespace rodsea

@@ -1,5 +1,5 @@
 #pragma once
-// `rodsea export`: see kExportHelp and docs/visualisation.md.
+// `rodsea export`: see kExportHelp and docs/export.md.
 #include <iosfwd>
 #include <string>
 #include <vector>

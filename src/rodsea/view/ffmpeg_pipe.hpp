@@ -1,1 +1,49 @@
 #pragma once
+// Frames handed to an ffmpeg child process through a pipe and encoded as H.264 in an MP4 that
+// browsers play (yuv420p, +faststart). ffmpeg's messages go to a log that is quoted when it
+// fails; the child is killed and reaped if the encoder is abandoned.
+#include <sys/types.h>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "rodsea/view/frame_renderer.hpp"
+
+namespace rodsea {
+
+// $RODSEA_FFMPEG if set, otherwise `ffmpeg` on PATH; none when it cannot be found.
+std::optional<std::filesystem::path> find_ffmpeg();
+
+struct VideoSettings {
+    int width = 0, height = 0;  // pixels, both even
+    double fps = 20.0;
+    int crf = 20;  // x264 quality: 0 lossless … 51 worst; 18–23 look clean for these pictures
+};
+
+class FfmpegEncoder {
+  public:
+    // Starts ffmpeg writing `output` (an .mp4 path). Throws FileError if it cannot start.
+    FfmpegEncoder(const std::filesystem::path& ffmpeg, const std::filesystem::path& output,
+                  const VideoSettings& settings);
+    ~FfmpegEncoder();
+    FfmpegEncoder(const FfmpegEncoder&) = delete;
+    FfmpegEncoder& operator=(const FfmpegEncoder&) = delete;
+
+    // Throws FileError quoting ffmpeg's log if it has stopped reading.
+    void write_frame(const Image& image);
+    // Closes the pipe and waits; throws FileError quoting the log unless ffmpeg succeeded.
+    void finish();
+
+  private:
+    [[noreturn]] void fail(const std::string& what);
+    void stop_child();
+
+    std::filesystem::path output_, log_;
+    VideoSettings settings_;
+    pid_t child_ = -1;
+    int pipe_ = -1;
+    void (*previous_sigpipe_)(int) = nullptr;
+};
+
+}  // namespace rodsea

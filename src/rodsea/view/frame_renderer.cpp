@@ -1,1 +1,426 @@
 #include "rodsea/view/frame_renderer.hpp"
+
+#include <cairo.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numbers>
+
+#include "rodsea/analysis/order_parameters.hpp"
+#include "rodsea/error.hpp"
+#include "rodsea/view/colour_wheel.hpp"
+
+namespace rodsea {
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+constexpr Rgb kBackground{1.0, 1.0, 1.0};
+constexpr Rgb kOutline{0.22, 0.22, 0.22};
+constexpr Rgb kMediumFill{0.78, 0.78, 0.76};
+constexpr Rgb kPolarUniform{0.85, 0.25, 0.10};
+// Nematic colours are drawn in this many bins of the π period: one fill per bin instead of one
+// per body (10⁵ fills dominate the render time); 2° bins are finer than the eye separates.
+constexpr int kNematicBins = 90;
+
+bool is_polar(const Species& s) {
+    return s.kind == BodyKind::polar_rod;
+}
+
+void set_colour(cairo_t* cr, const Rgb& c) {
+    cairo_set_source_rgb(cr, c.r, c.g, c.b);
+}
+
+// Per species: the spheres, and how far the body reaches from its centre in the plane, so that
+// bodies far from the view (and their periodic images) cost one test.
+struct SpeciesGeometry {
+    const Shape* shape = nullptr;
+    double reach = 0.0;  // mm
+};
+
+std::vector<SpeciesGeometry> geometry_of(const RunPlan& plan) {
+    std::vector<SpeciesGeometry> g;
+    for (const Species& s : plan.engine.species) {
+        SpeciesGeometry sg{&s.shape, 0.0};
+        for (std::size_t k = 0; k < s.shape.sphere_count(); ++k)
+            sg.reach = std::max(sg.reach, norm(s.shape.offsets[k]) + s.shape.radii[k]);
+        g.push_back(sg);
+    }
+    return g;
+}
+
+// Appends the body's discs, shrunk by `inset` mm, to the current path for every periodic image
+// that reaches into the view. Nonzero winding makes their union one filled outline.
+//
+// A disc is drawn as a regular polygon whose edges stray at most a quarter pixel from the circle:
+// as exact as the pixels can show, and about half the cost of Cairo's arcs, which it flattens
+// from Bézier curves each time.
+class DiscPainter {
+  public:
+    DiscPainter(cairo_t* cr, const RunPlan& plan, const ViewRegion& view, double pixels_per_mm)
+        : cr_(cr),
+          geometry_(geometry_of(plan)),
+          view_(view),
+          margin_(1.0 / pixels_per_mm),
+          pixels_per_mm_(pixels_per_mm),
+          lx_(plan.engine.box.lx),
+          ly_(plan.engine.box.ly) {}
+
+    void add(const BodyState& bodies, std::size_t b, double inset) const {
+        const SpeciesGeometry& g = geometry_[bodies.species[b]];
+        const Vec3& c = bodies.position[b];
+        const double reach = g.reach + margin_;
+        for (int i = -1; i <= 1; ++i) {
+            const double cx = c.x + i * lx_;
+            if (cx + reach < view_.x0 || cx - reach > view_.x1) continue;
+            for (int j = -1; j <= 1; ++j) {
+                const double cy = c.y + j * ly_;
+                if (cy + reach < view_.y0 || cy - reach > view_.y1) continue;
+                add_image(g, {cx, cy, c.z}, bodies.orientation[b], inset);
+            }
+        }
+    }
+
+  private:
+    void add_image(const SpeciesGeometry& g, const Vec3& centre, const Quat& q,
+                   double inset) const {
+        for (std::size_t k = 0; k < g.shape->sphere_count(); ++k) {
+            const double r = g.shape->radii[k] - inset;
+            if (r <= 0.0) continue;
+            const Vec3 p = centre + rotate(q, g.shape->offsets[k]);
+            const std::vector<std::array<double, 2>>& corners = polygon(r * pixels_per_mm_);
+            cairo_move_to(cr_, p.x + r * corners[0][0], p.y + r * corners[0][1]);
+            for (std::size_t i = 1; i < corners.size(); ++i)
+                cairo_line_to(cr_, p.x + r * corners[i][0], p.y + r * corners[i][1]);
+            cairo_close_path(cr_);
+        }
+    }
+
+    // Unit-circle corners for a disc `radius_px` pixels across: n sides with the sagitta
+    // r (1 − cos(π/n)) at most 0.25 px. Corners run anticlockwise for every disc, so that the
+    // nonzero rule fills their union.
+    const std::vector<std::array<double, 2>>& polygon(double radius_px) const {
+        const double half_angle = std::acos(std::max(-1.0, 1.0 - 0.25 / radius_px));
+        const int sides =
+            std::clamp(static_cast<int>(std::ceil(std::numbers::pi / half_angle)), 6, 256);
+        std::vector<std::array<double, 2>>& corners = polygons_[sides];
+        if (corners.empty())
+            for (int i = 0; i < sides; ++i)
+                corners.push_back({std::cos(kTwoPi * i / sides), std::sin(kTwoPi * i / sides)});
+        return corners;
+    }
+
+    cairo_t* cr_;
+    std::vector<SpeciesGeometry> geometry_;
+    ViewRegion view_;
+    double margin_, pixels_per_mm_, lx_, ly_;
+    mutable std::map<int, std::vector<std::array<double, 2>>> polygons_;
+};
+
+// 1, 2 or 5 × 10^k mm, the largest not above a fifth of the view's width.
+double scale_bar_length(double view_width) {
+    const double target = view_width / 5.0;
+    const double decade = std::pow(10.0, std::floor(std::log10(target)));
+    for (double m : {5.0, 2.0, 1.0})
+        if (m * decade <= target) return m * decade;
+    return decade;
+}
+
+std::string fixed(double v, int digits) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+    return buf;
+}
+
+const char* plural_kind(BodyKind kind) {
+    switch (kind) {
+        case BodyKind::polar_rod:
+            return "polar rods";
+        case BodyKind::apolar_rod:
+            return "apolar rods";
+        case BodyKind::bead:
+            return "beads";
+    }
+    return "bodies";
+}
+
+// Annotations are drawn in pixels, after the bodies, on the identity transform.
+class Annotator {
+  public:
+    Annotator(cairo_t* cr, int width, int height)
+        : cr_(cr),
+          width_(width),
+          height_(height),
+          font_(std::clamp(static_cast<double>(width) / 75.0, 10.0, 28.0)) {
+        cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
+                               CAIRO_FONT_WEIGHT_NORMAL);
+        cairo_set_font_size(cr, font_);
+    }
+
+    double font() const { return font_; }
+
+    // Lines of text in a translucent box in the top-left corner.
+    void text_block(const std::vector<std::string>& lines) const {
+        double w = 0.0;
+        for (const std::string& line : lines) {
+            cairo_text_extents_t e;
+            cairo_text_extents(cr_, line.c_str(), &e);
+            w = std::max(w, e.x_advance);
+        }
+        const double pad = 0.5 * font_, step = 1.35 * font_;
+        cairo_set_source_rgba(cr_, 1.0, 1.0, 1.0, 0.82);
+        cairo_rectangle(cr_, pad, pad, w + 2 * pad, step * static_cast<double>(lines.size()) + pad);
+        cairo_fill(cr_);
+        set_colour(cr_, {0.0, 0.0, 0.0});
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            cairo_move_to(cr_, 2 * pad, pad + step * static_cast<double>(i + 1) - 0.1 * font_);
+            cairo_show_text(cr_, lines[i].c_str());
+        }
+    }
+
+    void scale_bar(double length_mm, double pixels_per_mm) const {
+        const double bar = length_mm * pixels_per_mm, pad = font_;
+        const double y = height_ - pad;
+        cairo_set_source_rgba(cr_, 1.0, 1.0, 1.0, 0.82);
+        cairo_rectangle(cr_, 0.5 * pad, y - 2.2 * font_, bar + pad, 2.2 * font_ + 0.5 * pad);
+        cairo_fill(cr_);
+        set_colour(cr_, {0.0, 0.0, 0.0});
+        cairo_rectangle(cr_, pad, y - 0.35 * font_, bar, 0.35 * font_);
+        cairo_fill(cr_);
+        const std::string label = format_number(length_mm) + " mm";
+        cairo_text_extents_t e;
+        cairo_text_extents(cr_, label.c_str(), &e);
+        cairo_move_to(cr_, pad + 0.5 * (bar - e.x_advance), y - 0.7 * font_);
+        cairo_show_text(cr_, label.c_str());
+    }
+
+    // A colour ring in the bottom-right corner (`slot` 0 is rightmost): the colour of an axis
+    // at angle θ sits at θ on the ring, measured anticlockwise from +x as in the picture.
+    void wheel(int slot, const std::string& caption, Rgb (*colour)(double)) const {
+        const double radius = std::max(2.2 * font_, static_cast<double>(width_) / 28.0);
+        const double box = 2.0 * radius + 3.2 * font_;
+        const double cx = width_ - font_ - 0.5 * box - static_cast<double>(slot) * (box + font_);
+        const double cy = height_ - font_ - radius - 0.6 * font_;
+        cairo_set_source_rgba(cr_, 1.0, 1.0, 1.0, 0.82);
+        cairo_rectangle(cr_, cx - 0.5 * box, cy - radius - 2.4 * font_, box,
+                        2.0 * radius + 3.0 * font_);
+        cairo_fill(cr_);
+        constexpr int kSegments = 180;
+        for (int k = 0; k < kSegments; ++k) {
+            const double a0 = kTwoPi * k / kSegments, a1 = kTwoPi * (k + 1) / kSegments;
+            set_colour(cr_, colour(0.5 * (a0 + a1)));
+            // Pixel rows grow downwards, so the world angle θ is drawn at −θ.
+            cairo_new_path(cr_);
+            cairo_arc_negative(cr_, cx, cy, radius, -a0, -a1 - 0.002);
+            cairo_arc(cr_, cx, cy, 0.55 * radius, -a1 - 0.002, -a0);
+            cairo_close_path(cr_);
+            cairo_fill(cr_);
+        }
+        // The reference direction θ = 0 and the caption.
+        set_colour(cr_, {0.0, 0.0, 0.0});
+        cairo_set_line_width(cr_, std::max(1.0, 0.12 * font_));
+        cairo_move_to(cr_, cx, cy);
+        cairo_line_to(cr_, cx + 0.5 * radius, cy);
+        cairo_stroke(cr_);
+        cairo_set_font_size(cr_, 0.8 * font_);
+        cairo_move_to(cr_, cx + 0.1 * radius, cy - 0.12 * font_);
+        cairo_show_text(cr_, "0");
+        cairo_text_extents_t e;
+        cairo_text_extents(cr_, caption.c_str(), &e);
+        cairo_move_to(cr_, cx - 0.5 * e.x_advance, cy - radius - 0.9 * font_);
+        cairo_show_text(cr_, caption.c_str());
+        cairo_set_font_size(cr_, font_);
+    }
+
+  private:
+    cairo_t* cr_;
+    int width_, height_;
+    double font_;
+};
+
+}  // namespace
+
+FrameRenderer::FrameRenderer(const RunPlan& plan, const RenderOptions& options)
+    : plan_(plan), options_(options) {
+    const double lx = plan.engine.box.lx, ly = plan.engine.box.ly;
+    if (options.width < 64 || options.width > 16384)
+        throw InvalidParameter("--size", std::to_string(options.width) + " px", "[64, 16384] px");
+    region_ = options.region.value_or(ViewRegion{0.0, lx, 0.0, ly});
+    const ViewRegion& r = region_;
+    if (!(r.x0 >= 0.0 && r.x0 < r.x1 && r.x1 <= lx && r.y0 >= 0.0 && r.y0 < r.y1 && r.y1 <= ly))
+        throw InvalidParameter("--region",
+                               format_number(r.x0) + "," + format_number(r.x1) + "," +
+                                   format_number(r.y0) + "," + format_number(r.y1) + " mm",
+                               "X0,X1,Y0,Y1 with 0 <= X0 < X1 <= " + format_number(lx) +
+                                   " and 0 <= Y0 < Y1 <= " + format_number(ly) + " mm (the box)");
+    width_ = options.width;
+    scale_ = static_cast<double>(width_) / (r.x1 - r.x0);
+    height_ = std::max(2, 2 * static_cast<int>(std::lround(0.5 * scale_ * (r.y1 - r.y0))));
+    if (height_ > 16384)
+        throw InvalidParameter("--size", std::to_string(options.width) + " px",
+                               "a width that keeps the height within 16384 px",
+                               "this view would be " + std::to_string(height_) + " px high");
+
+    double polar_length = 0.0;
+    for (const Species& s : plan.engine.species)
+        if (is_polar(s)) polar_length = std::max(polar_length, s.shape.extent);
+    flocks_.eps = options.flock_eps.value_or(0.5 * polar_length);
+    flocks_.min_samples = options.flock_min_samples;
+    if (options.polar == PolarColouring::flock) {
+        if (polar_length == 0.0)
+            throw InvalidParameter("--colour", "flock", "direction or uniform",
+                                   "the run has no polar rods to group into flocks");
+        if (!(flocks_.eps > 0.0 && flocks_.eps <= 0.5 * std::min(lx, ly)))
+            throw InvalidParameter("--flock-eps", format_number(flocks_.eps) + " mm",
+                                   "(0, " + format_number(0.5 * std::min(lx, ly)) + "] mm");
+    }
+}
+
+Image FrameRenderer::render(const BodyState& bodies, const FrameLabel& label) const {
+    Image image;
+    render_into(bodies, label, image);
+    return image;
+}
+
+void FrameRenderer::render_into(const BodyState& bodies, const FrameLabel& label,
+                                Image& image) const {
+    image.width = width_;
+    image.height = height_;
+    image.pixels.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), 0);
+    cairo_surface_t* surface =
+        cairo_image_surface_create_for_data(reinterpret_cast<unsigned char*>(image.pixels.data()),
+                                            CAIRO_FORMAT_ARGB32, width_, height_, width_ * 4);
+    cairo_t* cr = cairo_create(surface);
+    set_colour(cr, kBackground);
+    cairo_paint(cr);
+
+    // World (mm, y up) to pixels.
+    cairo_matrix_t world;
+    cairo_matrix_init(&world, scale_, 0.0, 0.0, -scale_, -region_.x0 * scale_, region_.y1 * scale_);
+    cairo_set_matrix(cr, &world);
+    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+    cairo_set_tolerance(cr, 0.3);
+    cairo_set_antialias(cr, CAIRO_ANTIALIAS_FAST);
+
+    // An outline one pixel wide inside each body's true edge, where the smallest sphere is big
+    // enough on screen to keep some colour inside it; otherwise plain fills.
+    double smallest_radius = 1e300;
+    for (const Species& s : plan_.engine.species)
+        for (double r : s.shape.radii)
+            smallest_radius = std::min(smallest_radius, r);
+    const double outline = smallest_radius * scale_ >= 2.5 ? 1.0 / scale_ : 0.0;
+    const DiscPainter painter(cr, plan_, region_, scale_);
+
+    std::vector<std::size_t> polar, medium;
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+        (is_polar(plan_.engine.species[bodies.species[b]]) ? polar : medium).push_back(b);
+
+    // The medium first, in one path per colour: the polar rods are what the eye looks for.
+    if (!medium.empty() && outline > 0.0) {
+        cairo_new_path(cr);
+        for (std::size_t b : medium)
+            painter.add(bodies, b, 0.0);
+        set_colour(cr, kOutline);
+        cairo_fill(cr);
+    }
+    const bool nematic = options_.medium == MediumColouring::nematic;
+    std::vector<std::vector<std::size_t>> bins(nematic ? kNematicBins + 1 : 1);
+    for (std::size_t b : medium) {
+        const bool has_axis = plan_.engine.species[bodies.species[b]].kind == BodyKind::apolar_rod;
+        if (!nematic || !has_axis) {
+            bins.back().push_back(b);
+            continue;
+        }
+        const double theta = in_plane_angle(bodies.orientation[b]);
+        const double turns = theta / std::numbers::pi - std::floor(theta / std::numbers::pi);
+        bins[static_cast<std::size_t>(turns * kNematicBins) % kNematicBins].push_back(b);
+    }
+    for (std::size_t k = 0; k < bins.size(); ++k) {
+        if (bins[k].empty()) continue;
+        cairo_new_path(cr);
+        for (std::size_t b : bins[k])
+            painter.add(bodies, b, outline);
+        set_colour(cr, k + 1 == bins.size() ? kMediumFill
+                                            : nematic_colour((static_cast<double>(k) + 0.5) *
+                                                             std::numbers::pi / kNematicBins));
+        cairo_fill(cr);
+    }
+
+    // Polar rods one by one, lowest first, each in its own colour.
+    std::vector<double> angles;
+    for (std::size_t b : polar)
+        angles.push_back(in_plane_angle(bodies.orientation[b]));
+    std::vector<int> labels;
+    int flocks = 0;
+    if (options_.polar == PolarColouring::flock && !polar.empty()) {
+        std::vector<Vec3> centres;
+        for (std::size_t b : polar)
+            centres.push_back(bodies.position[b]);
+        labels = dbscan(centres, {plan_.engine.box.lx, plan_.engine.box.ly}, flocks_);
+        for (int l : labels)
+            flocks = std::max(flocks, l + 1);
+    }
+    std::vector<std::size_t> order(polar.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+        order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return bodies.position[polar[a]].z < bodies.position[polar[b]].z;
+    });
+    for (std::size_t i : order) {
+        const std::size_t b = polar[i];
+        if (outline > 0.0) {
+            cairo_new_path(cr);
+            painter.add(bodies, b, 0.0);
+            set_colour(cr, kOutline);
+            cairo_fill(cr);
+        }
+        cairo_new_path(cr);
+        painter.add(bodies, b, outline);
+        set_colour(cr, options_.polar == PolarColouring::direction ? direction_colour(angles[i])
+                       : options_.polar == PolarColouring::flock   ? label_colour(labels[i])
+                                                                   : kPolarUniform);
+        cairo_fill(cr);
+    }
+
+    if (options_.annotate) {
+        cairo_identity_matrix(cr);
+        const Annotator note(cr, width_, height_);
+        std::vector<std::string> lines;
+        lines.push_back("t = " + fixed(label.time, 4) + " s   frame " +
+                        std::to_string(label.frame) + "   step " + std::to_string(label.step));
+        const double area = plan_.engine.box.lx * plan_.engine.box.ly;
+        for (std::uint32_t s = 0; s < plan_.engine.species.size(); ++s) {
+            const Species& sp = plan_.engine.species[s];
+            std::string line =
+                sp.name + ": " + std::to_string(plan_.counts[s]) + " " + plural_kind(sp.kind) +
+                ", φ = " +
+                fixed(static_cast<double>(plan_.counts[s]) * sp.shape.projected_area / area, 3);
+            if (sp.kind == BodyKind::polar_rod)
+                line += ", P = " + fixed(orientational_order(bodies, s, 1), 2);
+            else if (sp.kind == BodyKind::apolar_rod)
+                line += ", S = " + fixed(orientational_order(bodies, s, 2), 2);
+            lines.push_back(line);
+        }
+        if (options_.polar == PolarColouring::flock)
+            lines.push_back("colour: flock (DBSCAN ε = " + format_number(flocks_.eps) + " mm), " +
+                            std::to_string(flocks) + " flocks; grey: none");
+        if (options_.region)
+            lines.push_back("view: x " + format_number(region_.x0) + "–" +
+                            format_number(region_.x1) + " mm, y " + format_number(region_.y0) +
+                            "–" + format_number(region_.y1) + " mm");
+        note.text_block(lines);
+        note.scale_bar(scale_bar_length(region_.x1 - region_.x0), scale_);
+        int slot = 0;
+        if (!polar.empty() && options_.polar == PolarColouring::direction)
+            note.wheel(slot++, "polar axis", direction_colour);
+        if (nematic) note.wheel(slot, "medium axis", nematic_colour);
+    }
+    cairo_destroy(cr);
+    cairo_surface_flush(surface);
+    cairo_surface_destroy(surface);
+}
+
+}  // namespace rodsea

@@ -1,14 +1,130 @@
 #include "rodsea/view/movie_command.hpp"
 
+#include <signal.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
 #include <ostream>
+
+#include "rodsea/error.hpp"
+#include "rodsea/io/atomic_file.hpp"
+#include "rodsea/io/output_path.hpp"
+#include "rodsea/io/stored_run.hpp"
+#include "rodsea/run/count_progress.hpp"
+#include "rodsea/run/run_driver.hpp"
+#include "rodsea/run/stop_signal.hpp"
+#include "rodsea/view/ffmpeg_pipe.hpp"
+#include "rodsea/view/render_flags.hpp"
 
 namespace rodsea {
 
-const char* const kMovieHelp = "rodsea movie: not yet\n";
+const char* const kMovieHelp =
+    R"(rodsea movie RUN_DIR [-o FILE.mp4] [--fps F] [--every K] [--from T] [--to T] [options]
 
-int movie_command(const std::vector<std::string>&, std::ostream&, std::ostream& err) {
-    err << "rodsea movie: not yet\n";
-    return 1;
+A movie of a run (docs/visualisation.md): the frames drawn as by `rodsea render` and piped to
+ffmpeg (Debian's package), encoded as H.264 in an MP4 that browsers play. The file appears only
+when it is complete; Ctrl-C stops cleanly and leaves no partial movie.
+
+  -o, --output F   the MP4 to write (default RUN_DIR/movie.mp4)
+  --fps F          frames per second of the movie, (0, 120] (default 20)
+  --every K        use every K-th trajectory frame (default 1)
+  --from T, --to T the part of the run to show, s (default: all of it)
+  --crf Q          H.264 quality, 0 (lossless) … 51 (worst) (default 20)
+  --quiet          no plan and no progress bar
+Movies need even pixel sizes: --size must be even (default 800).
+)";
+
+namespace {
+
+struct StopRequested {
+    int signal = 0;
+};
+
+}  // namespace
+
+int movie_command(const std::vector<std::string>& words, std::ostream& out, std::ostream&) {
+    std::vector<std::string> valued = kRenderValuedFlags;
+    valued.insert(valued.end(), {"--output", "--fps", "--every", "--from", "--to", "--crf"});
+    std::vector<std::string> switches = kRenderSwitches;
+    switches.insert(switches.end(), {"--quiet", "--help"});
+    const Arguments args = parse_arguments(words, valued, switches, "movie");
+    if (args.has("--help")) {
+        out << kMovieHelp << kRenderFlagsHelp;
+        return 0;
+    }
+    if (args.positional.size() != 1)
+        throw InvalidParameter("RUN_DIR", std::to_string(args.positional.size()) + " given",
+                               "exactly one run directory (see rodsea movie --help)");
+    const RenderOptions options = render_options_from(args, 800);
+    if (options.width % 2 != 0)
+        throw InvalidParameter("--size", std::to_string(options.width) + " px", "an even width",
+                               "H.264 in yuv420p needs even sizes");
+    VideoSettings video;
+    video.fps = parse_number("--fps", args.value("--fps").value_or("20"), 1e-3, 120.0, "1/s");
+    video.crf = static_cast<int>(parse_count("--crf", args.value("--crf").value_or("20"), 0, 51));
+    const long long every =
+        parse_count("--every", args.value("--every").value_or("1"), 1, 1LL << 40);
+    std::optional<double> from, to;
+    if (const auto f = args.value("--from")) from = parse_number("--from", *f, -1e12, 1e12, "s");
+    if (const auto t = args.value("--to")) to = parse_number("--to", *t, -1e12, 1e12, "s");
+
+    const StoredRun run = open_stored_run(args.positional[0]);
+    const std::vector<std::size_t> frames = select_frame_window(run, from, to, every);
+    const std::filesystem::path output =
+        args.value("--output").value_or((run.run_dir / "movie.mp4").string());
+    check_output_file("--output", output, ".mp4");
+    const FrameRenderer renderer(run.plan, options);
+    video.width = renderer.width();
+    video.height = renderer.height();
+    const std::optional<std::filesystem::path> ffmpeg = find_ffmpeg();
+    if (!ffmpeg)
+        throw std::runtime_error(
+            "ffmpeg not found (looked for $RODSEA_FFMPEG, then ffmpeg on PATH); install Debian's "
+            "ffmpeg package: ./scripts/install-deps.sh");
+
+    const bool quiet = args.has("--quiet");
+    const std::vector<double>& times = run.times();
+    if (!quiet)
+        out << "rodsea movie " << run.run_dir.string() << ": " << frames.size()
+            << " frames (t = " << format_number(times[frames.front()]) << " to "
+            << format_number(times[frames.back()]) << " s, every " << every << ") at "
+            << format_number(video.fps)
+            << " fps = " << format_number(static_cast<double>(frames.size()) / video.fps)
+            << " s of video; " << run.total_bodies() << " bodies; " << describe(options, renderer)
+            << "\n"
+            << "  H.264 (crf " << video.crf << ", yuv420p) by " << ffmpeg->string() << " → "
+            << output.string() << "\n";
+
+    const auto start = std::chrono::steady_clock::now();
+    const StopSignalGuard stop_guard;
+    try {
+        replace_file_atomically(output, [&](const std::filesystem::path& tmp) {
+            FfmpegEncoder encoder(*ffmpeg, tmp, video);
+            CountProgress progress(out, choose_progress_style(quiet, ::isatty(STDOUT_FILENO) == 1),
+                                   frames.size(), "frames");
+            Image image;
+            for (std::size_t i = 0; i < frames.size(); ++i) {
+                if (const int signal = stop_signal_received()) throw StopRequested{signal};
+                const std::size_t k = frames[i];
+                renderer.render_into(run.reader.frame(k), {times[k], run.reader.steps()[k], k},
+                                     image);
+                encoder.write_frame(image);
+                progress.update(i + 1);
+            }
+            encoder.finish();
+            progress.finish();
+        });
+    } catch (const StopRequested& stop) {
+        out << "\nrodsea movie: stopped by signal " << stop.signal << "; no movie written\n";
+        return stop.signal == SIGTERM ? ExitCode::kExitTerminated : ExitCode::kExitInterrupted;
+    }
+    if (!quiet)
+        out << "wrote " << output.string() << " ("
+            << format_number(
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count())
+            << " s)\n";
+    return 0;
 }
 
 }  // namespace rodsea

@@ -1,14 +1,81 @@
 #include "rodsea/view/render_command.hpp"
 
+#include <chrono>
 #include <ostream>
+
+#include "rodsea/error.hpp"
+#include "rodsea/io/output_path.hpp"
+#include "rodsea/io/stored_run.hpp"
+#include "rodsea/view/png_file.hpp"
+#include "rodsea/view/render_flags.hpp"
 
 namespace rodsea {
 
-const char* const kRenderHelp = "rodsea render: not yet\n";
+const char* const kRenderHelp =
+    R"(rodsea render RUN_DIR [--frame N | --time T] [-o FILE.png] [options]
 
-int render_command(const std::vector<std::string>&, std::ostream&, std::ostream& err) {
-    err << "rodsea render: not yet\n";
-    return 1;
+A top view of one frame of a run (docs/visualisation.md): every body drawn as its true outline
+(the union of its spheres), polar rods coloured by the direction of their axis, the medium in
+grey, the time, area fractions and order parameters in a corner, a scale bar in mm and a colour
+legend. Bodies that cross the box edge appear on both sides (the box is periodic).
+
+  --frame N        frame index, 0-based; negative counts from the end (default -1, the last)
+  --time T         the frame nearest T, s
+  -o, --output F   the PNG to write (default RUN_DIR/frame_<N>.png)
+)";
+
+namespace {
+
+std::string frame_name(std::size_t frame) {
+    std::string digits = std::to_string(frame);
+    return "frame_" + std::string(digits.size() < 6 ? 6 - digits.size() : 0, '0') + digits + ".png";
+}
+
+}  // namespace
+
+int render_command(const std::vector<std::string>& words, std::ostream& out, std::ostream&) {
+    std::vector<std::string> valued = kRenderValuedFlags;
+    valued.insert(valued.end(), {"--frame", "--time", "--output"});
+    std::vector<std::string> switches = kRenderSwitches;
+    switches.insert(switches.end(), {"--quiet", "--help"});
+    const Arguments args = parse_arguments(words, valued, switches, "render");
+    if (args.has("--help")) {
+        out << kRenderHelp << kRenderFlagsHelp;
+        return 0;
+    }
+    if (args.positional.size() != 1)
+        throw InvalidParameter("RUN_DIR", std::to_string(args.positional.size()) + " given",
+                               "exactly one run directory (see rodsea render --help)");
+    const RenderOptions options = render_options_from(args, 1200);
+    std::optional<long long> frame;
+    std::optional<double> time;
+    if (const auto f = args.value("--frame"))
+        frame = parse_count("--frame", *f, -(1LL << 40), 1LL << 40);
+    if (const auto t = args.value("--time")) time = parse_number("--time", *t, -1e12, 1e12, "s");
+
+    const StoredRun run = open_stored_run(args.positional[0]);
+    const std::size_t index = select_frame(run, frame, time);
+    const std::filesystem::path output =
+        args.value("--output").value_or((run.run_dir / frame_name(index)).string());
+    check_output_file("--output", output, ".png");
+    const FrameRenderer renderer(run.plan, options);
+    const bool quiet = args.has("--quiet");
+    if (!quiet)
+        out << "rodsea render " << run.run_dir.string() << ": frame " << index << " of "
+            << run.frames() << " (t = " << format_number(run.times()[index]) << " s), "
+            << run.total_bodies() << " bodies; " << describe(options, renderer) << "\n";
+
+    const auto start = std::chrono::steady_clock::now();
+    const BodyState bodies = run.reader.frame(index);
+    const Image image =
+        renderer.render(bodies, {run.times()[index], run.reader.steps()[index], index});
+    write_png(image, output);
+    if (!quiet)
+        out << "wrote " << output.string() << " ("
+            << format_number(
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count())
+            << " s)\n";
+    return 0;
 }
 
 }  // namespace rodsea

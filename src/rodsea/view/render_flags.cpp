@@ -1,0 +1,87 @@
+#include "rodsea/view/render_flags.hpp"
+
+#include "rodsea/error.hpp"
+
+namespace rodsea {
+
+const std::vector<std::string> kRenderValuedFlags{"--size", "--region", "--colour", "--medium",
+                                                  "--flock-eps"};
+const std::vector<std::string> kRenderSwitches{"--no-annotations"};
+
+const char* const kRenderFlagsHelp =
+    R"(  --size W         image width in pixels, [64, 16384]; the height follows the view
+  --region X0,X1,Y0,Y1
+                   show only this part of the box, mm (default: the whole box)
+  --colour C       polar rods: direction (cyclic colour wheel of the axis θ, thick → thin;
+                   default), flock (DBSCAN label, as `rodsea analyze`), uniform
+  --medium M       apolar rods: neutral (default) or nematic (wheel of 2θ: θ and θ+π alike)
+  --flock-eps E    DBSCAN radius for --colour flock, mm (default ℓ_p / 2)
+  --no-annotations no text, scale bar or legend
+)";
+
+namespace {
+
+std::vector<double> split_numbers(const std::string& flag, const std::string& text) {
+    std::vector<double> values;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t comma = std::min(text.find(',', start), text.size());
+        values.push_back(parse_number(flag, text.substr(start, comma - start), -1e9, 1e9, "mm"));
+        start = comma + 1;
+    }
+    return values;
+}
+
+}  // namespace
+
+RenderOptions render_options_from(const Arguments& args, int default_width) {
+    RenderOptions o;
+    o.width = static_cast<int>(parse_count(
+        "--size", args.value("--size").value_or(std::to_string(default_width)), 64, 16384));
+    if (const auto region = args.value("--region")) {
+        const std::vector<double> v = split_numbers("--region", *region);
+        if (v.size() != 4)
+            throw InvalidParameter("--region", *region, "four numbers X0,X1,Y0,Y1 in mm");
+        o.region = ViewRegion{v[0], v[1], v[2], v[3]};
+    }
+    if (const auto colour = args.value("--colour")) {
+        if (*colour == "direction")
+            o.polar = PolarColouring::direction;
+        else if (*colour == "flock")
+            o.polar = PolarColouring::flock;
+        else if (*colour == "uniform")
+            o.polar = PolarColouring::uniform;
+        else
+            throw InvalidParameter("--colour", *colour, "direction, flock or uniform");
+    }
+    if (const auto medium = args.value("--medium")) {
+        if (*medium == "neutral")
+            o.medium = MediumColouring::neutral;
+        else if (*medium == "nematic")
+            o.medium = MediumColouring::nematic;
+        else
+            throw InvalidParameter("--medium", *medium, "neutral or nematic");
+    }
+    if (const auto eps = args.value("--flock-eps"))
+        o.flock_eps = parse_number("--flock-eps", *eps, 1e-3, 1e6, "mm");
+    o.annotate = !args.has("--no-annotations");
+    return o;
+}
+
+std::string describe(const RenderOptions& options, const FrameRenderer& renderer) {
+    const char* polar = options.polar == PolarColouring::direction ? "direction"
+                        : options.polar == PolarColouring::flock   ? "flock"
+                                                                   : "uniform";
+    std::string s = std::to_string(renderer.width()) + "×" + std::to_string(renderer.height()) +
+                    " px, polar rods by " + polar + ", medium " +
+                    (options.medium == MediumColouring::nematic ? "by nematic axis" : "neutral");
+    const ViewRegion& r = renderer.region();
+    if (options.region)
+        s += ", view x " + format_number(r.x0) + "–" + format_number(r.x1) + " y " +
+             format_number(r.y0) + "–" + format_number(r.y1) + " mm";
+    else
+        s += ", whole box";
+    return s;
+}
+
+}  // namespace rodsea

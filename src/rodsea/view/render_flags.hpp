@@ -1,0 +1,24 @@
+#pragma once
+// The picture options shared by `rodsea render` and `rodsea movie`, parsed from their flags.
+#include <string>
+#include <vector>
+
+#include "rodsea/cli/arguments.hpp"
+#include "rodsea/view/frame_renderer.hpp"
+
+namespace rodsea {
+
+// Valued flags and switches that render_options_from() reads.
+extern const std::vector<std::string> kRenderValuedFlags;
+extern const std::vector<std::string> kRenderSwitches;
+// Their help text, for both commands' --help.
+extern const char* const kRenderFlagsHelp;
+
+// Throws InvalidParameter naming the flag for an unknown colouring or a malformed number;
+// ranges that depend on the run are checked by FrameRenderer.
+RenderOptions render_options_from(const Arguments& args, int default_width);
+
+// "polar by direction, medium neutral, 1200×800 px, whole box": for the plan line.
+std::string describe(const RenderOptions& options, const FrameRenderer& renderer);
+
+}  // namespace rodsea
