@@ -39,11 +39,13 @@ usage:
                                                           bars (docs/analysis.md)
   rodsea meanfield [--a A --alpha AL ...]                 the paper's mean-field model
                                                           (docs/meanfield.md)
-  rodsea render RUN_DIR [--frame N|--time T] -o F.png   a top view of one frame
-  rodsea movie RUN_DIR -o F.mp4 [--fps F --every K]     an H.264 movie of the run (ffmpeg)
-  rodsea plot ANALYSIS_DIR|TABLE.csv -o DIR             the paper's figure types (matplotlib)
+  rodsea render RUN_DIR [--frame N|--time T] [-o F.png] a top view of one frame
+  rodsea movie RUN_DIR [-o F.mp4] [--fps F --every K]   an H.264 movie of the run (ffmpeg)
+                                                          (both: docs/visualisation.md)
+  rodsea plot ANALYSIS_DIR|TABLE.csv -o DIR             the paper's figure types, matplotlib
+                                                          (docs/plots.md)
   rodsea export RUN_DIR --format lammps-dump|xyz -o F   one particle per sphere, for VMD and
-                                                          OVITO (docs/visualisation.md)
+                                                          OVITO (docs/export.md)
   rodsea help COMMAND | --help | --version
 
 Units everywhere: mm, s (and rad, Hz); masses in an arbitrary unit. Examples: examples/*.toml.
