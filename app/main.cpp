@@ -42,7 +42,7 @@ usage:
   rodsea render RUN_DIR [--frame N|--time T] [-o F.png] a top view of one frame
   rodsea movie RUN_DIR [-o F.mp4] [--fps F --every K]   an H.264 movie of the run (ffmpeg)
                                                           (both: docs/visualisation.md)
-  rodsea plot ANALYSIS_DIR|TABLE.csv -o DIR             the paper's figure types, matplotlib
+  rodsea plot ANALYSIS_DIR|TABLE.csv -o DIR [--dpi D]   the paper's figure types, matplotlib
                                                           (docs/plots.md)
   rodsea export RUN_DIR --format lammps-dump|xyz -o F   one particle per sphere, for VMD and
                                                           OVITO (docs/export.md)

@@ -12,7 +12,7 @@ packages=(
     libhdf5-dev                         # HDF5 trajectories and checkpoints (H5MD layout)
     pkg-config libcairo2-dev fonts-dejavu-core  # `rodsea render`: Cairo pictures with text
     ffmpeg                              # `rodsea movie`: H.264 MP4 (and ffprobe for its test)
-    python3 python3-numpy python3-matplotlib  # the demo picture (scripts/plot_snapshot.py)
+    python3 python3-numpy python3-matplotlib  # `rodsea plot` (scripts/rodsea_plots/)
     python3-h5py python3-scipy          # reading trajectories from Python; cross-checks
     python3-mdanalysis python3-sklearn  # MDAnalysis reads trajectory and export (tested)
 )
