@@ -61,8 +61,8 @@ int render_command(const std::vector<std::string>& words, std::ostream& out, std
     const FrameRenderer renderer(run.plan, options);
     const bool quiet = args.has("--quiet");
     if (!quiet)
-        out << "rodsea render " << run.run_dir.string() << ": frame " << index << " of "
-            << run.frames() << " (t = " << format_number(run.times()[index]) << " s), "
+        out << "rodsea render " << run.run_dir.string() << ": frame " << index << " of 0–"
+            << run.frames() - 1 << " (t = " << format_number(run.times()[index]) << " s), "
             << run.total_bodies() << " bodies; " << describe(options, renderer) << "\n";
 
     const auto start = std::chrono::steady_clock::now();
