@@ -2,6 +2,8 @@
 // what it will do, then does it. Exit codes: see ExitCode in rodsea/run/run_driver.hpp.
 #include <unistd.h>
 
+#include <csignal>
+
 #include <filesystem>
 #include <functional>
 #include <iostream>
@@ -220,6 +222,9 @@ int command_export(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Output piped into `head` or a closed terminal must not kill a command halfway through a
+    // file it is writing: a failed write to stdout is harmless, a half-written output is not.
+    std::signal(SIGPIPE, SIG_IGN);
     if (argc < 2 || std::string_view(argv[1]) == "--help" || std::string_view(argv[1]) == "-h") {
         std::cout << kUsage;
         return argc < 2 ? ExitCode::kExitBadInput : ExitCode::kExitOk;

@@ -18,29 +18,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Runs a shell command and returns its standard output.
-std::string shell_output(const std::string& command) {
-    std::string out;
-    if (FILE* pipe = ::popen(command.c_str(), "r")) {
-        char buffer[256];
-        while (std::fgets(buffer, sizeof buffer, pipe))
-            out += buffer;
-        ::pclose(pipe);
-    }
-    return out;
+// Writes an executable shell script standing in for ffmpeg.
+fs::path fake_ffmpeg(const fs::path& path, const std::string& body) {
+    std::ofstream(path) << "#!/bin/sh\n" << body;
+    fs::permissions(path, fs::perms::owner_all);
+    return path;
 }
-
-// Sets an environment variable for the child processes of one test.
-class ScopedEnv {
-  public:
-    ScopedEnv(const char* name, const std::string& value) : name_(name) {
-        ::setenv(name, value.c_str(), 1);
-    }
-    ~ScopedEnv() { ::unsetenv(name_); }
-
-  private:
-    const char* name_;
-};
 
 class MovieCli : public ::testing::Test {
   protected:
@@ -124,22 +107,67 @@ TEST_F(MovieCli, MissingOrFailingFfmpegLeavesNoFile) {
         const ChildResult r =
             run_rodsea({"movie", run().string(), "-o", mp4.string()}, scratch_->path());
         EXPECT_NE(r.exit_code, 0);
-        EXPECT_NE(r.err.find("ffmpeg not found"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("RODSEA_FFMPEG=" + (scratch_->path() / "no-ffmpeg").string()),
+                  std::string::npos)
+            << r.err;
+    }
+    {
+        // No ffmpeg anywhere on PATH (rodsea itself is started by its full path).
+        const ScopedEnv env("PATH", (scratch_->path() / "empty-bin").string());
+        const ChildResult r =
+            run_rodsea({"movie", run().string(), "-o", mp4.string()}, scratch_->path());
+        EXPECT_NE(r.exit_code, 0);
+        EXPECT_NE(r.err.find("ffmpeg not found on PATH"), std::string::npos) << r.err;
         EXPECT_NE(r.err.find("install-deps"), std::string::npos) << r.err;
     }
     {
         // An "ffmpeg" that reads a little and dies: the failure is reported with its message,
         // and neither the partial movie nor the log is left.
-        const fs::path fake = path("fake-ffmpeg");
-        std::ofstream(fake) << "#!/bin/sh\nhead -c 1000 > /dev/null\necho 'encoder exploded' >&2\n"
-                               "exit 3\n";
-        fs::permissions(fake, fs::perms::owner_all);
-        const ScopedEnv env("RODSEA_FFMPEG", fake.string());
+        const ScopedEnv env(
+            "RODSEA_FFMPEG",
+            fake_ffmpeg(path("fake-ffmpeg"),
+                        "head -c 1000 > /dev/null\necho 'encoder exploded' >&2\nexit 3\n")
+                .string());
         const ChildResult r =
             run_rodsea({"movie", run().string(), "-o", mp4.string(), "--quiet"}, scratch_->path());
         EXPECT_EQ(r.exit_code, 74) << r.err;
         EXPECT_NE(r.err.find("encoder exploded"), std::string::npos) << r.err;
     }
+    EXPECT_FALSE(fs::exists(mp4));
+    EXPECT_TRUE(leftovers().empty()) << leftovers().front();
+}
+
+TEST_F(MovieCli, FfmpegFailingAfterTheLastFrameLeavesNoFile) {
+    // Reads every frame, then fails while "finishing" the file: the error comes from the wait
+    // for ffmpeg, not from a broken pipe.
+    const ScopedEnv env("RODSEA_FFMPEG",
+                        fake_ffmpeg(path("fake-ffmpeg"),
+                                    "cat > /dev/null\necho 'moov atom not written' >&2\nexit 5\n")
+                            .string());
+    const fs::path mp4 = path("late.mp4");
+    const ChildResult r =
+        run_rodsea({"movie", run().string(), "-o", mp4.string(), "--quiet"}, scratch_->path());
+    EXPECT_EQ(r.exit_code, 74) << r.err;
+    EXPECT_NE(r.err.find("exit status 5"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("moov atom not written"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(mp4.string() + ":"), std::string::npos) << "names the user's file";
+    EXPECT_FALSE(fs::exists(mp4));
+    EXPECT_TRUE(leftovers().empty()) << leftovers().front();
+}
+
+TEST_F(MovieCli, CtrlCStopsCleanlyAndLeavesNoFile) {
+    // An ffmpeg that is slow to start reading: rodsea is blocked writing the first frame (a
+    // 2.5 MB frame does not fit the pipe) when Ctrl-C arrives.
+    const ScopedEnv env(
+        "RODSEA_FFMPEG",
+        fake_ffmpeg(path("fake-ffmpeg"), "sleep 2\ncat > /dev/null\nexit 0\n").string());
+    const fs::path mp4 = path("stopped.mp4");
+    ChildOptions options;
+    options.interrupt_when = [&] { return fs::exists(mp4.string() + ".tmp.ffmpeg.log"); };
+    const ChildResult r = run_rodsea({"movie", run().string(), "-o", mp4.string(), "--quiet"},
+                                     scratch_->path(), options);
+    ASSERT_TRUE(r.interrupted);
+    EXPECT_EQ(r.exit_code, 130) << r.err;
     EXPECT_FALSE(fs::exists(mp4));
     EXPECT_TRUE(leftovers().empty()) << leftovers().front();
 }

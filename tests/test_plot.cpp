@@ -106,15 +106,7 @@ std::string pixel_spread(const std::vector<fs::path>& pngs, const fs::path& scra
     std::string command = "/usr/bin/python3 " + script.string();
     for (const fs::path& p : pngs)
         command.append(" ").append(p.string());
-    command += " 2>&1";
-    std::string out;
-    if (FILE* pipe = ::popen(command.c_str(), "r")) {
-        std::array<char, 512> buffer{};
-        while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr)
-            out += buffer.data();
-        ::pclose(pipe);
-    }
-    return out;
+    return shell_output(command + " 2>&1");
 }
 
 // Every PNG named in `printed` (rodsea plot's stdout) exists in `dir`, is a valid PNG of the size

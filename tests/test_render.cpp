@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <memory>
 #include <numbers>
+#include <set>
+#include <tuple>
 
 #include "child_process.hpp"
 #include "constructed_run.hpp"
@@ -133,6 +135,61 @@ TEST_F(RenderCli, RodAcrossThePeriodicEdgeAppearsOnBothSides) {
     expect_background(pixel_under(image, 10.0, 10.0), "mid-box");
 }
 
+TEST_F(RenderCli, RodAcrossTheCornerWrapsInBothDirections) {
+    // Centre 0.3 mm from the top and right edges, axis at 45°: the thin end crosses both edges.
+    const double theta = std::numbers::pi / 4, cx = kBox - 0.3, cy = kBox - 0.3;
+    const Image image = render({{cx, cy, theta}}, {"--no-annotations"});
+    const Shape& shape = polar_rods(1).engine.species[0].shape;
+    std::set<std::pair<bool, bool>> quadrants;
+    for (std::size_t k = 0; k < shape.sphere_count(); ++k) {
+        const double x = cx + shape.offsets[k].x * std::cos(theta);
+        const double y = cy + shape.offsets[k].x * std::sin(theta);
+        if (std::abs(x - kBox) < 0.1 || std::abs(y - kBox) < 0.1) continue;  // on an edge
+        const double wx = x >= kBox ? x - kBox : x, wy = y >= kBox ? y - kBox : y;
+        quadrants.insert({x >= kBox, y >= kBox});
+        expect_colour(pixel_under(image, wx, wy), direction_colour(theta),
+                      "sphere " + std::to_string(k));
+    }
+    EXPECT_EQ(quadrants.size(), 2u);  // spheres inside the box and spheres past the corner
+    expect_background(pixel_under(image, 10.0, 10.0), "mid-box");
+    expect_background(pixel_under(image, 1.5, 18.5), "top-left corner, away from every image");
+}
+
+TEST_F(RenderCli, NematicColoursIgnoreWhichEndIsWhich) {
+    // Two apolar rods at θ and θ + π get one colour; a third at θ + π/2 the opposite hue.
+    const RunPlan plan = load_config_string(
+        "[box]\nside = 20.0\n[[species]]\nname = \"medium\"\nkind = \"apolar_rod\"\n"
+        "length = 2.5\ncount = 3\n",
+        "test");
+    const double theta = 0.4;
+    BodyState frame;
+    add_flat_body(frame, plan, 0, 5.0, 5.0, theta);
+    add_flat_body(frame, plan, 0, 15.0, 5.0, theta + kPi);
+    add_flat_body(frame, plan, 0, 10.0, 15.0, theta + kPi / 2);
+    write_constructed_run(path("apolar"), plan, {frame}, 0.01);
+    for (const std::string medium : {"nematic", "neutral"}) {
+        const ChildResult r =
+            run_rodsea({"render", path("apolar").string(), "-o", path("n.png").string(), "--size",
+                        "400", "--medium", medium, "--no-annotations"},
+                       scratch_->path());
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        const Image image = read_png(path("n.png"));
+        const Pixel a = pixel_under(image, 5.0, 5.0), b = pixel_under(image, 15.0, 5.0),
+                    c = pixel_under(image, 10.0, 15.0);
+        EXPECT_EQ(std::tie(a.r, a.g, a.b), std::tie(b.r, b.g, b.b)) << medium;
+        if (medium == "neutral") {
+            EXPECT_EQ(std::tie(a.r, a.g, a.b), std::tie(c.r, c.g, c.b));
+            continue;
+        }
+        // Colours are drawn in 2° bins: within a bin the wheel at 2θ moves by at most ~6 of 255.
+        const Rgb expected = nematic_colour(theta);
+        EXPECT_NEAR(a.r, expected.r * 255.0, 8.0);
+        EXPECT_NEAR(a.g, expected.g * 255.0, 8.0);
+        EXPECT_NEAR(a.b, expected.b * 255.0, 8.0);
+        EXPECT_GT(std::abs(a.r - c.r) + std::abs(a.g - c.g) + std::abs(a.b - c.b), 200);
+    }
+}
+
 TEST_F(RenderCli, ZoomMapsTheRegionOntoTheWholeImage) {
     // The view x ∈ [5, 15], y ∈ [8, 13] mm: 400 × 200 px, 40 px/mm.
     const Image image =
@@ -153,6 +210,23 @@ TEST_F(RenderCli, FlockColouringSeparatesAFlockFromALoner) {
     for (double y : {5.0, 6.0, 7.0})
         expect_colour(pixel_under(image, 5.0, y), label_colour(0), "flock member");
     expect_colour(pixel_under(image, 15.0, 15.0), label_colour(-1), "loner");
+}
+
+TEST_F(RenderCli, FlockColoursGoByFlockSize) {
+    // DBSCAN meets the three-rod flock first (lowest index), but the four-rod flock is larger:
+    // it gets the first colour.
+    const Image image = render({{4.0, 4.0, 0.0},
+                                {4.0, 5.0, 0.0},
+                                {4.0, 6.0, 0.0},
+                                {14.0, 12.0, 0.0},
+                                {14.0, 13.0, 0.0},
+                                {14.0, 14.0, 0.0},
+                                {14.0, 15.0, 0.0}},
+                               {"--no-annotations", "--colour", "flock"});
+    for (double y : {4.0, 5.0, 6.0})
+        expect_colour(pixel_under(image, 4.0, y), label_colour(1), "the smaller flock");
+    for (double y : {12.0, 13.0, 14.0, 15.0})
+        expect_colour(pixel_under(image, 14.0, y), label_colour(0), "the larger flock");
 }
 
 TEST_F(RenderCli, ScaleBarIsAsLongAsItSays) {

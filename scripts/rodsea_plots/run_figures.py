@@ -102,12 +102,17 @@ class Analysis:
         """One line naming the run and its control parameters, under each figure's title."""
         p = self.json["parameters"]
         parts = [str(self.json.get("run", {}).get("directory", self.dir))]
+        def number(s, key, spec):
+            # JSON writes NaN as null: a present null must not crash the caption.
+            v = s.get(key)
+            return format(v, spec) if finite(v) else "?"
+
         for s in self.polar:
-            parts.append(f"φ_p = {s.get('area_fraction', float('nan')):.3f}")
+            parts.append(f"φ_p = {number(s, 'area_fraction', '.3f')}")
         for s in self.media:
             kind = "ℓ_a" if s.get("kind") == "apolar_rod" else "bead d"
-            parts.append(f"φ_a = {s.get('area_fraction', float('nan')):.3f} "
-                         f"({kind} = {s.get('length_mm', float('nan')):.3g} mm)")
+            parts.append(f"φ_a = {number(s, 'area_fraction', '.3f')} "
+                         f"({kind} = {number(s, 'length_mm', '.3g')} mm)")
         if finite(p.get("noise_epsilon_per_mm")):
             parts.append(f"ε = {p['noise_epsilon_per_mm']:.3g} 1/mm")
         return " · ".join(parts)

@@ -8,8 +8,6 @@
 
 namespace rodsea {
 
-namespace {
-
 // Built by appending: GCC 12 at -O3 warns falsely (-Wrestrict) on "literal" + std::string.
 std::string quoted(const std::string& text) {
     std::string q(1, '\'');
@@ -17,8 +15,6 @@ std::string quoted(const std::string& text) {
     q += '\'';
     return q;
 }
-
-}  // namespace
 
 bool Arguments::has(std::string_view flag) const {
     return std::find(switches.begin(), switches.end(), flag) != switches.end();

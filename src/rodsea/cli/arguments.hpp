@@ -30,6 +30,9 @@ Arguments parse_arguments(const std::vector<std::string>& words,
 // and the range with its unit.
 double parse_number(std::string_view flag, const std::string& text, double lo, double hi,
                     const std::string& unit = "");
+// 'text', for messages.
+std::string quoted(const std::string& text);
+
 // A whole number in [lo, hi].
 long long parse_count(std::string_view flag, const std::string& text, long long lo, long long hi);
 

@@ -1,3 +1,4 @@
 target_sources(rodsea_core PRIVATE
   src/rodsea/cli/arguments.cpp
+  src/rodsea/cli/frame_flags.cpp
 )

@@ -30,6 +30,21 @@ long long StoredRun::total_bodies() const {
     return n;
 }
 
+BodyState StoredRun::frame(std::size_t k) const {
+    BodyState bodies = reader.frame(k);
+    if (static_cast<long long>(bodies.size()) != total_bodies())
+        throw FileError(trajectory.string(),
+                        "frame " + std::to_string(k) + " holds " + std::to_string(bodies.size()) +
+                            " bodies, the stored config " + std::to_string(total_bodies()));
+    for (std::uint32_t s : bodies.species)
+        if (s >= plan.engine.species.size())
+            throw FileError(trajectory.string(), "frame " + std::to_string(k) +
+                                                     " has a body of species " + std::to_string(s) +
+                                                     "; the config has " +
+                                                     std::to_string(plan.engine.species.size()));
+    return bodies;
+}
+
 StoredRun open_stored_run(const fs::path& run) {
     const fs::path trajectory = trajectory_of(run);
     TrajectoryReader reader(trajectory);

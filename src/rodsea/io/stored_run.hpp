@@ -20,6 +20,9 @@ struct StoredRun {
     std::size_t frames() const { return reader.times().size(); }
     const std::vector<double>& times() const { return reader.times(); }
     long long total_bodies() const;
+    // Frame k, checked against the stored config (body count, species indices): a damaged
+    // file fails here with FileError rather than drawing or exporting nonsense.
+    BodyState frame(std::size_t k) const;
 };
 
 // Accepts a run directory or its trajectory.h5. Throws FileError for a missing file, one that

@@ -16,4 +16,11 @@ class StopSignalGuard {
 // The signal number received since the guard was installed, or 0.
 int stop_signal_received();
 
+// Thrown by commands that stop between units of work (movie frames, export frames) when a stop
+// signal arrived: it unwinds through replace_file_atomically, which removes the unfinished file.
+struct StopRequested {
+    int signal = 0;
+    int exit_code() const { return 128 + signal; }  // 130 for SIGINT, 143 for SIGTERM
+};
+
 }  // namespace rodsea

@@ -15,8 +15,8 @@ struct Rgb {
 Rgb direction_colour(double theta);
 // The same wheel at 2θ: an apolar rod's axis has no head.
 Rgb nematic_colour(double theta);
-// Flock labels as DBSCAN numbers them: well-separated hues for clusters 0, 1, ...; noise (−1)
-// dark grey.
+// Flocks by rank (0 the largest, 1 the next, ...): well-separated hues; no flock (−1) dark
+// grey.
 Rgb label_colour(int label);
 
 // 8-bit channels, as they land in an opaque ARGB32 pixel.

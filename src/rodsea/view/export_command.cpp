@@ -15,6 +15,7 @@
 #include <string_view>
 
 #include "rodsea/cli/arguments.hpp"
+#include "rodsea/cli/frame_flags.hpp"
 #include "rodsea/config/did_you_mean.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
@@ -56,27 +57,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kHuge = 1e12;
-
-// Ctrl-C or SIGTERM between frames: unwinds through replace_file_atomically, which removes
-// the temporary file, so nothing half-written is left.
-struct ExportInterrupted {
-    int signal;
-};
-
 // Concatenation by appending: GCC 12 at -O3 warns falsely (-Wrestrict) on "literal" + string.
 std::string cat(std::initializer_list<std::string_view> parts) {
     std::string s;
     for (std::string_view p : parts)
         s.append(p);
     return s;
-}
-
-std::string quoted(const std::string& text) {
-    std::string q(1, '\'');
-    q += text;
-    q += '\'';
-    return q;
 }
 
 std::string megabytes(double bytes) {
@@ -101,26 +87,17 @@ ExportFormat format_from(const std::optional<std::string>& given) {
     throw InvalidParameter("--format", quoted(*given), allowed, why);
 }
 
-// The frames the options select, in order. Throws InvalidParameter naming the flag.
+// The frames the options select, in order: one (--frame, --time) or a window. Throws
+// InvalidParameter naming the flag.
 std::vector<std::size_t> select_frames(const StoredRun& run, const Arguments& a) {
-    const std::optional<std::string> frame_text = a.value("--frame"), time_text = a.value("--time");
-    if (frame_text || time_text) {
-        for (const char* flag : {"--every", "--from", "--to"})
+    if (const std::optional<std::size_t> one = single_frame_from(a, run)) {
+        for (const std::string& flag : kFrameWindowFlags)
             if (a.value(flag))
                 throw InvalidParameter(flag, *a.value(flag), "without --frame and --time",
                                        "--frame and --time export a single frame");
-        std::optional<long long> frame;
-        std::optional<double> time;
-        if (frame_text) frame = parse_count("--frame", *frame_text, -(1LL << 40), 1LL << 40);
-        if (time_text) time = parse_number("--time", *time_text, -kHuge, kHuge, "s");
-        return {select_frame(run, frame, time)};
+        return {*one};
     }
-    const long long every =
-        a.value("--every") ? parse_count("--every", *a.value("--every"), 1, 1LL << 40) : 1;
-    std::optional<double> from, to;
-    if (const auto f = a.value("--from")) from = parse_number("--from", *f, 0.0, kHuge, "s");
-    if (const auto f = a.value("--to")) to = parse_number("--to", *f, 0.0, kHuge, "s");
-    return select_frame_window(run, from, to, every);
+    return frame_window_from(a, run);
 }
 
 // The output file can be written: its directory exists and is writable, it is not a
@@ -178,15 +155,10 @@ int export_command(const std::vector<std::string>& args, std::ostream& out, std:
     const std::vector<std::size_t> frames = select_frames(run, a);
     const ExportScene scene = make_export_scene(run.plan);
     // The first frame is read now: its bodies must match the config before anything is
-    // written. Every later frame is checked as it is read.
-    BodyState first = run.reader.frame(frames.front());
-    const std::string source = run.trajectory.string();
-    const std::size_t spheres = export_sphere_count(scene, first, source);
+    // written. Every later frame is checked as it is read (StoredRun::frame).
+    BodyState first = run.frame(frames.front());
+    const std::size_t spheres = export_sphere_count(scene, first, run.trajectory.string());
     const std::size_t bodies = first.size();
-    if (static_cast<long long>(bodies) != run.total_bodies())
-        throw FileError(source,
-                        cat({"frames hold ", std::to_string(bodies), " bodies, the stored config ",
-                             std::to_string(run.total_bodies())}));
     const double frame_bytes = estimated_frame_bytes(scene, options, spheres, bodies);
     const double total_bytes = frame_bytes * static_cast<double>(frames.size());
     check_output(path, run, total_bytes);
@@ -231,14 +203,9 @@ int export_command(const std::vector<std::string>& args, std::ostream& out, std:
             CountProgress progress(out, choose_progress_style(quiet, ::isatty(STDOUT_FILENO) == 1),
                                    frames.size(), "frames");
             for (std::size_t i = 0; i < frames.size(); ++i) {
-                if (const int s = stop_signal_received()) throw ExportInterrupted{s};
+                if (const int s = stop_signal_received()) throw StopRequested{s};
                 const std::size_t k = frames[i];
-                const BodyState frame = i == 0 ? std::move(first) : run.reader.frame(k);
-                if (frame.size() != bodies || export_sphere_count(scene, frame, source) != spheres)
-                    throw FileError(
-                        source,
-                        cat({"frame ", std::to_string(k), " holds ", std::to_string(frame.size()),
-                             " bodies, the first exported frame ", std::to_string(bodies)}));
+                const BodyState frame = i == 0 ? std::move(first) : run.frame(k);
                 write_export_frame(file, scene, options, frame, steps[k], times[k]);
                 if (!file)
                     throw FileError(path.string(),
@@ -252,10 +219,10 @@ int export_command(const std::vector<std::string>& args, std::ostream& out, std:
                                                     " (nothing written)"}));
             progress.finish();
         });
-    } catch (const ExportInterrupted& stop) {
+    } catch (const StopRequested& stop) {
         err << "rodsea: export stopped by signal " << stop.signal << "; nothing written ("
             << path.string() << " is unchanged)\n";
-        return 128 + stop.signal;
+        return stop.exit_code();
     }
     if (!quiet) {
         std::error_code ec;

@@ -1,7 +1,9 @@
 #include "rodsea/view/ffmpeg_pipe.hpp"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -13,6 +15,7 @@
 #include <vector>
 
 #include "rodsea/error.hpp"
+#include "rodsea/run/stop_signal.hpp"
 
 namespace rodsea {
 
@@ -35,8 +38,12 @@ std::optional<fs::path> find_ffmpeg() {
 }
 
 FfmpegEncoder::FfmpegEncoder(const fs::path& ffmpeg, const fs::path& output,
-                             const VideoSettings& settings)
-    : output_(output), log_(output.string() + ".ffmpeg.log"), settings_(settings) {
+                             const fs::path& shown_as, const VideoSettings& settings,
+                             std::function<int()> stop_signal)
+    : shown_as_(shown_as),
+      log_(output.string() + ".ffmpeg.log"),
+      settings_(settings),
+      stop_signal_(std::move(stop_signal)) {
     const std::string size = std::to_string(settings.width) + "x" + std::to_string(settings.height);
     const std::string fps = format_number(settings.fps);
     // Cairo's ARGB32 is B, G, R, A in memory on little-endian machines: ffmpeg's bgra.
@@ -87,6 +94,9 @@ FfmpegEncoder::FfmpegEncoder(const fs::path& ffmpeg, const fs::path& output,
         // Its own process group: Ctrl-C stops rodsea, which then stops ffmpeg and removes the
         // unfinished file, instead of ffmpeg closing a half movie on its own.
         ::setpgid(0, 0);
+        // ... and it dies with rodsea, so that a second Ctrl-C (which kills rodsea at once)
+        // does not leave it finishing a movie nobody will rename into place.
+        ::prctl(PR_SET_PDEATHSIG, SIGKILL);
         ::dup2(fds[0], STDIN_FILENO);
         ::dup2(log_fd, STDOUT_FILENO);
         ::dup2(log_fd, STDERR_FILENO);
@@ -103,6 +113,7 @@ FfmpegEncoder::FfmpegEncoder(const fs::path& ffmpeg, const fs::path& output,
         throw FileError(ffmpeg.string(), "cannot start ffmpeg (fork failed)");
     }
     pipe_ = fds[1];
+    ::fcntl(pipe_, F_SETFL, ::fcntl(pipe_, F_GETFL) | O_NONBLOCK);
     // A dead ffmpeg must show up as a failed write, not kill rodsea with SIGPIPE.
     previous_sigpipe_ = ::signal(SIGPIPE, SIG_IGN);
 }
@@ -118,7 +129,8 @@ void FfmpegEncoder::stop_child() {
     if (pipe_ >= 0) ::close(pipe_);
     pipe_ = -1;
     if (child_ > 0) {
-        ::kill(child_, SIGTERM);
+        // Its output is a temporary file about to be removed: nothing to let it finish.
+        ::kill(child_, SIGKILL);
         int status = 0;
         ::waitpid(child_, &status, 0);
     }
@@ -132,7 +144,14 @@ void FfmpegEncoder::fail(const std::string& what) {
     log << in.rdbuf();
     std::string tail = log.str();
     if (tail.size() > 2000) tail = "…" + tail.substr(tail.size() - 2000);
-    throw FileError(output_.string(), what + (tail.empty() ? "" : "; ffmpeg said:\n" + tail));
+    throw FileError(shown_as_.string(), what + (tail.empty() ? "" : "; ffmpeg said:\n" + tail));
+}
+
+void FfmpegEncoder::check_stop() {
+    if (const int signal = stop_signal_ ? stop_signal_() : 0) {
+        stop_child();
+        throw StopRequested{signal};
+    }
 }
 
 void FfmpegEncoder::write_frame(const Image& image) {
@@ -140,9 +159,14 @@ void FfmpegEncoder::write_frame(const Image& image) {
         fail("a frame of the wrong size reached the encoder");
     const auto* data = reinterpret_cast<const char*>(image.pixels.data());
     std::size_t left = image.pixels.size() * sizeof(std::uint32_t);
+    // The pipe is non-blocking and polled in short waits: a frame is megabytes and ffmpeg may
+    // be slow to take it, and a stop signal must not wait for that.
     while (left > 0) {
+        check_stop();
+        pollfd ready{pipe_, POLLOUT, 0};
+        if (::poll(&ready, 1, 50) <= 0) continue;
         const ssize_t n = ::write(pipe_, data, left);
-        if (n < 0 && errno == EINTR) continue;
+        if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
         if (n <= 0) fail("ffmpeg stopped reading frames");
         data += n;
         left -= static_cast<std::size_t>(n);
@@ -152,14 +176,21 @@ void FfmpegEncoder::write_frame(const Image& image) {
 void FfmpegEncoder::finish() {
     ::close(pipe_);
     pipe_ = -1;
+    // ffmpeg flushes its encoder after the last frame, which takes seconds for big movies:
+    // poll, so that a stop signal in that time still stops it.
     int status = 0;
-    while (::waitpid(child_, &status, 0) < 0 && errno == EINTR) {
+    pid_t done = 0;
+    while ((done = ::waitpid(child_, &status, WNOHANG)) == 0 || (done < 0 && errno == EINTR)) {
+        check_stop();
+        ::usleep(20000);
     }
     child_ = -1;
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        fail(WIFEXITED(status) && WEXITSTATUS(status) == 127
-                 ? "ffmpeg could not be started"
-                 : "ffmpeg failed (exit status " + std::to_string(WEXITSTATUS(status)) + ")");
+    if (done < 0) fail("lost track of ffmpeg (waitpid failed)");
+    if (WIFSIGNALED(status))
+        fail("ffmpeg was killed by signal " + std::to_string(WTERMSIG(status)));
+    if (WEXITSTATUS(status) == 127) fail("ffmpeg could not be started");
+    if (WEXITSTATUS(status) != 0)
+        fail("ffmpeg failed (exit status " + std::to_string(WEXITSTATUS(status)) + ")");
 }
 
 }  // namespace rodsea

@@ -5,6 +5,7 @@
 #include <sys/types.h>
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -23,9 +24,12 @@ struct VideoSettings {
 
 class FfmpegEncoder {
   public:
-    // Starts ffmpeg writing `output` (an .mp4 path). Throws FileError if it cannot start.
+    // Starts ffmpeg writing `output` (an .mp4 path; messages name `shown_as`, the file the user
+    // asked for). `stop_signal` is polled while waiting on ffmpeg: when it returns a signal
+    // number, ffmpeg is stopped and StopRequested thrown. Throws FileError if ffmpeg cannot start.
     FfmpegEncoder(const std::filesystem::path& ffmpeg, const std::filesystem::path& output,
-                  const VideoSettings& settings);
+                  const std::filesystem::path& shown_as, const VideoSettings& settings,
+                  std::function<int()> stop_signal);
     ~FfmpegEncoder();
     FfmpegEncoder(const FfmpegEncoder&) = delete;
     FfmpegEncoder& operator=(const FfmpegEncoder&) = delete;
@@ -37,10 +41,12 @@ class FfmpegEncoder {
 
   private:
     [[noreturn]] void fail(const std::string& what);
+    void check_stop();  // throws StopRequested after stopping ffmpeg
     void stop_child();
 
-    std::filesystem::path output_, log_;
+    std::filesystem::path shown_as_, log_;
     VideoSettings settings_;
+    std::function<int()> stop_signal_;
     pid_t child_ = -1;
     int pipe_ = -1;
     void (*previous_sigpipe_)(int) = nullptr;

@@ -1,18 +1,18 @@
 #include "rodsea/view/movie_command.hpp"
 
-#include <signal.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <ostream>
 
+#include "rodsea/cli/frame_flags.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
 #include "rodsea/io/output_path.hpp"
 #include "rodsea/io/stored_run.hpp"
 #include "rodsea/run/count_progress.hpp"
-#include "rodsea/run/run_driver.hpp"
 #include "rodsea/run/stop_signal.hpp"
 #include "rodsea/view/ffmpeg_pipe.hpp"
 #include "rodsea/view/render_flags.hpp"
@@ -27,21 +27,15 @@ ffmpeg (Debian's package), encoded as H.264 in an MP4 that browsers play. The fi
 when it is complete; Ctrl-C stops cleanly and leaves no partial movie.
 
   -o, --output F   the MP4 to write (default RUN_DIR/movie.mp4)
-  --fps F          frames per second of the movie, (0, 120] (default 20)
+  --fps F          frames per second of the movie, [0.001, 120] (default 20)
   --every K        use every K-th trajectory frame (default 1)
   --from T, --to T the part of the run to show, s (default: all of it)
   --crf Q          H.264 quality, 0 (lossless) … 51 (worst) (default 20)
   --quiet          no plan and no progress bar
-Movies need even pixel sizes: --size must be even (default 800).
+Movies need even pixel sizes: --size must be even (default 800), and at most 4096 px wide and
+high so that browsers' H.264 decoders play them. Without ffmpeg the command exits with 1 and says
+how to install it.
 )";
-
-namespace {
-
-struct StopRequested {
-    int signal = 0;
-};
-
-}  // namespace
 
 int movie_command(const std::vector<std::string>& words, std::ostream& out, std::ostream&) {
     std::vector<std::string> valued = kRenderValuedFlags;
@@ -61,35 +55,39 @@ int movie_command(const std::vector<std::string>& words, std::ostream& out, std:
         throw InvalidParameter("--size", std::to_string(options.width) + " px", "an even width",
                                "H.264 in yuv420p needs even sizes");
     VideoSettings video;
-    video.fps = parse_number("--fps", args.value("--fps").value_or("20"), 1e-3, 120.0, "1/s");
+    video.fps = parse_number("--fps", args.value("--fps").value_or("20"), 1e-3, 120.0, "frames/s");
     video.crf = static_cast<int>(parse_count("--crf", args.value("--crf").value_or("20"), 0, 51));
-    const long long every =
-        parse_count("--every", args.value("--every").value_or("1"), 1, 1LL << 40);
-    std::optional<double> from, to;
-    if (const auto f = args.value("--from")) from = parse_number("--from", *f, -1e12, 1e12, "s");
-    if (const auto t = args.value("--to")) to = parse_number("--to", *t, -1e12, 1e12, "s");
-
     const StoredRun run = open_stored_run(args.positional[0]);
-    const std::vector<std::size_t> frames = select_frame_window(run, from, to, every);
+    const std::vector<std::size_t> frames = frame_window_from(args, run);
     const std::filesystem::path output =
         args.value("--output").value_or((run.run_dir / "movie.mp4").string());
     check_output_file("--output", output, ".mp4");
     const FrameRenderer renderer(run.plan, options);
     video.width = renderer.width();
     video.height = renderer.height();
+    // Level 5.1, what browsers decode in hardware, stops at 4096 × 2304; software decoders in
+    // browsers take 4096 in both directions.
+    if (video.width > 4096 || video.height > 4096)
+        throw InvalidParameter("--size", std::to_string(options.width) + " px",
+                               "a size that keeps the movie within 4096 × 4096 px",
+                               "this view would be " + std::to_string(video.width) + " × " +
+                                   std::to_string(video.height) + " px");
     const std::optional<std::filesystem::path> ffmpeg = find_ffmpeg();
     if (!ffmpeg)
         throw std::runtime_error(
-            "ffmpeg not found (looked for $RODSEA_FFMPEG, then ffmpeg on PATH); install Debian's "
-            "ffmpeg package: ./scripts/install-deps.sh");
+            std::getenv("RODSEA_FFMPEG")
+                ? "ffmpeg not found: RODSEA_FFMPEG=" + std::string(std::getenv("RODSEA_FFMPEG")) +
+                      " is not an executable file"
+                : "ffmpeg not found on PATH; install Debian's ffmpeg package: "
+                  "./scripts/install-deps.sh");
 
     const bool quiet = args.has("--quiet");
     const std::vector<double>& times = run.times();
     if (!quiet)
         out << "rodsea movie " << run.run_dir.string() << ": " << frames.size()
             << " frames (t = " << format_number(times[frames.front()]) << " to "
-            << format_number(times[frames.back()]) << " s, every " << every << ") at "
-            << format_number(video.fps)
+            << format_number(times[frames.back()]) << " s, every "
+            << args.value("--every").value_or("1") << ") at " << format_number(video.fps)
             << " fps = " << format_number(static_cast<double>(frames.size()) / video.fps)
             << " s of video; " << run.total_bodies() << " bodies; " << describe(options, renderer)
             << "\n"
@@ -100,15 +98,14 @@ int movie_command(const std::vector<std::string>& words, std::ostream& out, std:
     const StopSignalGuard stop_guard;
     try {
         replace_file_atomically(output, [&](const std::filesystem::path& tmp) {
-            FfmpegEncoder encoder(*ffmpeg, tmp, video);
+            FfmpegEncoder encoder(*ffmpeg, tmp, output, video, stop_signal_received);
             CountProgress progress(out, choose_progress_style(quiet, ::isatty(STDOUT_FILENO) == 1),
                                    frames.size(), "frames");
             Image image;
             for (std::size_t i = 0; i < frames.size(); ++i) {
                 if (const int signal = stop_signal_received()) throw StopRequested{signal};
                 const std::size_t k = frames[i];
-                renderer.render_into(run.reader.frame(k), {times[k], run.reader.steps()[k], k},
-                                     image);
+                renderer.render_into(run.frame(k), {times[k], run.reader.steps()[k], k}, image);
                 encoder.write_frame(image);
                 progress.update(i + 1);
             }
@@ -117,7 +114,7 @@ int movie_command(const std::vector<std::string>& words, std::ostream& out, std:
         });
     } catch (const StopRequested& stop) {
         out << "\nrodsea movie: stopped by signal " << stop.signal << "; no movie written\n";
-        return stop.signal == SIGTERM ? ExitCode::kExitTerminated : ExitCode::kExitInterrupted;
+        return stop.exit_code();
     }
     if (!quiet)
         out << "wrote " << output.string() << " ("

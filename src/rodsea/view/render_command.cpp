@@ -3,9 +3,11 @@
 #include <chrono>
 #include <ostream>
 
+#include "rodsea/cli/frame_flags.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/output_path.hpp"
 #include "rodsea/io/stored_run.hpp"
+#include "rodsea/run/stop_signal.hpp"
 #include "rodsea/view/png_file.hpp"
 #include "rodsea/view/render_flags.hpp"
 
@@ -22,6 +24,7 @@ legend. Bodies that cross the box edge appear on both sides (the box is periodic
   --frame N        frame index, 0-based; negative counts from the end (default -1, the last)
   --time T         the frame nearest T, s
   -o, --output F   the PNG to write (default RUN_DIR/frame_<N>.png)
+  --quiet          no plan line and no timing
 )";
 
 namespace {
@@ -47,14 +50,8 @@ int render_command(const std::vector<std::string>& words, std::ostream& out, std
         throw InvalidParameter("RUN_DIR", std::to_string(args.positional.size()) + " given",
                                "exactly one run directory (see rodsea render --help)");
     const RenderOptions options = render_options_from(args, 1200);
-    std::optional<long long> frame;
-    std::optional<double> time;
-    if (const auto f = args.value("--frame"))
-        frame = parse_count("--frame", *f, -(1LL << 40), 1LL << 40);
-    if (const auto t = args.value("--time")) time = parse_number("--time", *t, -1e12, 1e12, "s");
-
     const StoredRun run = open_stored_run(args.positional[0]);
-    const std::size_t index = select_frame(run, frame, time);
+    const std::size_t index = single_frame_from(args, run).value_or(run.frames() - 1);
     const std::filesystem::path output =
         args.value("--output").value_or((run.run_dir / frame_name(index)).string());
     check_output_file("--output", output, ".png");
@@ -66,9 +63,15 @@ int render_command(const std::vector<std::string>& words, std::ostream& out, std
             << run.total_bodies() << " bodies; " << describe(options, renderer) << "\n";
 
     const auto start = std::chrono::steady_clock::now();
-    const BodyState bodies = run.reader.frame(index);
+    // Ctrl-C while drawing stops before anything is written; once the PNG is being written it
+    // is finished (a fraction of a second), so that no half-written file is ever left.
+    const StopSignalGuard stop_guard;
     const Image image =
-        renderer.render(bodies, {run.times()[index], run.reader.steps()[index], index});
+        renderer.render(run.frame(index), {run.times()[index], run.reader.steps()[index], index});
+    if (const int signal = stop_signal_received()) {
+        out << "rodsea render: stopped by signal " << signal << "; nothing written\n";
+        return StopRequested{signal}.exit_code();
+    }
     write_png(image, output);
     if (!quiet)
         out << "wrote " << output.string() << " ("

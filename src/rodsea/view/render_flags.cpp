@@ -62,8 +62,12 @@ RenderOptions render_options_from(const Arguments& args, int default_width) {
         else
             throw InvalidParameter("--medium", *medium, "neutral or nematic");
     }
-    if (const auto eps = args.value("--flock-eps"))
+    if (const auto eps = args.value("--flock-eps")) {
+        if (o.polar != PolarColouring::flock)
+            throw InvalidParameter("--flock-eps", *eps, "only with --colour flock",
+                                   "it sets the DBSCAN radius of the flock colours");
         o.flock_eps = parse_number("--flock-eps", *eps, 1e-3, 1e6, "mm");
+    }
     o.annotate = !args.has("--no-annotations");
     return o;
 }
