@@ -1,0 +1,175 @@
+#include "rodsea/calibration/single_body_experiment.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "rodsea/analysis/statistics.hpp"
+#include "rodsea/engine/simulation.hpp"
+#include "rodsea/random.hpp"
+#include "rodsea/scenes/scenes.hpp"
+
+namespace rodsea {
+
+namespace {
+
+// Far above every body: a copy is alone, and the box only has to hold its periodic image away.
+constexpr double kBoxSide = 20.0;  // mm
+// Lags fitted for D_r stop where C(t) falls below this (as `rodsea analyze`'s fit floor).
+constexpr double kFitFloor = 0.2;
+
+MeanAndError mean_and_error(const std::vector<double>& values) {
+    MeanAndError m;
+    if (values.empty()) return m;
+    for (double v : values)
+        m.mean += v / static_cast<double>(values.size());
+    if (values.size() < 2) {
+        m.error = std::nan("");
+        return m;
+    }
+    double var = 0.0;
+    for (double v : values)
+        var += (v - m.mean) * (v - m.mean);
+    var /= static_cast<double>(values.size() - 1);
+    m.error = std::sqrt(var / static_cast<double>(values.size()));
+    return m;
+}
+
+// ⟨cos(θ(t + τ) − θ(t))⟩ over time origins, summed (not averaged) into `sum` with its counts.
+void add_correlation(const std::vector<double>& angle, std::size_t max_lag,
+                     std::vector<double>& sum, std::vector<double>& count) {
+    for (std::size_t lag = 0; lag <= max_lag && lag < angle.size(); ++lag)
+        for (std::size_t t = 0; t + lag < angle.size(); ++t) {
+            sum[lag] += std::cos(angle[t + lag] - angle[t]);
+            count[lag] += 1.0;
+        }
+}
+
+std::vector<double> correlation_of(const std::vector<const SingleBodyTrace*>& traces,
+                                   std::size_t max_lag) {
+    std::vector<double> sum(max_lag + 1, 0.0), count(max_lag + 1, 0.0);
+    for (const SingleBodyTrace* t : traces)
+        add_correlation(t->angle, max_lag, sum, count);
+    for (std::size_t lag = 0; lag <= max_lag; ++lag)
+        sum[lag] = count[lag] > 0 ? sum[lag] / count[lag] : std::nan("");
+    return sum;
+}
+
+}  // namespace
+
+SingleBodyTrace run_single_body_copy(const SingleBodyExperiment& e, int index) {
+    SplitMix64 rng(e.seed * 0x9e3779b97f4a7c15ULL + static_cast<std::uint64_t>(index) + 1);
+    // A small tilt and a slow spin: a perfectly flat, still rod is a mirror-symmetric start that
+    // the vibration alone takes long to leave. No initial translation, which would coast.
+    Scene scene = single_body(e.species, kBoxSide, rng.uniform(-0.1, 0.1));
+    const Quat turn =
+        Quat::from_axis_angle({0.0, 0.0, 1.0}, rng.uniform(-std::numbers::pi, std::numbers::pi));
+    scene.bodies.orientation[0] = normalized(turn * scene.bodies.orientation[0]);
+    scene.bodies.spin[0] = {0.0, 0.0, rng.uniform(-2.0, 2.0)};
+    scene.params.drive = e.drive;
+    scene.params.dt = e.dt;
+    scene.params.noise_epsilon = e.epsilon;
+    scene.params.seed = e.seed + 7919ULL * static_cast<std::uint64_t>(index);
+    scene.bodies.position[0].z =
+        resting_height(e.species.shape, scene.bodies.orientation[0], e.drive);
+    Simulation sim(scene.params, scene.bodies);
+
+    const double period = 2.0 * std::numbers::pi / e.drive.angular_frequency;
+    const auto steps = static_cast<std::uint64_t>(std::llround(period / e.dt));
+    const auto warmup = static_cast<std::uint64_t>(std::llround(e.warmup / period));
+    const auto periods = static_cast<std::size_t>(std::llround(e.duration / period));
+    sim.run(steps * warmup);
+
+    SingleBodyTrace trace;
+    const PeriodicBox2D box{kBoxSide, kBoxSide};
+    Vec3 last = sim.bodies().position[0];
+    double previous_angle = 0.0;
+    for (std::size_t p = 0; p < periods; ++p) {
+        sim.run(steps);
+        const Vec3 now = sim.bodies().position[0];
+        const Vec3 d = box.minimum_image(now - last);
+        last = now;
+        const Vec3 axis = rotate(sim.bodies().orientation[0], Vec3{1.0, 0.0, 0.0});
+        const double angle = std::atan2(axis.y, axis.x);
+        const double in_plane = std::hypot(axis.x, axis.y);
+        const double ux = axis.x / in_plane, uy = axis.y / in_plane;
+        trace.axial.push_back(d.x * ux + d.y * uy);
+        trace.transverse.push_back(-d.x * uy + d.y * ux);
+        // Unwrapped: a turn of less than π per period (D_r of 10³ rad²/s would be needed to
+        // break this) is taken as the short way round.
+        double unwrapped = angle;
+        if (!trace.angle.empty()) {
+            double step = angle - previous_angle;
+            step -= 2.0 * std::numbers::pi * std::round(step / (2.0 * std::numbers::pi));
+            unwrapped = trace.angle.back() + step;
+        }
+        previous_angle = angle;
+        trace.angle.push_back(unwrapped);
+    }
+    trace.unresolved = sim.totals().unresolved;
+    return trace;
+}
+
+double rotational_diffusion_from_correlation(const std::vector<double>& c, double interval) {
+    std::vector<double> t, y;
+    for (std::size_t lag = 1; lag < c.size() && c[lag] >= kFitFloor; ++lag) {
+        t.push_back(interval * static_cast<double>(lag));
+        y.push_back(-std::log(std::min(1.0, c[lag])));
+    }
+    return t.empty() ? 0.0 : slope_through_origin(t, y);
+}
+
+SingleBodyResult combine_single_body_traces(const std::vector<SingleBodyTrace>& traces,
+                                            double period) {
+    SingleBodyResult r;
+    r.period = period;
+    std::vector<double> axial, transverse;
+    std::size_t shortest = traces.empty() ? 0 : traces.front().angle.size();
+    for (const SingleBodyTrace& t : traces) {
+        double a = 0.0, c = 0.0;
+        for (std::size_t p = 0; p < t.axial.size(); ++p) {
+            a += t.axial[p];
+            c += t.transverse[p];
+            r.period_speeds.push_back(t.axial[p] / period);
+        }
+        const double span = period * static_cast<double>(t.axial.size());
+        axial.push_back(a / span);
+        transverse.push_back(c / span);
+        if (a > 0.0) r.forward_fraction += 1.0 / static_cast<double>(traces.size());
+        r.unresolved += t.unresolved;
+        shortest = std::min(shortest, t.angle.size());
+    }
+    r.axial_speed = mean_and_error(axial);
+    r.transverse_speed = mean_and_error(transverse);
+
+    // C(t) up to a quarter of a copy's length (longer lags have too few time origins), and D_r
+    // with a jackknife error over copies: each copy left out in turn.
+    const std::size_t max_lag = shortest / 4;
+    std::vector<const SingleBodyTrace*> all;
+    for (const SingleBodyTrace& t : traces)
+        all.push_back(&t);
+    r.correlation = correlation_of(all, max_lag);
+    r.rotational_diffusion.mean = rotational_diffusion_from_correlation(r.correlation, period);
+    const std::size_t n = traces.size();
+    if (n >= 2) {
+        std::vector<double> leave_one_out;
+        for (std::size_t k = 0; k < n; ++k) {
+            std::vector<const SingleBodyTrace*> rest;
+            for (std::size_t j = 0; j < n; ++j)
+                if (j != k) rest.push_back(&traces[j]);
+            leave_one_out.push_back(
+                rotational_diffusion_from_correlation(correlation_of(rest, max_lag), period));
+        }
+        double mean = 0.0, var = 0.0;
+        for (double v : leave_one_out)
+            mean += v / static_cast<double>(n);
+        for (double v : leave_one_out)
+            var += (v - mean) * (v - mean);
+        r.rotational_diffusion.error =
+            std::sqrt(static_cast<double>(n - 1) / static_cast<double>(n) * var);
+    } else {
+        r.rotational_diffusion.error = std::nan("");
+    }
+    return r;
+}
+
+}  // namespace rodsea
