@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "rodsea/analysis/analyze_command.hpp"
+#include "rodsea/calibration/calibrate_command.hpp"
 #include "rodsea/config/config_file.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/meanfield/mean_field.hpp"
@@ -41,6 +42,8 @@ usage:
                                                           bars (docs/analysis.md)
   rodsea meanfield [--a A --alpha AL ...]                 the paper's mean-field model
                                                           (docs/meanfield.md)
+  rodsea calibrate CONFIG [--out DIR] [--threads N]     single-body speed and D_r over ε, gap,
+                                                          dt (docs/validation.md)
   rodsea render RUN_DIR [--frame N|--time T] [-o F.png] a top view of one frame
   rodsea movie RUN_DIR [-o F.mp4] [--fps F --every K]   an H.264 movie of the run (ffmpeg)
                                                           (both: docs/visualisation.md)
@@ -203,6 +206,10 @@ int command_meanfield(int argc, char** argv) {
     return rodsea::meanfield_command(words_after_command(argc, argv), std::cout);
 }
 
+int command_calibrate(int argc, char** argv) {
+    return rodsea::calibrate_command(words_after_command(argc, argv), std::cout, std::cerr);
+}
+
 int command_render(int argc, char** argv) {
     return rodsea::render_command(words_after_command(argc, argv), std::cout, std::cerr);
 }
@@ -235,9 +242,16 @@ int main(int argc, char** argv) {
         return ExitCode::kExitOk;
     }
     const std::map<std::string_view, std::function<int(int, char**)>> commands{
-        {"run", command_run},         {"info", command_info},           {"config", command_config},
-        {"analyze", command_analyze}, {"meanfield", command_meanfield}, {"render", command_render},
-        {"movie", command_movie},     {"plot", command_plot},           {"export", command_export}};
+        {"run", command_run},
+        {"info", command_info},
+        {"config", command_config},
+        {"analyze", command_analyze},
+        {"meanfield", command_meanfield},
+        {"calibrate", command_calibrate},
+        {"render", command_render},
+        {"movie", command_movie},
+        {"plot", command_plot},
+        {"export", command_export}};
     if (command == "help") {
         const std::string_view topic = argc > 2 ? argv[2] : "";
         std::cout << (topic == "run"         ? kRunHelp
@@ -245,6 +259,7 @@ int main(int argc, char** argv) {
                       : topic == "config"    ? kConfigHelp
                       : topic == "analyze"   ? rodsea::kAnalyzeHelp
                       : topic == "meanfield" ? rodsea::kMeanfieldHelp
+                      : topic == "calibrate" ? rodsea::kCalibrateHelp
                       : topic == "render"    ? rodsea::kRenderHelp
                       : topic == "movie"     ? rodsea::kMovieHelp
                       : topic == "plot"      ? rodsea::kPlotHelp
@@ -255,7 +270,8 @@ int main(int argc, char** argv) {
     const auto it = commands.find(command);
     if (it == commands.end()) {
         std::cerr << "rodsea: unknown command '" << command
-                  << "' (commands: run, info, config, analyze, meanfield, render, movie, plot, "
+                  << "' (commands: run, info, config, analyze, meanfield, calibrate, render, "
+                     "movie, plot, "
                      "export, help; see rodsea --help)\n";
         return ExitCode::kExitBadInput;
     }

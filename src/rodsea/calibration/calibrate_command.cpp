@@ -1,0 +1,239 @@
+#include "rodsea/calibration/calibrate_command.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <numbers>
+#include <ostream>
+#include <sstream>
+#include <thread>
+
+#include "rodsea/calibration/calibration_grid.hpp"
+#include "rodsea/cli/arguments.hpp"
+#include "rodsea/error.hpp"
+#include "rodsea/io/atomic_file.hpp"
+#include "rodsea/run/count_progress.hpp"
+#include "rodsea/run/stop_signal.hpp"
+
+namespace rodsea {
+
+const char* const kCalibrateHelp =
+    R"(rodsea calibrate CONFIG [--out DIR] [--threads N] [--quiet]
+
+Single-body experiments (docs/validation.md): for every combination of the ε, gaps and time steps
+in CONFIG's [calibrate] table, `copies` independent bodies of one kind are each shaken alone for
+`warmup` + `duration` seconds. Each point gives the mean speed along the body's axis (+: toward
+body +x, thick → thin for a polar rod) and the fraction of copies going that way, the speed
+distribution (per drive period), and D_r from C(t) = exp(−D_r t) with a jackknife error. The
+points run in parallel. DIR (default out/<CONFIG name>) receives:
+  calibration.csv        one row per point: gap, dt, ε, D_r ± err, speed ± err, ...
+  speed_distribution.csv the per-period axial speeds of each point as a histogram
+  calibrate.toml         CONFIG as given
+
+  --out DIR      output directory (replaced files: calibration.csv, speed_distribution.csv,
+                 calibrate.toml)
+  --threads N    worker threads, [1, 256] (default: the machine's cores)
+  --quiet        no plan and no progress
+
+CONFIG keys (units and ranges):
+)";
+
+namespace {
+
+struct PointResult {
+    SingleBodyExperiment experiment;
+    SingleBodyResult result;
+};
+
+std::string csv_number(double v) {
+    if (!std::isfinite(v)) return "nan";
+    std::ostringstream s;
+    s.precision(8);
+    s << v;
+    return s.str();
+}
+
+double percentile(std::vector<double> v, double q) {
+    if (v.empty()) return std::nan("");
+    const auto k = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1));
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+    return v[k];
+}
+
+const char* kind_name(BodyKind kind) {
+    return to_string(kind);
+}
+
+std::string calibration_csv(const std::vector<PointResult>& points) {
+    std::ostringstream out;
+    out << "# rodsea " << RODSEA_VERSION
+        << " calibration: single bodies in the vibrated cell, one row per point; units: gap [mm], "
+           "dt [s], epsilon [1/mm], D_r [rad^2/s], speeds [mm/s], duration [s]\n";
+    out << "species,gap,dt,epsilon,D_r,D_r_err,speed,speed_err,transverse_speed,"
+           "transverse_speed_err,forward_fraction,speed_p10,speed_p50,speed_p90,copies,duration,"
+           "unresolved\n";
+    for (const PointResult& p : points) {
+        const SingleBodyExperiment& e = p.experiment;
+        const SingleBodyResult& r = p.result;
+        out << kind_name(e.species.kind) << ',' << csv_number(e.drive.gap) << ','
+            << csv_number(e.dt) << ',' << csv_number(e.epsilon) << ','
+            << csv_number(r.rotational_diffusion.mean) << ','
+            << csv_number(r.rotational_diffusion.error) << ',' << csv_number(r.axial_speed.mean)
+            << ',' << csv_number(r.axial_speed.error) << ',' << csv_number(r.transverse_speed.mean)
+            << ',' << csv_number(r.transverse_speed.error) << ',' << csv_number(r.forward_fraction)
+            << ',' << csv_number(percentile(r.period_speeds, 0.1)) << ','
+            << csv_number(percentile(r.period_speeds, 0.5)) << ','
+            << csv_number(percentile(r.period_speeds, 0.9)) << ',' << e.copies << ','
+            << csv_number(e.duration) << ',' << r.unresolved << '\n';
+    }
+    return out.str();
+}
+
+// 41 bins from the smallest to the largest per-period axial speed over all points, so that
+// every point's distribution is on the same axis.
+std::string distribution_csv(const std::vector<PointResult>& points) {
+    double lo = 1e300, hi = -1e300;
+    for (const PointResult& p : points)
+        for (double v : p.result.period_speeds) {
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
+    constexpr int kBins = 41;
+    if (!(hi > lo)) hi = lo + 1.0;
+    const double width = (hi - lo) / kBins;
+    std::ostringstream out;
+    out << "# rodsea " << RODSEA_VERSION
+        << " speed_distribution: per-period axial speed of every copy, probability density per "
+           "point; units: speed [mm/s], density [s/mm]\n";
+    out << "point,gap,dt,epsilon,speed_low,speed_high,density\n";
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const std::vector<double>& v = points[i].result.period_speeds;
+        std::vector<double> counts(kBins, 0.0);
+        for (double s : v)
+            counts[std::min<std::size_t>(kBins - 1, static_cast<std::size_t>((s - lo) / width))] +=
+                1.0;
+        const SingleBodyExperiment& e = points[i].experiment;
+        for (int b = 0; b < kBins; ++b)
+            out << i << ',' << csv_number(e.drive.gap) << ',' << csv_number(e.dt) << ','
+                << csv_number(e.epsilon) << ',' << csv_number(lo + b * width) << ','
+                << csv_number(lo + (b + 1) * width) << ','
+                << csv_number(v.empty() ? 0.0 : counts[b] / (static_cast<double>(v.size()) * width))
+                << '\n';
+    }
+    return out.str();
+}
+
+}  // namespace
+
+int calibrate_command(const std::vector<std::string>& words, std::ostream& out, std::ostream&) {
+    const Arguments args =
+        parse_arguments(words, {"--out", "--threads"}, {"--quiet", "--help"}, "calibrate");
+    if (args.has("--help")) {
+        out << kCalibrateHelp << kCalibrationKeysHelp;
+        return 0;
+    }
+    if (args.positional.size() != 1)
+        throw InvalidParameter("CONFIG", std::to_string(args.positional.size()) + " given",
+                               "exactly one config file (see rodsea calibrate --help)");
+    const std::filesystem::path config = args.positional[0];
+    std::ifstream in(config);
+    if (!in) throw FileError(config.string(), "cannot be read");
+    std::stringstream text;
+    text << in.rdbuf();
+    const CalibrationGrid grid = parse_calibration_grid(text.str(), config.string());
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    const int threads = static_cast<int>(
+        parse_count("--threads", args.value("--threads").value_or(std::to_string(cores)), 1, 256));
+    const std::filesystem::path dir =
+        args.value("--out").value_or((std::filesystem::path("out") / config.stem()).string());
+    if (std::filesystem::exists(dir) && !std::filesystem::is_directory(dir))
+        throw FileError(dir.string(), "exists and is not a directory");
+    std::filesystem::create_directories(dir);
+
+    const std::vector<SingleBodyExperiment> experiments = grid.experiments();
+    const std::size_t tasks = experiments.size() * static_cast<std::size_t>(grid.copies);
+    const bool quiet = args.has("--quiet");
+    if (!quiet)
+        out << "rodsea calibrate " << config.string() << ": " << experiments.size() << " points ("
+            << grid.gap.size() << " gaps × " << grid.dt.size() << " dt × " << grid.epsilon.size()
+            << " ε) × " << grid.copies << " copies of one " << to_string(grid.species.kind) << ", "
+            << format_number(grid.warmup) << " + " << format_number(grid.duration) << " s each, on "
+            << threads << " threads → " << dir.string() << "\n";
+
+    // Every copy is a task; results land in fixed slots, so the table does not depend on the
+    // thread count or on which thread ran what.
+    std::vector<std::vector<SingleBodyTrace>> traces(experiments.size(),
+                                                     std::vector<SingleBodyTrace>(grid.copies));
+    std::atomic<std::size_t> next{0}, done{0};
+    std::atomic<bool> failed{false};
+    std::exception_ptr failure;  // written once, before `failed` is set
+    std::mutex failure_lock;
+    const StopSignalGuard stop_guard;
+    const auto worker = [&] {
+        for (std::size_t task = next++; task < tasks; task = next++) {
+            if (failed || stop_signal_received()) return;
+            try {
+                const std::size_t point = task / static_cast<std::size_t>(grid.copies);
+                const int copy = static_cast<int>(task % static_cast<std::size_t>(grid.copies));
+                traces[point][static_cast<std::size_t>(copy)] =
+                    run_single_body_copy(experiments[point], copy);
+                ++done;
+            } catch (...) {
+                const std::lock_guard lock(failure_lock);
+                if (!failure) failure = std::current_exception();
+                failed = true;
+                return;
+            }
+        }
+    };
+    CountProgress progress(out, choose_progress_style(quiet, ::isatty(STDOUT_FILENO) == 1), tasks,
+                           "copies");
+    std::vector<std::thread> pool;
+    for (int t = 0; t < threads; ++t)
+        pool.emplace_back(worker);
+    while (done < tasks && !failed && !stop_signal_received()) {
+        progress.update(done);
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    for (std::thread& t : pool)
+        t.join();
+    if (failure) std::rethrow_exception(failure);
+    if (const int signal = stop_signal_received()) {
+        out << "\nrodsea calibrate: stopped by signal " << signal << "; nothing written\n";
+        return StopRequested{signal}.exit_code();
+    }
+    progress.finish();
+
+    std::vector<PointResult> points;
+    for (std::size_t i = 0; i < experiments.size(); ++i) {
+        const double period = 2.0 * std::numbers::pi / experiments[i].drive.angular_frequency;
+        points.push_back({experiments[i], combine_single_body_traces(traces[i], period)});
+    }
+    write_file_atomically(dir / "calibration.csv", calibration_csv(points));
+    write_file_atomically(dir / "speed_distribution.csv", distribution_csv(points));
+    write_file_atomically(dir / "calibrate.toml", text.str());
+    if (!quiet) {
+        out << "  gap/mm  dt/s      ε/(1/mm)  D_r/(rad²/s)        speed/(mm/s)\n";
+        for (const PointResult& p : points) {
+            char line[160];
+            std::snprintf(line, sizeof line,
+                          "  %-6.3g  %-8.3g  %-8.4g  %8.4g ± %-8.2g  %+7.3f ± %.3f\n",
+                          p.experiment.drive.gap, p.experiment.dt, p.experiment.epsilon,
+                          p.result.rotational_diffusion.mean, p.result.rotational_diffusion.error,
+                          p.result.axial_speed.mean, p.result.axial_speed.error);
+            out << line;
+        }
+        out << "wrote " << (dir / "calibration.csv").string() << ", speed_distribution.csv, "
+            << "calibrate.toml\n";
+    }
+    return 0;
+}
+
+}  // namespace rodsea
