@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +14,8 @@
 
 #include "child_process.hpp"
 #include "rodsea/calibration/single_body_experiment.hpp"
+#include "rodsea/config/config_file.hpp"
+#include "rodsea/error.hpp"
 #include "rodsea/random.hpp"
 #include "scratch_dir.hpp"
 
@@ -190,6 +193,81 @@ TEST_F(CalibrateCli, BadConfigIsRefusedByKeyBeforeAnyRun) {
         EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
         EXPECT_FALSE(fs::exists(path("bad-out")));
     }
+}
+
+}  // namespace
+}  // namespace rodsea
+
+namespace rodsea {
+namespace {
+
+// A config giving D_r gets the ε that the table interpolates, measured at its own gap and dt;
+// the resolved config holds that ε, so a stored run never needs the table again.
+class ConfigFromCalibrationTable : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        scratch_ = std::make_unique<ScratchDir>("calibration-table");
+        write_table("cal.csv", {{1.5, 5e-6, 0.0, 0.0},
+                                {1.5, 5e-6, 0.01, 0.1},
+                                {1.5, 5e-6, 0.02, 0.5},
+                                {1.4, 5e-6, 0.01, 0.7},
+                                {1.5, 2.5e-6, 0.01, 0.9}});
+    }
+    // Rows of (gap mm, dt s, ε 1/mm, D_r rad²/s) with the columns rodsea calibrate writes.
+    void write_table(const std::string& name, const std::vector<std::array<double, 4>>& rows) {
+        std::ofstream out(path(name));
+        out << "# rodsea calibration\nspecies,gap,dt,epsilon,D_r,D_r_err,speed\n";
+        for (const auto& [gap, dt, eps, d_r] : rows)
+            out << "polar_rod," << gap << ',' << dt << ',' << eps << ',' << d_r << ",0.01,3\n";
+        out << "bead,1.5,5e-06,0.05,7,0,0\n";  // other species are not the polar rod's map
+    }
+    RunPlan load(const std::string& table, double d_r, const std::string& extra = "") {
+        return load_config_string("[noise]\nrotational_diffusion = " + std::to_string(d_r) +
+                                      "\ncalibration_table = \"" + path(table).string() + "\"\n" +
+                                      extra,
+                                  "test");
+    }
+    fs::path path(const std::string& name) const { return scratch_->path() / name; }
+    std::unique_ptr<ScratchDir> scratch_;
+};
+
+TEST_F(ConfigFromCalibrationTable, InterpolatesEpsilonAtTheRunsGapAndStep) {
+    // Default gap 1.5 mm, dt 5 µs: D_r = 0.3 lies halfway between 0.1 (ε 0.01) and 0.5 (0.02).
+    EXPECT_NEAR(load("cal.csv", 0.3).engine.noise_epsilon, 0.015, 1e-12);
+    EXPECT_NEAR(load("cal.csv", 0.05).engine.noise_epsilon, 0.005, 1e-12);
+    EXPECT_NEAR(load("cal.csv", 0.5).engine.noise_epsilon, 0.02, 1e-12);  // the table's end
+    // The rows at another gap or step are another map.
+    EXPECT_THROW(load("cal.csv", 0.3, "[drive]\ngap = 1.4\n"), InvalidParameter);
+    // Stored runs carry ε itself: their config loads without the table.
+    const RunPlan plan = load("cal.csv", 0.3);
+    fs::remove(path("cal.csv"));
+    EXPECT_NEAR(load_config_string(plan.config_toml, "stored").engine.noise_epsilon, 0.015, 1e-12);
+}
+
+TEST_F(ConfigFromCalibrationTable, RefusesWhatTheTableCannotAnswer) {
+    const auto message = [&](const std::string& table, double d_r) {
+        try {
+            load(table, d_r);
+        } catch (const std::exception& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    // Outside the measured range: the message gives the range and the way to extend it.
+    const std::string above = message("cal.csv", 0.6);
+    EXPECT_NE(above.find("noise.rotational_diffusion"), std::string::npos) << above;
+    EXPECT_NE(above.find("[0, 0.5] rad²/s"), std::string::npos) << above;
+    EXPECT_NE(above.find("rodsea calibrate"), std::string::npos) << above;
+    // D_r that does not grow with ε cannot be inverted.
+    write_table("flat.csv",
+                {{1.5, 5e-6, 0.0, 0.0}, {1.5, 5e-6, 0.01, 0.2}, {1.5, 5e-6, 0.02, 0.2}});
+    EXPECT_NE(message("flat.csv", 0.1).find("D_r increasing with ε"), std::string::npos);
+    // One point is not a map; the message lists the gaps and steps the table does have.
+    write_table("one.csv", {{1.5, 5e-6, 0.0, 0.0}, {1.6, 5e-6, 0.01, 0.2}});
+    const std::string one = message("one.csv", 0.0);
+    EXPECT_NE(one.find("its gaps: 1.5, 1.6 mm"), std::string::npos) << one;
+    // A missing file is a file error naming it.
+    EXPECT_THROW(load("missing.csv", 0.1), FileError);
 }
 
 }  // namespace

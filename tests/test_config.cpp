@@ -299,7 +299,8 @@ std::vector<KeyCase> key_cases() {
          }},
         {"noise.epsilon", "[noise]\nepsilon = 0.25",
          [](const RunPlan& p) { EXPECT_EQ(p.engine.noise_epsilon, 0.25); }},
-        {"noise.rotational_diffusion", "", {}},  // refused until `rodsea calibrate` exists
+        // Need a table file: ConfigFromCalibrationTable in test_calibration.cpp.
+        {"noise.rotational_diffusion", "", {}},
         {"noise.calibration_table", "", {}},
         {"time.dt", "[time]\ndt = 2.5e-6",
          [](const RunPlan& p) {
@@ -574,12 +575,10 @@ TEST(ConfigErrors, CrossKeyChecksNameTheKey) {
 }
 
 TEST(ConfigErrors, RotationalDiffusionNeedsACalibrationTable) {
-    expect_invalid("[noise]\nrotational_diffusion = 0.026", "noise.rotational_diffusion",
-                   {"0.026 rad²/s", "rodsea calibrate", "noise.epsilon"});
-    expect_invalid("[noise]\nrotational_diffusion = 0.2\ncalibration_table = \"cal.csv\"",
-                   "noise.rotational_diffusion", {"rodsea calibrate"});
+    expect_invalid("[noise]\nrotational_diffusion = 0.026", "noise.calibration_table",
+                   {"missing", "rodsea calibrate", "rotational_diffusion"});
     expect_invalid("[noise]\ncalibration_table = \"cal.csv\"", "noise.calibration_table",
-                   {"rodsea calibrate", "noise.epsilon"});
+                   {"only with noise.rotational_diffusion"});
 }
 
 // ---------------------------------------------------------------------------------------------

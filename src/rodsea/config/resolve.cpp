@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <set>
 
+#include "rodsea/calibration/calibration_table.hpp"
 #include "rodsea/config/did_you_mean.hpp"
 #include "rodsea/config/schema.hpp"
 #include "rodsea/error.hpp"
@@ -48,23 +50,40 @@ void fill_defaults(TableValues& t, std::string_view table) {
     }
 }
 
-// rotational_diffusion is documented but cannot be used until `rodsea calibrate` exists.
+// D_r needs the table to turn it into ε; a table without D_r would be silently unused.
 void check_noise(const TableValues& noise, const std::string& source) {
-    if (noise.has("rotational_diffusion")) {
+    if (noise.has("rotational_diffusion") && !noise.has("calibration_table"))
         throw InvalidParameter(
-            "noise.rotational_diffusion", shown(noise, "noise", "rotational_diffusion"),
-            "no value yet: give noise.epsilon (1/mm) instead",
-            join_why("D_r needs an ε → D_r calibration table from `rodsea calibrate`, which does "
-                     "not exist yet",
+            "noise.calibration_table", "missing",
+            "the calibration.csv of `rodsea calibrate` (docs/validation.md)",
+            join_why("noise.rotational_diffusion is turned into ε through that table",
                      noise.where("rotational_diffusion", source)));
-    }
-    if (noise.has("calibration_table")) {
+    if (noise.has("calibration_table") && !noise.has("rotational_diffusion"))
         throw InvalidParameter(
-            "noise.calibration_table", toml_literal(noise.at("calibration_table")), "no value yet",
-            join_why("the table serves noise.rotational_diffusion, which needs `rodsea "
-                     "calibrate` (not available yet); give noise.epsilon",
+            "noise.calibration_table", toml_literal(noise.at("calibration_table")),
+            "only with noise.rotational_diffusion",
+            join_why("the table turns D_r into ε; with noise.epsilon it is not used",
                      noise.where("calibration_table", source)));
-    }
+}
+
+// noise.rotational_diffusion → noise.epsilon through the table, measured at this run's gap and
+// dt. The resolved config then holds ε (so that a stored run never needs the table again) and
+// D_r as its commented equivalent.
+double epsilon_from_calibration(ConfigValues& c, const EngineParameters& engine) {
+    TableValues& noise = c.one("noise");
+    std::filesystem::path table = noise.text("calibration_table");
+    const std::filesystem::path config_dir = std::filesystem::path(c.source).parent_path();
+    if (table.is_relative() && std::filesystem::is_regular_file(c.source))
+        table = config_dir / table;  // relative to the config file, like a path in a Makefile
+    const double d_r = noise.real("rotational_diffusion");
+    const double epsilon =
+        CalibrationTable::read(table, engine.drive.gap, engine.dt).epsilon_for(d_r);
+    const long line = noise.entries.at("rotational_diffusion").line;
+    noise.entries.erase("rotational_diffusion");
+    noise.entries.erase("calibration_table");
+    noise.entries["epsilon"] = {epsilon, line};
+    c.equivalents["noise.rotational_diffusion"] = d_r;
+    return epsilon;
 }
 
 void check_unique_names(const std::vector<TableValues>& species, const std::string& source) {
@@ -246,8 +265,10 @@ void build_time_and_output(ConfigValues& c, RunPlan& plan) {
     plan.control.checkpoint_interval = output.real("checkpoint_interval");
 }
 
-void build_the_rest(const ConfigValues& c, RunPlan& plan) {
-    plan.engine.noise_epsilon = c.one("noise").real("epsilon");
+void build_the_rest(ConfigValues& c, RunPlan& plan) {
+    plan.engine.noise_epsilon = c.one("noise").has("rotational_diffusion")
+                                    ? epsilon_from_calibration(c, plan.engine)
+                                    : c.one("noise").real("epsilon");
     const TableValues& run = c.one("run");
     plan.engine.seed = static_cast<std::uint64_t>(run.integer("seed"));
     plan.control.threads = static_cast<int>(run.integer("threads"));

@@ -212,15 +212,16 @@ std::vector<KeySpec> make_keys() {
                     .example(0.026)
                     .range(closed(0.0, 100.0))
                     .alternative("epsilon")
-                    .doc("D_r, the paper's control parameter (0, 0.026, 0.23, 1.21, 1.87). Needs "
-                         "the ε → D_r table of `rodsea calibrate`, which does not exist yet: "
-                         "give epsilon instead."));
+                    .doc("D_r, the paper's control parameter (0, 0.026, 0.23, 1.21, 1.87), "
+                         "turned into ε by linear interpolation in calibration_table; refused "
+                         "outside the table's range. The resolved config holds that ε."));
     k.push_back(Key("noise", "calibration_table", ValueType::text)
                     .unit("path")
                     .def_text("none")
                     .example(std::string("calibration.csv"))
-                    .doc("The ε → D_r table written by `rodsea calibrate` (not available yet), "
-                         "for rotational_diffusion."));
+                    .doc("The calibration.csv written by `rodsea calibrate`, with polar_rod rows "
+                         "at this run's drive.gap and time.dt; a relative path is relative to "
+                         "the config file. Needs rotational_diffusion."));
     // [time]
     k.push_back(real("time", "dt")
                     .unit("s")

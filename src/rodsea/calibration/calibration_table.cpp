@@ -1,0 +1,118 @@
+#include "rodsea/calibration/calibration_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "rodsea/error.hpp"
+
+namespace rodsea {
+
+namespace {
+
+std::vector<std::string> split(const std::string& line) {
+    std::vector<std::string> cells;
+    std::stringstream s(line);
+    std::string cell;
+    while (std::getline(s, cell, ','))
+        cells.push_back(cell);
+    return cells;
+}
+
+bool same(double a, double b) {
+    return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b));
+}
+
+std::string joined(const std::set<double>& values) {
+    std::string s;
+    for (double v : values) {
+        if (!s.empty()) s += ", ";
+        s += format_number(v);
+    }
+    return s;
+}
+
+}  // namespace
+
+CalibrationTable CalibrationTable::read(const std::filesystem::path& path, double gap, double dt) {
+    std::ifstream in(path);
+    if (!in)
+        throw FileError(path.string(), "cannot be read (a calibration.csv from rodsea calibrate)");
+    std::string line;
+    std::vector<std::string> header;
+    std::map<std::string, std::size_t> column;
+    CalibrationTable table;
+    table.path_ = path;
+    std::set<double> gaps, steps;
+    long row = 0;
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        const std::vector<std::string> cells = split(line);
+        if (header.empty()) {
+            header = cells;
+            for (std::size_t i = 0; i < header.size(); ++i)
+                column[header[i]] = i;
+            for (const char* needed : {"species", "gap", "dt", "epsilon", "D_r"})
+                if (!column.count(needed))
+                    throw FileError(path.string(), std::string("has no column '") + needed +
+                                                       "': not a table from rodsea calibrate");
+            continue;
+        }
+        ++row;
+        if (cells.size() != header.size())
+            throw FileError(path.string(),
+                            "row " + std::to_string(row) + " has " + std::to_string(cells.size()) +
+                                " cells, the header " + std::to_string(header.size()));
+        if (cells[column["species"]] != "polar_rod") continue;
+        try {
+            const double g = std::stod(cells[column["gap"]]), s = std::stod(cells[column["dt"]]);
+            gaps.insert(g);
+            steps.insert(s);
+            if (same(g, gap) && same(s, dt))
+                table.points_.push_back(
+                    {std::stod(cells[column["epsilon"]]), std::stod(cells[column["D_r"]])});
+        } catch (const std::logic_error&) {
+            throw FileError(path.string(), "row " + std::to_string(row) + " holds a non-number");
+        }
+    }
+    std::sort(table.points_.begin(), table.points_.end(),
+              [](const Point& a, const Point& b) { return a.epsilon < b.epsilon; });
+    if (table.points_.size() < 2)
+        throw InvalidParameter("noise.calibration_table", path.string(),
+                               "a table with at least two polar_rod rows at gap " +
+                                   format_number(gap) + " mm and dt " + format_number(dt) + " s",
+                               "it has " + std::to_string(table.points_.size()) +
+                                   " (its gaps: " + joined(gaps) + " mm; its dt: " + joined(steps) +
+                                   " s); run rodsea calibrate at this gap and dt");
+    for (std::size_t i = 1; i < table.points_.size(); ++i) {
+        const Point &a = table.points_[i - 1], &b = table.points_[i];
+        if (!(b.d_r > a.d_r))
+            throw InvalidParameter(
+                "noise.calibration_table", path.string(), "D_r increasing with ε",
+                "ε = " + format_number(a.epsilon) + " /mm gives D_r = " + format_number(a.d_r) +
+                    ", ε = " + format_number(b.epsilon) + " /mm gives " + format_number(b.d_r) +
+                    " rad²/s: measure longer (more copies, longer duration) or space ε wider");
+    }
+    return table;
+}
+
+double CalibrationTable::epsilon_for(double d_r) const {
+    const Point &lo = points_.front(), &hi = points_.back();
+    if (!(d_r >= lo.d_r && d_r <= hi.d_r))
+        throw InvalidParameter(
+            "noise.rotational_diffusion", format_number(d_r) + " rad²/s",
+            "[" + format_number(lo.d_r) + ", " + format_number(hi.d_r) + "] rad²/s",
+            "the range of " + path_.string() + " (ε from " + format_number(lo.epsilon) + " to " +
+                format_number(hi.epsilon) + " /mm); extend it with rodsea calibrate");
+    std::size_t i = 1;
+    while (i + 1 < points_.size() && points_[i].d_r < d_r)
+        ++i;
+    const Point &a = points_[i - 1], &b = points_[i];
+    return a.epsilon + (b.epsilon - a.epsilon) * (d_r - a.d_r) / (b.d_r - a.d_r);
+}
+
+}  // namespace rodsea
