@@ -10,7 +10,7 @@ packages=(
     clang-format                        # the committed .clang-format
     libtomlplusplus-dev                 # TOML config files (toml++)
     libhdf5-dev                         # HDF5 trajectories and checkpoints (H5MD layout)
-    pkg-config libcairo2-dev fonts-dejavu-core  # `rodsea render`: Cairo pictures with text
+    pkg-config libcairo2-dev libpng-dev fonts-dejavu-core  # `rodsea render`: Cairo, PNG, text
     ffmpeg                              # `rodsea movie`: H.264 MP4 (and ffprobe for its test)
     python3 python3-numpy python3-matplotlib  # `rodsea plot` (scripts/rodsea_plots/)
     python3-h5py python3-scipy          # reading trajectories from Python; cross-checks

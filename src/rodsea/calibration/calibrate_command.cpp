@@ -67,10 +67,6 @@ double percentile(std::vector<double> v, double q) {
     return v[k];
 }
 
-const char* kind_name(BodyKind kind) {
-    return to_string(kind);
-}
-
 std::string calibration_csv(const std::vector<PointResult>& points) {
     std::ostringstream out;
     out << "# rodsea " << RODSEA_VERSION
@@ -82,7 +78,7 @@ std::string calibration_csv(const std::vector<PointResult>& points) {
     for (const PointResult& p : points) {
         const SingleBodyExperiment& e = p.experiment;
         const SingleBodyResult& r = p.result;
-        out << kind_name(e.species.kind) << ',' << csv_number(e.drive.gap) << ','
+        out << to_string(e.species.kind) << ',' << csv_number(e.drive.gap) << ','
             << csv_number(e.dt) << ',' << csv_number(e.epsilon) << ','
             << csv_number(r.rotational_diffusion.mean) << ','
             << csv_number(r.rotational_diffusion.error) << ',' << csv_number(r.axial_speed.mean)

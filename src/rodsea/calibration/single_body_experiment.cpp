@@ -17,21 +17,13 @@ constexpr double kBoxSide = 20.0;  // mm
 // Lags fitted for D_r stop where C(t) falls below this (as `rodsea analyze`'s fit floor).
 constexpr double kFitFloor = 0.2;
 
+// Copies are independent: the standard error of their mean is the block error with one copy
+// per block.
 MeanAndError mean_and_error(const std::vector<double>& values) {
-    MeanAndError m;
-    if (values.empty()) return m;
+    double mean = 0.0;
     for (double v : values)
-        m.mean += v / static_cast<double>(values.size());
-    if (values.size() < 2) {
-        m.error = std::nan("");
-        return m;
-    }
-    double var = 0.0;
-    for (double v : values)
-        var += (v - m.mean) * (v - m.mean);
-    var /= static_cast<double>(values.size() - 1);
-    m.error = std::sqrt(var / static_cast<double>(values.size()));
-    return m;
+        mean += v / static_cast<double>(values.size());
+    return {mean, estimate_from_blocks(mean, values).error};
 }
 
 // ⟨cos(θ(t + τ) − θ(t))⟩ over time origins, summed (not averaged) into `sum` with its counts.

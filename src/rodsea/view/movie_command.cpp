@@ -38,11 +38,8 @@ how to install it.
 )";
 
 int movie_command(const std::vector<std::string>& words, std::ostream& out, std::ostream&) {
-    std::vector<std::string> valued = kRenderValuedFlags;
-    valued.insert(valued.end(), {"--output", "--fps", "--every", "--from", "--to", "--crf"});
-    std::vector<std::string> switches = kRenderSwitches;
-    switches.insert(switches.end(), {"--quiet", "--help"});
-    const Arguments args = parse_arguments(words, valued, switches, "movie");
+    const Arguments args = parse_picture_arguments(
+        words, {"--output", "--fps", "--every", "--from", "--to", "--crf"}, "movie");
     if (args.has("--help")) {
         out << kMovieHelp << kRenderFlagsHelp;
         return 0;

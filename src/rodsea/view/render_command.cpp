@@ -37,11 +37,8 @@ std::string frame_name(std::size_t frame) {
 }  // namespace
 
 int render_command(const std::vector<std::string>& words, std::ostream& out, std::ostream&) {
-    std::vector<std::string> valued = kRenderValuedFlags;
-    valued.insert(valued.end(), {"--frame", "--time", "--output"});
-    std::vector<std::string> switches = kRenderSwitches;
-    switches.insert(switches.end(), {"--quiet", "--help"});
-    const Arguments args = parse_arguments(words, valued, switches, "render");
+    const Arguments args =
+        parse_picture_arguments(words, {"--frame", "--time", "--output"}, "render");
     if (args.has("--help")) {
         out << kRenderHelp << kRenderFlagsHelp;
         return 0;

@@ -34,6 +34,14 @@ std::vector<double> split_numbers(const std::string& flag, const std::string& te
 
 }  // namespace
 
+Arguments parse_picture_arguments(const std::vector<std::string>& words,
+                                  std::vector<std::string> valued, std::string_view command) {
+    valued.insert(valued.end(), kRenderValuedFlags.begin(), kRenderValuedFlags.end());
+    std::vector<std::string> switches = kRenderSwitches;
+    switches.insert(switches.end(), {"--quiet", "--help"});
+    return parse_arguments(words, valued, switches, command);
+}
+
 RenderOptions render_options_from(const Arguments& args, int default_width) {
     RenderOptions o;
     o.width = static_cast<int>(parse_count(

@@ -1,6 +1,7 @@
 #pragma once
 // The picture options shared by `rodsea render` and `rodsea movie`, parsed from their flags.
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "rodsea/cli/arguments.hpp"
@@ -13,6 +14,11 @@ extern const std::vector<std::string> kRenderValuedFlags;
 extern const std::vector<std::string> kRenderSwitches;
 // Their help text, for both commands' --help.
 extern const char* const kRenderFlagsHelp;
+
+// The words of a picture command: the picture flags, the command's own `valued` flags, --quiet
+// and --help.
+Arguments parse_picture_arguments(const std::vector<std::string>& words,
+                                  std::vector<std::string> valued, std::string_view command);
 
 // Throws InvalidParameter naming the flag for an unknown colouring or a malformed number;
 // ranges that depend on the run are checked by FrameRenderer.
