@@ -3,6 +3,7 @@
 // by e when frictionless, and kinetic energy never gained.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -172,6 +173,49 @@ TEST(TwoBodyCollision, RandomRodPairsConserveMomentumAndNeverGainEnergy) {
     }
     EXPECT_GT(with_impulse, trials / 2);
     EXPECT_GT(single_frictionless, trials / 10);
+}
+
+}  // namespace
+}  // namespace rodsea
+
+namespace rodsea {
+namespace {
+
+// A bead dropped 0.5 mm onto a still base hits it at v₀ = √(2gh) = 99.0 mm/s and bounces with
+// e = 0.3: 99.0, 29.7, 8.9, 2.7, then 0.80 mm/s and less, until it lies on the base and gets an
+// impulse every step against gravity's g·dt. The collision count (approach above
+// kCollisionSpeed = 1 mm/s) is the 4 bounces faster than that, at any dt (the next, 0.80 mm/s,
+// is 20 % below the threshold, far more than the g·dt ≤ 0.04 mm/s that stepping adds), while
+// the impulses of the resting steps grow as 1/dt.
+TEST(CollisionCount, ABouncingBeadCountsItsBouncesNotItsRestingSteps) {
+    const auto drop = [](double dt) {
+        EngineParameters p;
+        p.box = {10.0, 10.0};
+        p.drive.gamma = 0.0;  // the base stays at z = 0
+        p.dt = dt;
+        p.species = {bead_species()};
+        BodyState bodies;
+        const double radius = 0.4;
+        bodies.add(0, {5.0, 5.0, radius + 0.5}, Quat{}, {}, {});
+        Simulation sim(p, bodies);
+        std::size_t body = 0, plate = 0;
+        const auto steps = static_cast<std::uint64_t>(std::llround(0.03 / dt));  // 30 ms
+        for (std::uint64_t i = 0; i < steps; ++i) {
+            sim.step();
+            body += sim.last_step().body_collisions;
+            plate += sim.last_step().plate_collisions;
+        }
+        return std::array<double, 3>{static_cast<double>(body), static_cast<double>(plate),
+                                     static_cast<double>(sim.totals().impulses)};
+    };
+    const auto coarse = drop(4e-6), fine = drop(1e-6);
+    EXPECT_EQ(coarse[0], 0.0);
+    EXPECT_EQ(fine[0], 0.0);
+    EXPECT_EQ(coarse[1], 4.0);
+    EXPECT_EQ(fine[1], 4.0);
+    // ~11 ms of rest at the end: ~2700 impulses at 4 µs, ~4 times as many at 1 µs.
+    EXPECT_GT(coarse[2], 1000.0);
+    EXPECT_NEAR(fine[2] / coarse[2], 4.0, 0.2);
 }
 
 }  // namespace

@@ -175,8 +175,9 @@ TEST(RunWorkflow, FullDiskStopsWithACheckpointThatResumes) {
     EXPECT_EQ(ta.steps(), tb.steps());
     EXPECT_TRUE(same_bits(ta.frame(ta.frames() - 1), tb.frame(tb.frames() - 1)));
     // The frame that failed is rewritten on resume with the interval it was to close.
-    for (const char* column : {"max_overlap_fraction", "max_sweeps", "impulses_per_step",
-                               "unresolved_contacts", "polar_order_polar"})
+    for (const char* column :
+         {"max_overlap_fraction", "max_sweeps", "impulses_per_step", "body_collision_rate",
+          "plate_collision_rate", "unresolved_contacts", "polar_order_polar"})
         EXPECT_EQ(ta.series(column), tb.series(column)) << column;
 }
 
@@ -305,7 +306,7 @@ TEST(RunInfo, ReportsTheLargestSystemOfThePaper) {
     const ChildResult r = run_rodsea({"info", config.string()}, dir.path());
     ASSERT_EQ(r.exit_code, kExitOk) << r.err;
     for (const char* expected : {" 101070 ", " 800 ", "101870 bodies, 111470 spheres",
-                                 "A = 43.486 um", "200000 steps", "5.3 MB", "packing  feasible"})
+                                 "A = 43.486 um", "800000 steps", "5.3 MB", "packing  feasible"})
         EXPECT_NE(r.out.find(expected), std::string::npos) << expected << " in\n" << r.out;
     for (const std::string& choice : load_config_file(config).choices)
         EXPECT_NE(r.out.find(choice), std::string::npos) << choice;

@@ -74,6 +74,7 @@ ResolutionStats ContactResolver::resolve(const std::vector<Contact>& contacts, B
                 last_changed_[c.b] = sweep;
             }
             ++stats.impulses;
+            if (-un > kCollisionSpeed) ++(plate ? stats.plate_collisions : stats.body_collisions);
             any_impulse = true;
         }
     }

@@ -144,8 +144,10 @@ void Simulation::step() {
                                   params_.seed, step_count_);
     }
 
-    last_ = {found.body_contacts,       found.plate_contacts, resolved.sweeps,
-             resolved.impulses,         resolved.unresolved,  kicks,
+    last_ = {found.body_contacts,       found.plate_contacts,
+             resolved.sweeps,           resolved.impulses,
+             resolved.body_collisions,  resolved.plate_collisions,
+             resolved.unresolved,       kicks,
              found.max_overlap_fraction};
     totals_.impulses += resolved.impulses;
     totals_.unresolved += resolved.unresolved;

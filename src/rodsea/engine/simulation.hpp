@@ -25,6 +25,8 @@ struct StepStatistics {
     size_t plate_contacts = 0;
     int sweeps = 0;
     size_t impulses = 0;
+    size_t body_collisions = 0;   // impulses at approach speeds above kCollisionSpeed
+    size_t plate_collisions = 0;  // the same with a plate
     size_t unresolved = 0;
     size_t noise_kicks = 0;
     double max_overlap_fraction = 0.0;  // largest overlap / smaller radius found this step

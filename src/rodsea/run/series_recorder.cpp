@@ -21,6 +21,10 @@ SeriesRecorder::SeriesRecorder(const EngineParameters& params)
     columns_.push_back({"unresolved_contacts", "1"});
     columns_.push_back({"max_sweeps", "1"});
     columns_.push_back({"impulses_per_step", "1"});
+    // Collisions (impulses at approach speeds above kCollisionSpeed) per body per simulated
+    // second; a collision between two bodies counts for both.
+    columns_.push_back({"body_collision_rate", "s-1"});
+    columns_.push_back({"plate_collision_rate", "s-1"});
     columns_.push_back({"steps_per_second", "s-1"});
 }
 
@@ -29,6 +33,8 @@ void SeriesRecorder::accumulate(const StepStatistics& s) {
     unresolved_ += static_cast<double>(s.unresolved);
     max_sweeps_ = std::max(max_sweeps_, static_cast<double>(s.sweeps));
     impulses_ += static_cast<double>(s.impulses);
+    body_collisions_ += static_cast<double>(s.body_collisions);
+    plate_collisions_ += static_cast<double>(s.plate_collisions);
     steps_ += 1.0;
 }
 
@@ -61,22 +67,28 @@ std::vector<double> SeriesRecorder::row(const Simulation& sim, double steps_per_
     values.push_back(unresolved_);
     values.push_back(max_sweeps_);
     values.push_back(steps_ > 0.0 ? impulses_ / steps_ : 0.0);
+    const double body_seconds = steps_ * p.dt * static_cast<double>(b.size());
+    values.push_back(body_seconds > 0.0 ? 2.0 * body_collisions_ / body_seconds : 0.0);
+    values.push_back(body_seconds > 0.0 ? plate_collisions_ / body_seconds : 0.0);
     values.push_back(steps_per_second);
     return values;
 }
 
 std::vector<double> SeriesRecorder::interval_state() const {
-    return {max_overlap_, unresolved_, max_sweeps_, impulses_, steps_};
+    return {max_overlap_,     unresolved_,       max_sweeps_, impulses_,
+            body_collisions_, plate_collisions_, steps_};
 }
 
 void SeriesRecorder::restore_interval(const std::vector<double>& state) {
-    if (state.size() != 5)
-        throw std::invalid_argument("time-series interval state needs 5 numbers");
+    if (state.size() != 7)
+        throw std::invalid_argument("time-series interval state needs 7 numbers");
     max_overlap_ = state[0];
     unresolved_ = state[1];
     max_sweeps_ = state[2];
     impulses_ = state[3];
-    steps_ = state[4];
+    body_collisions_ = state[4];
+    plate_collisions_ = state[5];
+    steps_ = state[6];
 }
 
 }  // namespace rodsea

@@ -1,8 +1,8 @@
 #pragma once
 // The scalar time series written every output interval: order parameters and kinetic energies
 // per species from the current state, and the engine's health (largest overlap, unresolved
-// contacts, sweeps, impulses) accumulated over the interval, so that a bad step between two
-// rows is not missed.
+// contacts, sweeps, impulses) and collision rates accumulated over the interval, so that a bad
+// step between two rows is not missed.
 #include <vector>
 
 #include "rodsea/engine/simulation.hpp"
@@ -19,7 +19,7 @@ class SeriesRecorder {
     // The row for the current state and the interval so far.
     std::vector<double> row(const Simulation& sim, double steps_per_second) const;
     // Called once the row is safely written: the next row covers the steps from here.
-    void start_interval() { restore_interval({0.0, 0.0, 0.0, 0.0, 0.0}); }
+    void start_interval() { restore_interval({0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}); }
 
     // The partly filled interval, for checkpoints: a resumed run then writes the same rows.
     std::vector<double> interval_state() const;
@@ -32,6 +32,8 @@ class SeriesRecorder {
     double unresolved_ = 0.0;
     double max_sweeps_ = 0.0;
     double impulses_ = 0.0;
+    double body_collisions_ = 0.0;
+    double plate_collisions_ = 0.0;
     double steps_ = 0.0;
 };
 
