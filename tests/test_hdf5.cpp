@@ -40,6 +40,7 @@ BodyState random_bodies(size_t n, std::uint64_t seed) {
 EngineParameters two_species() {
     EngineParameters p;
     p.box = {30.0, 30.0};
+    p.drive.gap = 1.5;  // mm: the box's z edge in the file
     p.species = {polar_rod_species(), apolar_rod_species(2.5)};
     return p;
 }

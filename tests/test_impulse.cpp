@@ -105,9 +105,10 @@ TEST(PlateCollision, SpinningSphereSticksOrSlidesWithinTheCone) {
         scene.params.drive.gamma = 0.0;
         scene.params.drive.gravity = 0.0;
         scene.params.species[0].plate = {mu, 0.3};
-        // 0.1 µm above the fixed base at z = 0: it touches in the first step.
-        scene.bodies.position[0].z = scene.params.species[0].shape.radii[0] + 1e-4;
+        // Half a step's fall above the fixed base at z = 0: it touches in the first step.
         scene.bodies.velocity[0] = {20.0, 5.0, -30.0};
+        scene.bodies.position[0].z =
+            scene.params.species[0].shape.radii[0] + 0.5 * 30.0 * scene.params.dt;
         scene.bodies.spin[0] = {10.0, -40.0, 3.0};
         Simulation sim(scene.params, scene.bodies);
         const double m = scene.params.species[0].shape.mass;

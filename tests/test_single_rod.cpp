@@ -1,6 +1,6 @@
 // One rod alone on the vibrated base, no noise (ε = 0). A polar rod must travel along its axis
-// in a consistent direction; we measure which direction and how fast and report both (MODEL.md
-// §7: experiments show thick → thin at 3.6 ± 2.5 mm/s). An apolar rod must show no drift.
+// in a consistent direction, thick → thin at the default gap as in experiments (MODEL.md §7:
+// 3.6 ± 2.5 mm/s; docs/model.md chooses the gap for it). An apolar rod must show no drift.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -86,6 +86,10 @@ TEST(SingleRod, PolarRodTravelsAlongItsAxisInAConsistentDirection) {
     // Consistent: the mean is many standard errors from zero and most windows agree with it.
     EXPECT_GT(std::abs(d.axial_speed), 3.0 * d.window_speed_sd / std::sqrt(d.windows));
     EXPECT_GE(d.consistent_fraction, 0.8);
+    // The default gap (1.40 mm) was chosen as the widest at which the rod goes the experiment's
+    // way (docs/model.md: 2.55 ± 0.02 mm/s over 32 copies); 1.42 mm already reverses it, so a
+    // change to the ratchet (plate contacts, friction, the rod's shape) shows up here first.
+    EXPECT_GT(d.axial_speed, 0.0);
 }
 
 // A single trajectory of an apolar rod can walk along its axis for hundreds of periods: tipped

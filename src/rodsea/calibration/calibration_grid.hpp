@@ -14,7 +14,7 @@ struct CalibrationGrid {
     Species species;
     std::vector<double> epsilon{0.0};                // 1/mm
     std::vector<double> gap{DriveParameters{}.gap};  // mm
-    std::vector<double> dt{5e-6};                    // s
+    std::vector<double> dt{EngineParameters{}.dt};   // s
     int copies = 8;
     double duration = 2.0;  // s measured per copy
     double warmup = 0.2;    // s

@@ -14,11 +14,11 @@ namespace rodsea {
 struct SingleBodyExperiment {
     Species species;
     DriveParameters drive;
-    double dt = 5e-6;       // s
-    double epsilon = 0.0;   // 1/mm, the noise amplitude (polar rods only)
-    int copies = 8;         // independent bodies
-    double warmup = 0.2;    // s discarded after the start (coasting, settling)
-    double duration = 2.0;  // s measured per copy
+    double dt = EngineParameters{}.dt;  // s
+    double epsilon = 0.0;               // 1/mm, the noise amplitude (polar rods only)
+    int copies = 8;                     // independent bodies
+    double warmup = 0.2;                // s discarded after the start (coasting, settling)
+    double duration = 2.0;              // s measured per copy
     std::uint64_t seed = 1;
 };
 

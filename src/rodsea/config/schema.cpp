@@ -97,10 +97,11 @@ std::vector<KeySpec> make_keys() {
                     .doc("Ω = 2πf."));
     k.push_back(real("drive", "gap")
                     .unit("mm")
-                    .def(1.5)
+                    .def(1.40)
                     .range(left_open(0.0, 100.0))
-                    .choice("provisional: the paper's 1.2 mm cannot hold the 1.375 mm thick end "
-                            "of its polar rod; MODEL.md §1")
+                    .choice("the paper's 1.2 mm cannot hold the 1.375 mm thick end of its polar "
+                            "rod; 1.40 mm is the widest gap at which a lone polar rod goes thick "
+                            "→ thin as in the experiment (2.6 mm/s); docs/model.md")
                     .doc("w, the distance from the base to the lid. Every body's largest sphere "
                          "must fit."));
     k.push_back(real("drive", "gravity")
@@ -225,10 +226,11 @@ std::vector<KeySpec> make_keys() {
     // [time]
     k.push_back(real("time", "dt")
                     .unit("s")
-                    .def(5e-6)
+                    .def(1.25e-6)
                     .range(closed(1e-9, 1e-3))
-                    .choice("1000 steps per 5 ms drive period; results must not change when it "
-                            "is halved; MODEL.md §3")
+                    .choice("4000 steps per 5 ms drive period: 5 µs makes a lone polar rod 16 % "
+                            "too fast; at 1.25 µs D_r agrees with dt/4 and the speed to 3–5 %; "
+                            "docs/model.md")
                     .doc("The time step."));
     k.push_back(real("time", "duration")
                     .unit("s")

@@ -14,7 +14,7 @@ namespace rodsea {
 struct DriveParameters {
     double gamma = 7.0;                                   // Γ = AΩ²/g, dimensionless, [0, 1000]
     double angular_frequency = 400.0 * std::numbers::pi;  // Ω, rad/s, > 0
-    double gap = 1.5;         // w, mm (MODEL.md CHOICE, provisional), > 0
+    double gap = 1.40;        // w, mm (CHOICE by calibration, docs/model.md), > 0
     double gravity = 9810.0;  // g, mm/s² (MODEL.md CHOICE 9.81 m/s²), >= 0
 
     double amplitude() const {  // A, mm
@@ -56,7 +56,7 @@ struct EngineParameters {
     // `body_body` for every pair (the paper uses one value for all pairs).
     ContactCoefficients body_body;
     std::vector<ContactCoefficients> body_body_by_pair;
-    double dt = 5e-6;            // s (MODEL.md CHOICE: 1000 steps per drive period), > 0
+    double dt = 1.25e-6;         // s (CHOICE by convergence, docs/model.md: 4000 per period), > 0
     double noise_epsilon = 0.0;  // ε, 1/mm: ω_z += ε |u_n| η at plate hits of polar rods, >= 0
     std::uint64_t seed = 1;
     int max_sweeps = 2000;  // impulse sweeps per step before contacts count as unresolved
