@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <memory>
 #include <numbers>
 #include <sstream>
@@ -205,13 +206,21 @@ namespace {
 // the resolved config holds that ε, so a stored run never needs the table again.
 class ConfigFromCalibrationTable : public ::testing::Test {
   protected:
+    inline static const double kGap = DriveParameters{}.gap;  // mm
+    inline static const double kDt = EngineParameters{}.dt;   // s
+    static std::string exact(double x) {
+        std::ostringstream s;
+        s << std::setprecision(17) << x;
+        return s.str();
+    }
     void SetUp() override {
         scratch_ = std::make_unique<ScratchDir>("calibration-table");
-        write_table("cal.csv", {{1.5, 5e-6, 0.0, 0.0},
-                                {1.5, 5e-6, 0.01, 0.1},
-                                {1.5, 5e-6, 0.02, 0.5},
-                                {1.4, 5e-6, 0.01, 0.7},
-                                {1.5, 2.5e-6, 0.01, 0.9}});
+        // The map at the default gap and dt, and one row each at another gap and another dt.
+        write_table("cal.csv", {{kGap, kDt, 0.0, 0.0},
+                                {kGap, kDt, 0.01, 0.1},
+                                {kGap, kDt, 0.02, 0.5},
+                                {kGap + 0.1, kDt, 0.01, 0.7},
+                                {kGap, 2 * kDt, 0.01, 0.9}});
     }
     // Rows of (gap mm, dt s, ε 1/mm, D_r rad²/s) with the columns rodsea calibrate writes.
     void write_table(const std::string& name, const std::vector<std::array<double, 4>>& rows) {
@@ -232,16 +241,33 @@ class ConfigFromCalibrationTable : public ::testing::Test {
 };
 
 TEST_F(ConfigFromCalibrationTable, InterpolatesEpsilonAtTheRunsGapAndStep) {
-    // Default gap 1.5 mm, dt 5 µs: D_r = 0.3 lies halfway between 0.1 (ε 0.01) and 0.5 (0.02).
+    // At the default gap and dt, D_r = 0.3 lies halfway between 0.1 (ε 0.01) and 0.5 (0.02).
     EXPECT_NEAR(load("cal.csv", 0.3).engine.noise_epsilon, 0.015, 1e-12);
     EXPECT_NEAR(load("cal.csv", 0.05).engine.noise_epsilon, 0.005, 1e-12);
     EXPECT_NEAR(load("cal.csv", 0.5).engine.noise_epsilon, 0.02, 1e-12);  // the table's end
     // The rows at another gap or step are another map.
-    EXPECT_THROW(load("cal.csv", 0.3, "[drive]\ngap = 1.4\n"), InvalidParameter);
+    EXPECT_THROW(load("cal.csv", 0.3, "[drive]\ngap = " + exact(kGap + 0.1) + "\n"),
+                 InvalidParameter);
+    EXPECT_THROW(load("cal.csv", 0.3, "[time]\ndt = " + exact(2 * kDt) + "\n"), InvalidParameter);
     // Stored runs carry ε itself: their config loads without the table.
     const RunPlan plan = load("cal.csv", 0.3);
     fs::remove(path("cal.csv"));
     EXPECT_NEAR(load_config_string(plan.config_toml, "stored").engine.noise_epsilon, 0.015, 1e-12);
+}
+
+TEST_F(ConfigFromCalibrationTable, TheCommittedTableGivesThePapersNoiseAtTheDefaults) {
+    // data/calibration.csv is measured at the default gap and dt (validate/epsilon.toml), so the
+    // paper's D_r values resolve without naming either, to ε growing with D_r. A changed default
+    // gap or dt without a re-measured table fails here.
+    const fs::path table = fs::path(RODSEA_SOURCE_DIR) / "data" / "calibration.csv";
+    EXPECT_EQ(load(table.string(), 0.0).engine.noise_epsilon, 0.0);  // its ε = 0 row
+    double previous = 0.0;
+    for (double d_r : {0.026, 0.23, 1.21, 1.87}) {
+        SCOPED_TRACE(d_r);
+        const double eps = load(table.string(), d_r).engine.noise_epsilon;
+        EXPECT_GT(eps, previous);
+        previous = eps;
+    }
 }
 
 TEST_F(ConfigFromCalibrationTable, RefusesWhatTheTableCannotAnswer) {
@@ -258,9 +284,15 @@ TEST_F(ConfigFromCalibrationTable, RefusesWhatTheTableCannotAnswer) {
     EXPECT_NE(above.find("noise.rotational_diffusion"), std::string::npos) << above;
     EXPECT_NE(above.find("[0, 0.5] rad²/s"), std::string::npos) << above;
     EXPECT_NE(above.find("rodsea calibrate"), std::string::npos) << above;
+    // Below a table that does not start at ε = 0 is outside it too; one that does start there
+    // maps any D_r up to its noiseless rod's to ε = 0.
+    write_table("noisy.csv", {{kGap, kDt, 0.01, 0.1}, {kGap, kDt, 0.02, 0.5}});
+    EXPECT_NE(message("noisy.csv", 0.05).find("[0.1, 0.5] rad²/s"), std::string::npos);
+    write_table("offset.csv", {{kGap, kDt, 0.0, 0.001}, {kGap, kDt, 0.02, 0.5}});
+    EXPECT_EQ(load("offset.csv", 0.0005).engine.noise_epsilon, 0.0);
     // D_r that does not grow with ε cannot be inverted.
     write_table("flat.csv",
-                {{1.5, 5e-6, 0.0, 0.0}, {1.5, 5e-6, 0.01, 0.2}, {1.5, 5e-6, 0.02, 0.2}});
+                {{kGap, kDt, 0.0, 0.0}, {kGap, kDt, 0.01, 0.2}, {kGap, kDt, 0.02, 0.2}});
     EXPECT_NE(message("flat.csv", 0.1).find("D_r increasing with ε"), std::string::npos);
     // One point is not a map; the message lists the gaps and steps the table does have.
     write_table("one.csv", {{1.5, 5e-6, 0.0, 0.0}, {1.6, 5e-6, 0.01, 0.2}});

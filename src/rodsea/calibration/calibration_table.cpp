@@ -102,12 +102,16 @@ CalibrationTable CalibrationTable::read(const std::filesystem::path& path, doubl
 
 double CalibrationTable::epsilon_for(double d_r) const {
     const Point &lo = points_.front(), &hi = points_.back();
-    if (!(d_r >= lo.d_r && d_r <= hi.d_r))
+    // A row at ε = 0 is the noiseless rod: its small measured D_r (start-up turning) is the
+    // least the table can give, and any D_r from 0 up to it means no noise.
+    const double least = lo.epsilon == 0.0 ? 0.0 : lo.d_r;
+    if (!(d_r >= least && d_r <= hi.d_r))
         throw InvalidParameter(
             "noise.rotational_diffusion", format_number(d_r) + " rad²/s",
-            "[" + format_number(lo.d_r) + ", " + format_number(hi.d_r) + "] rad²/s",
+            "[" + format_number(least) + ", " + format_number(hi.d_r) + "] rad²/s",
             "the range of " + path_.string() + " (ε from " + format_number(lo.epsilon) + " to " +
                 format_number(hi.epsilon) + " /mm); extend it with rodsea calibrate");
+    if (d_r <= lo.d_r) return lo.epsilon;
     std::size_t i = 1;
     while (i + 1 < points_.size() && points_[i].d_r < d_r)
         ++i;
