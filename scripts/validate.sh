@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# The validate tier: every measurement behind docs/validation.md and docs/model.md's choice of
+# gap and time step, regenerated from scratch. Not part of CI: about 65 minutes on 2 cores.
+#
+#   scripts/validate.sh [OUT [PART...]]     (default OUT: out/validate; PART: all of
+#                                            gap dt dt-fine epsilon apolar-rod bead mixture)
+#
+# Parts already in OUT are kept, so a tier can be completed part by part; the report uses
+# whatever parts OUT holds.
+# Environment: RODSEA_BUILD (build directory, default build), RODSEA_THREADS (default: all
+# cores), RODSEA_PYTHON (default /usr/bin/python3, with numpy and matplotlib).
+# Writes OUT/<part>/ for each part, OUT/validation.md (the tables) and OUT/*.png (the plots), and
+# OUT/epsilon/calibration.csv, the table committed as data/calibration.csv.
+set -euo pipefail
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+out=${1:-$root/out/validate}
+shift || true
+parts=("$@")
+all_parts=(gap dt dt-fine epsilon apolar-rod bead mixture)
+[[ ${#parts[@]} -gt 0 ]] || parts=("${all_parts[@]}")
+for part in "${parts[@]}"; do
+    if [[ " ${all_parts[*]} " != *" $part "* ]]; then
+        echo "validate.sh: unknown part '$part' (parts: ${all_parts[*]})" >&2
+        exit 2
+    fi
+done
+build=${RODSEA_BUILD:-$root/build}
+threads=${RODSEA_THREADS:-$(nproc)}
+python=${RODSEA_PYTHON:-/usr/bin/python3}
+rodsea=$build/rodsea
+
+if [[ ! -f $build/build.ninja && ! -f $build/Makefile ]]; then
+    cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
+fi
+cmake --build "$build" --target rodsea
+mkdir -p "$out"
+
+started=$SECONDS
+stamp() { printf '[validate %4d s] %s\n' $((SECONDS - started)) "$*"; }
+
+# The dense mixture at dt, dt/2 and dt/4 of the default (1.25 µs), several seeds each: independent
+# single-threaded runs, $threads at a time.
+run_mixture() {
+    mixture_dts=(1.25e-6 6.25e-7 3.125e-7)
+    mixture_seeds=(1 2 3 4 5 6 7 8)
+    mixture_duration=0.2  # s
+    mkdir -p "$out/mixture"
+    jobs_file=$out/mixture/jobs
+    : >"$jobs_file"
+    for dt in "${mixture_dts[@]}"; do
+        for seed in "${mixture_seeds[@]}"; do
+            name=dt${dt}_seed${seed}
+            config=$out/mixture/$name.toml
+            {
+                cat "$root/validate/mixture.toml"
+                printf '\n[time]\ndt = %s  # s\nduration = %s  # s\n\n[run]\nseed = %s\n' \
+                    "$dt" "$mixture_duration" "$seed"
+            } >"$config"
+            printf '%s\0%s\0' "$config" "$out/mixture/$name" >>"$jobs_file"
+        done
+    done
+    stamp "mixture: ${#mixture_dts[@]} time steps × ${#mixture_seeds[@]} seeds, $threads at a time"
+    xargs -0 -n 2 -P "$threads" sh -c '"$0" run "$1" --out "$2" --overwrite --quiet' "$rodsea" \
+        <"$jobs_file"
+    rm -f "$jobs_file"
+}
+
+for part in "${parts[@]}"; do
+    if [[ $part == mixture ]]; then
+        run_mixture
+    else
+        # Single bodies: one `rodsea calibrate`, each point's copies spread over the threads.
+        stamp "calibrate validate/$part.toml"
+        "$rodsea" calibrate "$root/validate/$part.toml" --out "$out/$part" --threads "$threads" \
+            --quiet
+    fi
+done
+
+stamp "report"
+"$python" "$root/scripts/validation_report.py" "$out"
+stamp "done: $out/validation.md"
