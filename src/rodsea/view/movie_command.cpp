@@ -113,11 +113,7 @@ int movie_command(const std::vector<std::string>& words, std::ostream& out, std:
         out << "\nrodsea movie: stopped by signal " << stop.signal << "; no movie written\n";
         return stop.exit_code();
     }
-    if (!quiet)
-        out << "wrote " << output.string() << " ("
-            << format_number(
-                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count())
-            << " s)\n";
+    if (!quiet) report_written(out, output, start);
     return 0;
 }
 

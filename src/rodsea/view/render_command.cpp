@@ -70,11 +70,7 @@ int render_command(const std::vector<std::string>& words, std::ostream& out, std
         return StopRequested{signal}.exit_code();
     }
     write_png(image, output);
-    if (!quiet)
-        out << "wrote " << output.string() << " ("
-            << format_number(
-                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count())
-            << " s)\n";
+    if (!quiet) report_written(out, output, start);
     return 0;
 }
 

@@ -96,4 +96,11 @@ std::string describe(const RenderOptions& options, const FrameRenderer& renderer
     return s;
 }
 
+void report_written(std::ostream& out, const std::filesystem::path& output,
+                    std::chrono::steady_clock::time_point start) {
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out << "wrote " << output.string() << " (" << format_number(seconds) << " s)\n";
+}
+
 }  // namespace rodsea

@@ -1,5 +1,8 @@
 #pragma once
 // The picture options shared by `rodsea render` and `rodsea movie`, parsed from their flags.
+#include <chrono>
+#include <filesystem>
+#include <ostream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,5 +29,9 @@ RenderOptions render_options_from(const Arguments& args, int default_width);
 
 // "polar by direction, medium neutral, 1200×800 px, whole box": for the plan line.
 std::string describe(const RenderOptions& options, const FrameRenderer& renderer);
+
+// The closing line of a picture command: "wrote F (t s)", t the wall time since `start`.
+void report_written(std::ostream& out, const std::filesystem::path& output,
+                    std::chrono::steady_clock::time_point start);
 
 }  // namespace rodsea
