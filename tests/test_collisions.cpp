@@ -220,3 +220,40 @@ TEST(CollisionCount, ABouncingBeadCountsItsBouncesNotItsRestingSteps) {
 
 }  // namespace
 }  // namespace rodsea
+
+namespace rodsea {
+namespace {
+
+// A bead on a base shaken at Γ = 0.8 never leaves it (the base never accelerates downward faster
+// than g). Each step, free flight lets it sink by about ½ (a + g) dt² relative to the base, and the
+// resting impulse (with e = 0.3 on an approach of (a + g) dt) adds at most e (a + g) dt² more. The
+// projection out of the plate undoes that depth every step, so the deepest overlap contact search
+// ever sees is bounded by one step's (1 + e)(Γ + 1) g dt². Without it the depth would add up over
+// the 4 periods to ~½ g T dt ≈ 1e-4 mm, thousands of times that bound.
+TEST(PlateProjection, ABeadRestingOnTheShakenBaseSinksAtMostOneStepsWorth) {
+    EngineParameters p;
+    p.box = {10.0, 10.0};
+    p.drive.gamma = 0.8;
+    p.species = {bead_species()};
+    const double radius = 0.4;
+    const double e = p.species[0].plate.restitution;
+    BodyState bodies;
+    // At t = 0 the base is at its top, z = A, and at rest.
+    bodies.add(0, {5.0, 5.0, p.drive.amplitude() + radius}, Quat{}, {}, {});
+    Simulation sim(p, bodies);
+    const double period = 2.0 * std::numbers::pi / p.drive.angular_frequency;
+    const auto steps = static_cast<std::uint64_t>(std::llround(4.0 * period / p.dt));
+    double deepest = 0.0, highest = 0.0;
+    for (std::uint64_t i = 0; i < steps; ++i) {
+        sim.step();
+        deepest = std::max(deepest, sim.last_step().max_overlap_fraction * radius);
+        highest = std::max(highest, sim.bodies().position[0].z - radius - sim.plates().base_z);
+    }
+    const double one_step = (1.0 + e) * (p.drive.gamma + 1.0) * p.drive.gravity * p.dt * p.dt;
+    EXPECT_GT(deepest, 0.0);  // it did press on the base
+    EXPECT_LT(deepest, one_step);
+    EXPECT_LT(highest, one_step);  // and stayed on it
+}
+
+}  // namespace
+}  // namespace rodsea

@@ -136,6 +136,7 @@ void Simulation::step() {
         plate_hits_.clear();
         resolved = resolver_.resolve(contacts_, bodies_, inverse_inertia_, plates.velocity_z,
                                      params_, plate_hits_);
+        plate_projection_.apply(contacts_, bodies_, spheres_);
     }
     size_t kicks = 0;
     {

@@ -14,6 +14,7 @@
 #include "rodsea/engine/contact_resolution.hpp"
 #include "rodsea/engine/contact_search.hpp"
 #include "rodsea/engine/parameters.hpp"
+#include "rodsea/engine/plate_projection.hpp"
 #include "rodsea/engine/plates.hpp"
 #include "rodsea/engine/sphere_table.hpp"
 #include "rodsea/neighbors/periodic_cell_list.hpp"
@@ -46,7 +47,7 @@ struct StageProfile {
     double free_flight = 0.0;
     double sphere_update = 0.0;
     double contact_search = 0.0;
-    double resolution = 0.0;
+    double resolution = 0.0;  // impulses and the projection out of the plates
     double noise = 0.0;
     double total() const {
         return free_flight + sphere_update + contact_search + resolution + noise;
@@ -101,6 +102,7 @@ class Simulation {
     InverseInertia inverse_inertia_;
     ContactResolver resolver_;
     std::vector<PlateHit> plate_hits_;
+    PlateProjection plate_projection_;
 
     StepStatistics last_;
     RunTotals totals_;
