@@ -2,12 +2,15 @@
 // the periodic boundary too.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include "rodsea/neighbors/periodic_cell_list.hpp"
+#include "rodsea/neighbors/verlet_pair_list.hpp"
 #include "rodsea/random.hpp"
 
 namespace rodsea {
@@ -107,6 +110,105 @@ TEST(PeriodicCellList, RefusesCutoffsAndDiscsItCannotServe) {
     // Wrapping maps into [0, L) even where x − L floor(x/L) rounds to L.
     EXPECT_EQ(PeriodicBox2D::wrap(-1e-18, 10.0), 0.0);
     EXPECT_EQ(PeriodicBox2D::wrap(-2.5, 10.0), 7.5);
+}
+
+}  // namespace
+}  // namespace rodsea
+
+namespace rodsea {
+namespace {
+
+struct Discs {
+    std::vector<Vec3> points;
+    std::vector<double> radii;
+    std::vector<std::uint32_t> groups;
+};
+
+Discs random_discs(const PeriodicBox2D& box, int n, std::uint64_t seed) {
+    SplitMix64 rng(seed);
+    Discs d;
+    for (int i = 0; i < n; ++i) {
+        d.points.push_back({rng.uniform(-1.0, box.lx + 1.0), rng.uniform(0, box.ly), 0.0});
+        d.radii.push_back(rng.uniform(0.2, 0.6875));
+        d.groups.push_back(static_cast<std::uint32_t>(i / 4));
+    }
+    return d;
+}
+
+// Every pair of different groups closer in the plane than `reach(i, j)`, brute force.
+template <class Reach>
+std::vector<std::pair<std::uint32_t, std::uint32_t>> close_pairs(const Discs& d,
+                                                                 const PeriodicBox2D& box,
+                                                                 Reach reach) {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
+    for (std::uint32_t i = 0; i < d.points.size(); ++i) {
+        for (std::uint32_t j = i + 1; j < d.points.size(); ++j) {
+            if (d.groups[i] == d.groups[j]) continue;
+            const Vec3 s = box.minimum_image(d.points[i] - d.points[j]);
+            const double r = reach(i, j);
+            if (s.x * s.x + s.y * s.y < r * r) out.emplace_back(i, j);
+        }
+    }
+    return out;
+}
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>> listed(const VerletPairList& list,
+                                                            const Discs& d,
+                                                            const PeriodicBox2D& box) {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
+    list.for_each_pair(d.points, [&](std::uint32_t i, std::uint32_t j, const Vec3& s) {
+        EXPECT_NEAR(norm(s - box.minimum_image(d.points[i] - d.points[j])), 0.0, 1e-12);
+        out.emplace_back(i, j);
+    });
+    return out;
+}
+
+// Built: exactly the pairs of different groups within r_i + r_j + skin, sorted by (i < j).
+TEST(VerletPairList, HoldsExactlyThePairsWithinReachPlusSkinInSortedOrder) {
+    const PeriodicBox2D box{12.0, 9.0};
+    const Discs d = random_discs(box, 400, 7);
+    VerletPairList list(0.1);
+    EXPECT_TRUE(list.update(d.points, d.radii, d.groups, box));
+    const auto expected = close_pairs(
+        d, box, [&](std::uint32_t i, std::uint32_t j) { return d.radii[i] + d.radii[j] + 0.1; });
+    EXPECT_EQ(listed(list, d, box), expected);  // brute force visits (i < j) in sorted order
+    EXPECT_GT(expected.size(), 100u);
+}
+
+// Moves smaller than skin / 2 keep the list, and it still holds every overlapping pair; a
+// sphere whose wrapped image jumps by a box side has not moved; a move past skin / 2 rebuilds.
+TEST(VerletPairList, KeepsItsPairsUntilAPointMovesHalfTheSkin) {
+    const PeriodicBox2D box{12.0, 9.0};
+    const double skin = 0.1;
+    Discs d = random_discs(box, 400, 8);
+    VerletPairList list(skin);
+    list.update(d.points, d.radii, d.groups, box);
+    SplitMix64 rng(9);
+    for (Vec3& p : d.points) {  // each point moves up to 0.035 in x and y: < skin / 2 in all
+        p.x += rng.uniform(-0.035, 0.035);
+        p.y += rng.uniform(-0.035, 0.035);
+    }
+    // The sphere furthest right belongs to a body that crossed x = L and was wrapped.
+    const auto rightmost = std::max_element(d.points.begin(), d.points.end(),
+                                            [](const Vec3& a, const Vec3& b) { return a.x < b.x; });
+    rightmost->x -= box.lx;
+    EXPECT_FALSE(list.update(d.points, d.radii, d.groups, box));
+    EXPECT_EQ(list.builds(), 1u);
+    const auto overlapping = close_pairs(
+        d, box, [&](std::uint32_t i, std::uint32_t j) { return d.radii[i] + d.radii[j]; });
+    const auto held = listed(list, d, box);
+    for (const auto& pair : overlapping)
+        EXPECT_TRUE(std::binary_search(held.begin(), held.end(), pair))
+            << pair.first << "," << pair.second;
+
+    d.points[10].y += 0.051;
+    EXPECT_TRUE(list.update(d.points, d.radii, d.groups, box));
+    EXPECT_EQ(list.builds(), 2u);
+}
+
+TEST(VerletPairList, RefusesASkinThatIsNotPositive) {
+    EXPECT_THROW(VerletPairList(0.0), std::invalid_argument);
+    EXPECT_THROW(VerletPairList(-1.0), std::invalid_argument);
 }
 
 }  // namespace

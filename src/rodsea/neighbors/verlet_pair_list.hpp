@@ -1,0 +1,94 @@
+#pragma once
+// Candidate sphere pairs for the engine's contact search, kept over many steps (a Verlet list):
+// every pair of discs (spheres seen from above) of different groups whose centres were closer in
+// the plane than r_i + r_j + skin when the list was built. It holds every overlapping pair until
+// some point has moved skin / 2 in the plane, and is rebuilt only then; bodies move micrometres per
+// step, so a list lasts hundreds of steps.
+//
+// Pairs are kept sorted by (i, j) with i < j, so the order in which contacts are found does not
+// depend on when the list was last rebuilt: a run resumed from a checkpoint finds the same
+// contacts in the same order as the run that never stopped.
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "rodsea/math/vec3.hpp"
+#include "rodsea/neighbors/periodic_cell_list.hpp"
+
+namespace rodsea {
+
+class VerletPairList {
+  public:
+    // skin in mm, > 0.
+    explicit VerletPairList(double skin = 0.1);
+
+    // Rebuilds when the list is new, the number of points or the box changed, or a point moved
+    // more than skin / 2 in the plane (minimum image) since the last build. Radii and groups
+    // are taken to be those of the last build unless the number of points changed. Points need
+    // not be wrapped, but must lie within half a box of their wrapped image's neighbours (true
+    // for the spheres of bodies shorter than half the box). Returns whether it rebuilt.
+    //
+    // `travel` (mm) bounds how far any point moved in the plane since the last update: the
+    // points are only looked at once these bounds add up to skin / 2 (bodies move micrometres
+    // per step, so most steps skip the check). Infinity, the default, checks every time.
+    bool update(std::span<const Vec3> points, std::span<const double> radii,
+                std::span<const std::uint32_t> groups, const PeriodicBox2D& box,
+                double travel = std::numeric_limits<double>::infinity());
+
+    // visit(i, j, d) for each listed pair, i < j, with d = p_i − p_j (minimum image in x, y),
+    // in the list's (i, j) order. `points` are the same points as in the last update().
+    template <class Visit>
+    void for_each_pair(std::span<const Vec3> points, Visit&& visit) const {
+        for (size_t k = 0; k < first_.size(); ++k) {
+            const std::uint32_t i = first_[k], j = second_[k];
+            visit(i, j, minimum_image(points[i] - points[j]));
+        }
+    }
+
+    // Pairs [begin, end) only, for splitting the list between threads.
+    template <class Visit>
+    void for_each_pair(std::span<const Vec3> points, size_t begin, size_t end,
+                       Visit&& visit) const {
+        for (size_t k = begin; k < end; ++k) {
+            const std::uint32_t i = first_[k], j = second_[k];
+            visit(i, j, minimum_image(points[i] - points[j]));
+        }
+    }
+
+    size_t size() const { return first_.size(); }
+    double skin() const { return skin_; }
+    std::uint64_t builds() const { return builds_; }
+
+  private:
+    // One conditional shift per axis: differences of points within half a box of their images
+    // are within 1.5 boxes, cheaper than a rounding per pair.
+    Vec3 minimum_image(Vec3 d) const {
+        if (d.x > half_x_)
+            d.x -= box_.lx;
+        else if (d.x < -half_x_)
+            d.x += box_.lx;
+        if (d.y > half_y_)
+            d.y -= box_.ly;
+        else if (d.y < -half_y_)
+            d.y += box_.ly;
+        return d;
+    }
+    double largest_move(std::span<const Vec3> points) const;  // since the last build, mm
+    void rebuild(std::span<const Vec3> points, std::span<const double> radii,
+                 std::span<const std::uint32_t> groups, const PeriodicBox2D& box);
+
+    double skin_;
+    PeriodicBox2D box_;
+    double half_x_ = 0.0, half_y_ = 0.0;
+    std::uint64_t builds_ = 0;
+    double slack_ = 0.0;  // bound on the largest move since the last build (mm)
+    std::vector<std::uint32_t> first_, second_;  // the pairs, sorted by (first, second)
+    std::vector<Vec3> reference_;                // the points at the last build
+    // Scratch for rebuilds.
+    PeriodicCellList2D cells_;
+    std::vector<double> inflated_;
+    std::vector<std::uint64_t> keys_;
+};
+
+}  // namespace rodsea
