@@ -1,20 +1,45 @@
 #include "rodsea/engine/contact_resolution.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "rodsea/engine/impulse.hpp"
 
 namespace rodsea {
 
-void InverseInertia::update(const BodyState& bodies, const std::vector<Species>& species) {
+void InverseInertia::compute(const BodyState& bodies, const std::vector<Species>& species,
+                             size_t b) {
+    const Shape& shape = species[bodies.species[b]].shape;
+    const Mat3 r = to_matrix(bodies.orientation[b]);
+    const Vec3& i = shape.principal_inertia;
+    inv_mass[b] = 1.0 / shape.mass;
+    inv_inertia[b] = r * Mat3::diagonal({1.0 / i.x, 1.0 / i.y, 1.0 / i.z}) * transpose(r);
+}
+
+void InverseInertia::update(const BodyState& bodies, const std::vector<Species>& species,
+                            int threads) {
     inv_mass.resize(bodies.size());
     inv_inertia.resize(bodies.size());
-    for (size_t b = 0; b < bodies.size(); ++b) {
-        const Shape& shape = species[bodies.species[b]].shape;
-        const Mat3 r = to_matrix(bodies.orientation[b]);
-        const Vec3& i = shape.principal_inertia;
-        inv_mass[b] = 1.0 / shape.mass;
-        inv_inertia[b] = r * Mat3::diagonal({1.0 / i.x, 1.0 / i.y, 1.0 / i.z}) * transpose(r);
+    const auto n = static_cast<std::ptrdiff_t>(bodies.size());
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+    for (std::ptrdiff_t b = 0; b < n; ++b)
+        compute(bodies, species, static_cast<size_t>(b));
+}
+
+void InverseInertia::update_for(const std::vector<Contact>& contacts, const BodyState& bodies,
+                                const std::vector<Species>& species) {
+    inv_mass.resize(bodies.size());
+    inv_inertia.resize(bodies.size());
+    stamp_.resize(bodies.size(), 0);
+    ++calls_;
+    const auto need = [&](std::uint32_t b) {
+        if (stamp_[b] == calls_) return;
+        stamp_[b] = calls_;
+        compute(bodies, species, b);
+    };
+    for (const Contact& c : contacts) {
+        need(c.a);
+        if (!c.with_plate()) need(c.b);
     }
 }
 
@@ -26,27 +51,69 @@ Vec3 contact_point_velocity(const BodyState& bodies, std::uint32_t b, const Vec3
 
 }  // namespace
 
-ResolutionStats ContactResolver::resolve(const std::vector<Contact>& contacts, BodyState& bodies,
-                                         const InverseInertia& inertia, double plate_velocity_z,
-                                         const EngineParameters& params,
-                                         std::vector<PlateHit>& hits) {
+void ContactResolver::find_islands(const std::vector<Contact>& contacts, size_t bodies) {
+    constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+    parent_.resize(bodies);
+    for (size_t b = 0; b < bodies; ++b)
+        parent_[b] = static_cast<std::uint32_t>(b);
+    const auto root = [&](std::uint32_t b) {
+        while (parent_[b] != b) {
+            parent_[b] = parent_[parent_[b]];  // path halving
+            b = parent_[b];
+        }
+        return b;
+    };
+    for (const Contact& c : contacts) {
+        if (c.with_plate()) continue;
+        const std::uint32_t ra = root(c.a), rb = root(c.b);
+        if (ra != rb) parent_[std::max(ra, rb)] = std::min(ra, rb);
+    }
+    // Number the islands in the order of their first contact, and sort the contacts by island
+    // (stable: list order within each island).
+    island_of_root_.assign(bodies, kNone);
+    contact_island_.resize(contacts.size());
+    island_start_.assign(1, 0);
+    for (size_t k = 0; k < contacts.size(); ++k) {
+        const std::uint32_t r = root(contacts[k].a);
+        if (island_of_root_[r] == kNone) {
+            island_of_root_[r] = static_cast<std::uint32_t>(island_start_.size() - 1);
+            island_start_.push_back(0);
+        }
+        contact_island_[k] = island_of_root_[r];
+        ++island_start_[island_of_root_[r] + 1];
+    }
+    island_count_ = island_start_.size() - 1;
+    for (size_t i = 0; i < island_count_; ++i)
+        island_start_[i + 1] += island_start_[i];
+    island_contacts_.resize(contacts.size());
+    island_cursor_.assign(island_start_.begin(), island_start_.end() - 1);
+    for (size_t k = 0; k < contacts.size(); ++k)
+        island_contacts_[island_cursor_[contact_island_[k]]++] = static_cast<std::uint32_t>(k);
+}
+
+ResolutionStats ContactResolver::sweep_island(size_t island, const std::vector<Contact>& contacts,
+                                              BodyState& bodies, const InverseInertia& inertia,
+                                              double plate_velocity_z,
+                                              const EngineParameters& params,
+                                              std::vector<PlateHit>& hits) {
     ResolutionStats stats;
-    last_changed_.assign(bodies.size(), 0);
     const Vec3 plate_velocity{0.0, 0.0, plate_velocity_z};
     const Mat3 zero = Mat3::zero();
-
     const auto relative_velocity = [&](const Contact& c) {
         const Vec3 va = contact_point_velocity(bodies, c.a, c.arm_a);
         return c.with_plate() ? va - plate_velocity
                               : va - contact_point_velocity(bodies, c.b, c.arm_b);
     };
+    const std::uint32_t* first = island_contacts_.data() + island_start_[island];
+    const std::uint32_t* last = island_contacts_.data() + island_start_[island + 1];
 
     bool any_impulse = true;
     while (any_impulse && stats.sweeps < params.max_sweeps) {
         ++stats.sweeps;
         const int sweep = stats.sweeps;
         any_impulse = false;
-        for (const Contact& c : contacts) {
+        for (const std::uint32_t* k = first; k != last; ++k) {
+            const Contact& c = contacts[*k];
             const bool plate = c.with_plate();
             const int changed =
                 plate ? last_changed_[c.a] : std::max(last_changed_[c.a], last_changed_[c.b]);
@@ -56,12 +123,13 @@ ResolutionStats ContactResolver::resolve(const std::vector<Contact>& contacts, B
             const double un = dot(u, c.normal);
             if (un >= -params.approach_tolerance) continue;
 
-            const Mat3 k =
+            const Mat3 k_matrix =
                 plate ? collision_matrix(inertia.inv_mass[c.a], inertia.inv_inertia[c.a], c.arm_a,
                                          0.0, zero, {})
                       : collision_matrix(inertia.inv_mass[c.a], inertia.inv_inertia[c.a], c.arm_a,
                                          inertia.inv_mass[c.b], inertia.inv_inertia[c.b], c.arm_b);
-            const Impulse impulse = stronge_impulse(u, c.normal, k, c.friction, c.restitution);
+            const Impulse impulse =
+                stronge_impulse(u, c.normal, k_matrix, c.friction, c.restitution);
 
             bodies.velocity[c.a] += inertia.inv_mass[c.a] * impulse.p;
             bodies.spin[c.a] += inertia.inv_inertia[c.a] * cross(c.arm_a, impulse.p);
@@ -79,11 +147,54 @@ ResolutionStats ContactResolver::resolve(const std::vector<Contact>& contacts, B
         }
     }
     if (any_impulse) {
-        for (const Contact& c : contacts)
-            if (dot(relative_velocity(c), c.normal) < -params.approach_tolerance)
+        for (const std::uint32_t* k = first; k != last; ++k)
+            if (dot(relative_velocity(contacts[*k]), contacts[*k].normal) <
+                -params.approach_tolerance)
                 ++stats.unresolved;
     }
     return stats;
+}
+
+ResolutionStats ContactResolver::resolve(const std::vector<Contact>& contacts, BodyState& bodies,
+                                         const InverseInertia& inertia, double plate_velocity_z,
+                                         const EngineParameters& params,
+                                         std::vector<PlateHit>& hits, int threads) {
+    last_changed_.assign(bodies.size(), 0);
+    find_islands(contacts, bodies.size());
+    ResolutionStats total;
+    if (threads <= 1) {
+        for (size_t i = 0; i < island_count_; ++i) {
+            const ResolutionStats s =
+                sweep_island(i, contacts, bodies, inertia, plate_velocity_z, params, hits);
+            total.sweeps = std::max(total.sweeps, s.sweeps);
+            total.impulses += s.impulses;
+            total.body_collisions += s.body_collisions;
+            total.plate_collisions += s.plate_collisions;
+            total.unresolved += s.unresolved;
+        }
+        return total;
+    }
+    // Each thread keeps its islands' hits apart and they are put back in island order, so that
+    // `hits` is the same list on any number of threads.
+    island_hits_.resize(island_count_);
+    island_stats_.resize(island_count_);
+    const auto n = static_cast<std::ptrdiff_t>(island_count_);
+#pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+        island_hits_[i].clear();
+        island_stats_[i] = sweep_island(static_cast<size_t>(i), contacts, bodies, inertia,
+                                        plate_velocity_z, params, island_hits_[i]);
+    }
+    for (size_t i = 0; i < island_count_; ++i) {
+        const ResolutionStats& s = island_stats_[i];
+        total.sweeps = std::max(total.sweeps, s.sweeps);
+        total.impulses += s.impulses;
+        total.body_collisions += s.body_collisions;
+        total.plate_collisions += s.plate_collisions;
+        total.unresolved += s.unresolved;
+        hits.insert(hits.end(), island_hits_[i].begin(), island_hits_[i].end());
+    }
+    return total;
 }
 
 }  // namespace rodsea

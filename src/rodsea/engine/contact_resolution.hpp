@@ -2,6 +2,12 @@
 // Stage 4 of the step: impulses on every approaching contact, swept Gauss–Seidel style until
 // no contact approaches or the sweep cap is reached. After the first sweep only contacts with
 // a body that changed since they were last checked are looked at again.
+//
+// Contacts fall into islands: bodies joined by body–body contacts (a plate joins nothing). An
+// island's sweeps never touch another island's bodies, and an island that got no impulse in a
+// sweep is skipped by every later one, so sweeping each island on its own, in list order,
+// applies exactly the impulses that sweeping the whole list does. Islands are swept in parallel:
+// the result is the same, bit for bit, on any number of threads.
 #include <cstdint>
 #include <vector>
 
@@ -11,12 +17,22 @@
 
 namespace rodsea {
 
-// Inverse mass and world-frame inverse inertia of every body for the current orientations.
+// Inverse mass and world-frame inverse inertia of bodies for the current orientations.
 struct InverseInertia {
     std::vector<double> inv_mass;
     std::vector<Mat3> inv_inertia;  // R I⁻¹ Rᵀ
 
-    void update(const BodyState& bodies, const std::vector<Species>& species);
+    // Every body.
+    void update(const BodyState& bodies, const std::vector<Species>& species, int threads = 1);
+    // Only the bodies in `contacts`, the only ones the resolver reads: in a vibrated monolayer a
+    // step has a contact for a few per cent of the bodies. The others keep stale values.
+    void update_for(const std::vector<Contact>& contacts, const BodyState& bodies,
+                    const std::vector<Species>& species);
+
+  private:
+    void compute(const BodyState& bodies, const std::vector<Species>& species, size_t b);
+    std::vector<std::uint64_t> stamp_;  // the update_for() call that last computed each body
+    std::uint64_t calls_ = 0;
 };
 
 // A body's collision with a plate this step: the approach speed |u_n| before its impulse.
@@ -43,12 +59,32 @@ struct ResolutionStats {
 
 class ContactResolver {
   public:
+    // Appends the plate hits to `hits`, island by island: the same list on any number of threads.
     ResolutionStats resolve(const std::vector<Contact>& contacts, BodyState& bodies,
                             const InverseInertia& inertia, double plate_velocity_z,
-                            const EngineParameters& params, std::vector<PlateHit>& hits);
+                            const EngineParameters& params, std::vector<PlateHit>& hits,
+                            int threads = 1);
+    size_t islands() const { return island_count_; }  // of the last resolve()
 
   private:
+    void find_islands(const std::vector<Contact>& contacts, size_t bodies);
+    ResolutionStats sweep_island(size_t island, const std::vector<Contact>& contacts,
+                                 BodyState& bodies, const InverseInertia& inertia,
+                                 double plate_velocity_z, const EngineParameters& params,
+                                 std::vector<PlateHit>& hits);
+
     std::vector<int> last_changed_;  // per body: the last sweep that gave it an impulse
+    // Islands, rebuilt every step: union–find over bodies, then the contacts of each island in
+    // list order (island_contacts_[island_start_[k] .. island_start_[k + 1]]).
+    std::vector<std::uint32_t> parent_;
+    std::vector<std::uint32_t> island_of_root_;
+    std::vector<std::uint32_t> contact_island_;
+    std::vector<std::uint32_t> island_start_;
+    std::vector<std::uint32_t> island_contacts_;
+    std::vector<std::uint32_t> island_cursor_;  // scratch: a cursor per island
+    std::vector<std::vector<PlateHit>> island_hits_;
+    std::vector<ResolutionStats> island_stats_;
+    size_t island_count_ = 0;
 };
 
 }  // namespace rodsea

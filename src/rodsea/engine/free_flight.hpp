@@ -14,7 +14,10 @@ namespace rodsea {
 // the exact rotations about the three principal axes (energy error O(dt²), bounded).
 void rotate_free(Quat& orientation, Vec3& spin, const Vec3& inertia, double dt);
 
-void advance_free_flight(BodyState& bodies, const std::vector<Species>& species, const Box& box,
-                         double gravity, double dt);
+// Bodies are independent: split over `threads` OpenMP threads, with the same result for any count.
+// Returns an upper bound on the speed in the plane (mm/s) of any sphere centre during the step,
+// which tells the Verlet list when its spheres may have moved far enough to need a check.
+double advance_free_flight(BodyState& bodies, const std::vector<Species>& species, const Box& box,
+                           double gravity, double dt, int threads = 1);
 
 }  // namespace rodsea

@@ -113,29 +113,31 @@ Simulation Simulation::resume(EngineParameters params, BodyState bodies, std::ui
 }
 
 void Simulation::step() {
+    double fastest = 0.0;  // bound on any sphere's speed in the plane in this step (mm/s)
     {
         StageTimer t(profile_.free_flight);
-        advance_free_flight(bodies_, params_.species, params_.box, params_.drive.gravity,
-                            params_.dt);
+        fastest = advance_free_flight(bodies_, params_.species, params_.box, params_.drive.gravity,
+                                      params_.dt, threads_);
     }
     ++step_count_;
     const PlateState plates = plate_state(params_.drive, time());
     {
         StageTimer t(profile_.sphere_update);
-        spheres_.update_positions(bodies_, params_.species);
+        spheres_.update_positions(bodies_, params_.species, threads_);
     }
     ContactSearchStats found;
     {
         StageTimer t(profile_.contact_search);
-        found = find_contacts(spheres_, bodies_, params_, plates, cells_, contacts_);
+        found = finder_.find(spheres_, bodies_, params_, plates, contacts_, threads_,
+                             fastest * params_.dt);
     }
     ResolutionStats resolved;
     {
         StageTimer t(profile_.resolution);
-        inverse_inertia_.update(bodies_, params_.species);
+        inverse_inertia_.update_for(contacts_, bodies_, params_.species);
         plate_hits_.clear();
         resolved = resolver_.resolve(contacts_, bodies_, inverse_inertia_, plates.velocity_z,
-                                     params_, plate_hits_);
+                                     params_, plate_hits_, threads_);
         plate_projection_.apply(contacts_, bodies_, spheres_);
     }
     size_t kicks = 0;
@@ -156,6 +158,11 @@ void Simulation::step() {
     totals_.max_sweeps = std::max(totals_.max_sweeps, resolved.sweeps);
     totals_.max_overlap_fraction =
         std::max(totals_.max_overlap_fraction, found.max_overlap_fraction);
+}
+
+void Simulation::set_threads(int threads) {
+    if (threads < 1) throw InvalidParameter("threads", std::to_string(threads), ">= 1");
+    threads_ = threads;
 }
 
 void Simulation::run(std::uint64_t steps) {

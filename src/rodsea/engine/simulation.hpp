@@ -17,7 +17,6 @@
 #include "rodsea/engine/plate_projection.hpp"
 #include "rodsea/engine/plates.hpp"
 #include "rodsea/engine/sphere_table.hpp"
-#include "rodsea/neighbors/periodic_cell_list.hpp"
 
 namespace rodsea {
 
@@ -70,6 +69,11 @@ class Simulation {
     void step();
     void run(std::uint64_t steps);
 
+    // OpenMP threads for the parallel stages (default 1). Every stage gives the same bits on any
+    // number of threads, so this changes the speed only. Throws InvalidParameter below 1.
+    void set_threads(int threads);
+    int threads() const { return threads_; }
+
     double time() const { return static_cast<double>(step_count_) * params_.dt; }
     std::uint64_t step_count() const { return step_count_; }
     PlateState plates() const { return plate_state(params_.drive, time()); }
@@ -81,6 +85,7 @@ class Simulation {
     const StepStatistics& last_step() const { return last_; }
     const RunTotals& totals() const { return totals_; }
     const StageProfile& profile() const { return profile_; }
+    std::uint64_t pair_list_builds() const { return finder_.pair_list_builds(); }
 
     double kinetic_energy() const;                   // mass units · mm²/s²
     Vec3 linear_momentum() const;                    // mass units · mm/s
@@ -94,10 +99,11 @@ class Simulation {
     EngineParameters params_;
     BodyState bodies_;
     std::uint64_t step_count_ = 0;
+    int threads_ = 1;
 
     // Scratch reused every step: no allocation in the steady state.
     SphereTable spheres_;
-    PeriodicCellList2D cells_;
+    ContactFinder finder_;
     std::vector<Contact> contacts_;
     InverseInertia inverse_inertia_;
     ContactResolver resolver_;

@@ -17,8 +17,11 @@ void SphereTable::assign(const BodyState& bodies, const std::vector<Species>& sp
     position.resize(body.size());
 }
 
-void SphereTable::update_positions(const BodyState& bodies, const std::vector<Species>& species) {
-    for (size_t b = 0; b < bodies.size(); ++b) {
+void SphereTable::update_positions(const BodyState& bodies, const std::vector<Species>& species,
+                                   int threads) {
+    const auto n = static_cast<std::ptrdiff_t>(bodies.size());
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+    for (std::ptrdiff_t b = 0; b < n; ++b) {
         const Shape& shape = species[bodies.species[b]].shape;
         const Mat3 r = to_matrix(bodies.orientation[b]);
         const Vec3 x = bodies.position[b];

@@ -17,7 +17,8 @@ struct SphereTable {
     std::vector<std::uint32_t> first_of;  // first sphere of each body, plus one past the end
 
     void assign(const BodyState& bodies, const std::vector<Species>& species);
-    void update_positions(const BodyState& bodies, const std::vector<Species>& species);
+    void update_positions(const BodyState& bodies, const std::vector<Species>& species,
+                          int threads = 1);
     size_t size() const { return body.size(); }
 };
 
