@@ -272,8 +272,9 @@ std::vector<KeySpec> make_keys() {
     k.push_back(integer("run", "threads")
                     .def(std::int64_t{1})
                     .integers(1, 256)
-                    .doc("Worker threads. The engine is single-threaded until the speed issue "
-                         "lands."));
+                    .doc("Threads of the engine's step (OpenMP). The trajectory is the same, bit "
+                         "for bit, on any number of threads; more threads than cores only slow "
+                         "it down (docs/performance.md)."));
     // [initial]
     k.push_back(Key("initial", "orientation", ValueType::option)
                     .def(std::string("isotropic"))

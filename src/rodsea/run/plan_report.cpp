@@ -100,8 +100,7 @@ void describe_plan(const RunPlan& plan, std::ostream& out, bool brief) {
     const double period = 2.0 * std::numbers::pi / d.angular_frequency;
     out << "time     dt = " << p.dt * 1e6 << " us, " << plan.total_steps()
         << " steps = " << duration << " s = " << fixed(duration / period, 1)
-        << " drive periods, seed " << p.seed << ", threads " << plan.control.threads
-        << (plan.control.threads > 1 ? " (the engine runs on one thread for now)" : "") << "\n";
+        << " drive periods, seed " << p.seed << ", threads " << plan.control.threads << "\n";
     out << "output   a frame every " << plan.steps_per_output() << " steps ("
         << static_cast<double>(plan.steps_per_output()) * p.dt << " s), " << e.frames
         << " frames of " << format_bytes(e.frame_bytes) << " = " << format_bytes(e.trajectory_bytes)

@@ -281,6 +281,7 @@ int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out,
         out << line.str() << "\n";
     }
     Simulation sim(plan.engine, std::move(bodies));
+    sim.set_threads(plan.control.threads);
 
     write_file_atomically(dir / kConfigFile, plan.config_toml);
     const SeriesRecorder columns(plan.engine);
@@ -341,6 +342,7 @@ int resume_run(const std::filesystem::path& dir, const RunOptions& options, std:
             << " s), " << c.frames_written << " frames kept\n";
     }
     Simulation sim = Simulation::resume(plan.engine, std::move(c.bodies), c.step);
+    sim.set_threads(plan.control.threads);
     SeriesCsv csv = SeriesCsv::reopen(dir / kSeriesFile, c.frames_written);
     TrajectoryFile trajectory =
         TrajectoryFile::reopen(dir / kTrajectoryFile, c.frames_written, columns.columns());
