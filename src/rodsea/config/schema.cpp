@@ -100,8 +100,9 @@ std::vector<KeySpec> make_keys() {
                     .def(1.40)
                     .range(left_open(0.0, 100.0))
                     .choice("the paper's 1.2 mm cannot hold the 1.375 mm thick end of its polar "
-                            "rod; 1.40 mm is the widest gap at which a lone polar rod goes thick "
-                            "→ thin as in the experiment (2.6 mm/s); docs/model.md")
+                            "rod; at 1.40 mm a lone polar rod goes thick → thin as in the "
+                            "experiment, at the speed closest to its 3.6 mm/s (2.5 mm/s); "
+                            "docs/model.md")
                     .doc("w, the distance from the base to the lid. Every body's largest sphere "
                          "must fit."));
     k.push_back(real("drive", "gravity")
