@@ -1,25 +1,26 @@
-// Speed of one engine step on the issue's reference system: polar rods at φ_p = 0.05 in apolar
-// rods (ℓ_a = 2.5 mm) at φ_a = 0.5, box 20 ℓ_p = 90 mm, single thread. Reports steps/s and
-// sphere-steps/s, plus the time share of each stage.
+// Speed of one engine step. BM_StepDenseMixture is the reference system of the engine issue
+// (polar rods at φ_p = 0.05 in apolar rods of ℓ_a = 2.5 mm at φ_a = 0.5, box 20 ℓ_p = 90 mm),
+// BM_StepScaling the same mixture at 10³ to 10⁵ bodies and the paper's largest system, each on 1
+// and 2 threads. Reports steps/s, sphere-steps/s, the time share of each stage and the Verlet
+// list's rebuild interval. (Memory per sphere is measured per process, docs/performance.md: a
+// benchmark run shares one heap between its cases.)
 #include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <memory>
 
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/scenes/scenes.hpp"
 
 namespace {
 
-void BM_StepDenseMixture(benchmark::State& state) {
-    const double box = static_cast<double>(state.range(0));
-    const rodsea::Scene scene = rodsea::polar_in_apolar_mixture(0.05, 2.5, 0.5, box, 1);
-    rodsea::Simulation sim(scene.params, scene.bodies);
-    sim.run(2000);  // leave the lattice: let the rods tilt, collide and spread out a little
-    const rodsea::StageProfile before = sim.profile();
-    for (auto _ : state)
-        sim.step();
+void report(benchmark::State& state, const rodsea::Simulation& sim,
+            const rodsea::StageProfile& before, std::uint64_t builds_before) {
     const auto steps = static_cast<double>(state.iterations());
     const auto spheres = static_cast<double>(sim.spheres().size());
     state.counters["bodies"] = static_cast<double>(sim.bodies().size());
     state.counters["spheres"] = spheres;
+    state.counters["threads"] = sim.threads();
     state.counters["steps/s"] = benchmark::Counter(steps, benchmark::Counter::kIsRate);
     state.counters["sphere-steps/s"] =
         benchmark::Counter(steps * spheres, benchmark::Counter::kIsRate);
@@ -31,8 +32,67 @@ void BM_StepDenseMixture(benchmark::State& state) {
     state.counters["%resolve"] = 100 * (p.resolution - before.resolution) / total;
     state.counters["contacts"] =
         static_cast<double>(sim.last_step().body_contacts + sim.last_step().plate_contacts);
+    const auto builds = static_cast<double>(sim.pair_list_builds() - builds_before);
+    state.counters["steps/rebuild"] = builds > 0 ? steps / builds : steps;
 }
-BENCHMARK(BM_StepDenseMixture)->Arg(90)->Unit(benchmark::kMillisecond)->MinTime(5.0);
+
+void run_mixture(benchmark::State& state, const rodsea::Scene& scene, int threads) {
+    auto sim = std::make_unique<rodsea::Simulation>(scene.params, scene.bodies);
+    sim->set_threads(threads);
+    sim->run(2000);  // leave the lattice: let the rods tilt, collide and spread out a little
+    const rodsea::StageProfile before = sim->profile();
+    const std::uint64_t builds_before = sim->pair_list_builds();
+    for (auto _ : state)
+        sim->step();
+    report(state, *sim, before, builds_before);
+}
+
+void BM_StepDenseMixture(benchmark::State& state) {
+    const double box = static_cast<double>(state.range(0));
+    run_mixture(state, rodsea::polar_in_apolar_mixture(0.05, 2.5, 0.5, box, 1),
+                static_cast<int>(state.range(1)));
+}
+BENCHMARK(BM_StepDenseMixture)
+    ->ArgNames({"box_mm", "threads"})
+    ->Args({90, 1})
+    ->Args({90, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(5.0)
+    ->UseRealTime();
+
+// The mixture with about `bodies` bodies: its 90 mm box holds 3063.
+void BM_StepScaling(benchmark::State& state) {
+    const double bodies = static_cast<double>(state.range(0));
+    const double box = 90.0 * std::sqrt(bodies / 3063.0);
+    run_mixture(state, rodsea::polar_in_apolar_mixture(0.05, 2.5, 0.5, box, 1),
+                static_cast<int>(state.range(1)));
+}
+BENCHMARK(BM_StepScaling)
+    ->ArgNames({"bodies", "threads"})
+    ->ArgsProduct({{1000, 10000, 100000}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0)
+    ->UseRealTime();
+
+// The paper's largest system by size (MODEL.md §6: ≈ 3.5×10⁵ spheres): 3203 polar rods and 37147
+// apolar rods of 9 spheres (ℓ_a = 2.5 mm), 3.76×10⁵ spheres. The paper packs them into
+// L = 252 mm, denser than the lattice start can reach, so the box here is widened to φ_a = 0.5
+// (L ≈ 350 mm): the same bodies and spheres at the reference mixture's density.
+void BM_StepPaperLargest(benchmark::State& state) {
+    const double apolar_area = rodsea::apolar_rod_species(2.5).shape.projected_area;
+    const double polar_area = rodsea::polar_rod_species().shape.projected_area;
+    const double side = std::sqrt(37147.0 * apolar_area / 0.5);
+    const double phi_polar = 3203.0 * polar_area / (side * side);
+    run_mixture(state, rodsea::polar_in_apolar_mixture(phi_polar, 2.5, 0.5, side, 1),
+                static_cast<int>(state.range(0)));
+}
+BENCHMARK(BM_StepPaperLargest)
+    ->ArgNames({"threads"})
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0)
+    ->UseRealTime();
 
 }  // namespace
 
