@@ -1,6 +1,7 @@
 #include "rodsea/engine/free_flight.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "rodsea/neighbors/periodic_cell_list.hpp"
@@ -123,33 +124,29 @@ void rotate_free(Quat& q, Vec3& spin, const Vec3& inertia, double dt) {
 
 double advance_free_flight(BodyState& bodies, const std::vector<Species>& species, const Box& box,
                            double gravity, double dt, int threads) {
-    constexpr int kFewSpecies = 8;  // rotors on the stack up to this many species
-    Rotor few[kFewSpecies];
-    std::vector<Rotor> many;
-    Rotor* rotors = few;
-    if (species.size() > kFewSpecies) {
-        many.resize(species.size());
-        rotors = many.data();
-    }
-    double reach[kFewSpecies] = {};
-    std::vector<double> reach_many;
-    double* reach_of = reach;
-    if (species.size() > kFewSpecies) {
-        reach_many.resize(species.size());
-        reach_of = reach_many.data();
-    }
+    // Per species: its rotor and the farthest sphere centre from its centre of mass (mm). On the
+    // stack for the few species a run has, so that a step allocates nothing.
+    struct Motion {
+        Rotor rotor;
+        double reach = 0.0;
+    };
+    constexpr size_t kFewSpecies = 8;
+    std::array<Motion, kFewSpecies> few;
+    std::vector<Motion> many(species.size() > kFewSpecies ? species.size() : 0);
+    Motion* motion = many.empty() ? few.data() : many.data();
     for (size_t k = 0; k < species.size(); ++k) {
-        rotors[k] = make_rotor(species[k].shape.principal_inertia);
+        motion[k].rotor = make_rotor(species[k].shape.principal_inertia);
         for (const Vec3& offset : species[k].shape.offsets)
-            reach_of[k] = std::max(reach_of[k], norm(offset));
+            motion[k].reach = std::max(motion[k].reach, norm(offset));
     }
 
     const double drop = 0.5 * gravity * dt * dt;
     const auto n = static_cast<std::ptrdiff_t>(bodies.size());
     double fastest = 0.0;  // mm/s, in the plane
+    // clang-format off
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1) \
-    reduction(max                                                               \
-              : fastest)
+    reduction(max : fastest)
+    // clang-format on
     for (std::ptrdiff_t i = 0; i < n; ++i) {
         Vec3& x = bodies.position[i];
         Vec3& v = bodies.velocity[i];
@@ -157,14 +154,14 @@ double advance_free_flight(BodyState& bodies, const std::vector<Species>& specie
         const std::uint32_t k = bodies.species[i];
         // Gravity does not act in the plane: v_xy and the bound on |ω| bound every sphere
         // centre's speed in the plane during this step.
-        const double spin = spin_bound(rotors[k], bodies.orientation[i], w);
-        fastest = std::max(fastest, std::sqrt(v.x * v.x + v.y * v.y) + spin * reach_of[k]);
+        const double spin = spin_bound(motion[k].rotor, bodies.orientation[i], w);
+        fastest = std::max(fastest, std::sqrt(v.x * v.x + v.y * v.y) + spin * motion[k].reach);
         x += dt * v;
         x.z -= drop;
         v.z -= gravity * dt;
         x.x = PeriodicBox2D::wrap(x.x, box.lx);
         x.y = PeriodicBox2D::wrap(x.y, box.ly);
-        rotate_free(bodies.orientation[i], w, rotors[k], dt);
+        rotate_free(bodies.orientation[i], w, motion[k].rotor, dt);
     }
     return fastest;
 }
