@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The validate tier: every measurement behind docs/validation.md and docs/model.md's choice of
-# gap and time step, regenerated from scratch. Not part of CI: about 65 minutes on 2 cores.
+# gap and time step, regenerated from scratch. Not part of CI: about 45 minutes on 2 cores.
 #
 #   scripts/validate.sh [OUT [PART...]]     (default OUT: out/validate; PART: all of
 #                                            gap dt dt-fine epsilon apolar-rod bead mixture)
