@@ -162,16 +162,16 @@ ResolutionStats ContactResolver::resolve(const std::vector<Contact>& contacts, B
     last_changed_.assign(bodies.size(), 0);
     find_islands(contacts, bodies.size());
     ResolutionStats total;
+    const auto add = [&total](const ResolutionStats& s) {
+        total.sweeps = std::max(total.sweeps, s.sweeps);
+        total.impulses += s.impulses;
+        total.body_collisions += s.body_collisions;
+        total.plate_collisions += s.plate_collisions;
+        total.unresolved += s.unresolved;
+    };
     if (threads <= 1) {
-        for (size_t i = 0; i < island_count_; ++i) {
-            const ResolutionStats s =
-                sweep_island(i, contacts, bodies, inertia, plate_velocity_z, params, hits);
-            total.sweeps = std::max(total.sweeps, s.sweeps);
-            total.impulses += s.impulses;
-            total.body_collisions += s.body_collisions;
-            total.plate_collisions += s.plate_collisions;
-            total.unresolved += s.unresolved;
-        }
+        for (size_t i = 0; i < island_count_; ++i)
+            add(sweep_island(i, contacts, bodies, inertia, plate_velocity_z, params, hits));
         return total;
     }
     // Each thread keeps its islands' hits apart and they are put back in island order, so that
@@ -186,12 +186,7 @@ ResolutionStats ContactResolver::resolve(const std::vector<Contact>& contacts, B
                                         plate_velocity_z, params, island_hits_[i]);
     }
     for (size_t i = 0; i < island_count_; ++i) {
-        const ResolutionStats& s = island_stats_[i];
-        total.sweeps = std::max(total.sweeps, s.sweeps);
-        total.impulses += s.impulses;
-        total.body_collisions += s.body_collisions;
-        total.plate_collisions += s.plate_collisions;
-        total.unresolved += s.unresolved;
+        add(island_stats_[i]);
         hits.insert(hits.end(), island_hits_[i].begin(), island_hits_[i].end());
     }
     return total;
