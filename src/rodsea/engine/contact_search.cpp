@@ -12,8 +12,7 @@ ContactSearchStats ContactFinder::find(const SphereTable& spheres, const BodySta
                                        std::vector<Contact>& out, int threads, double travel) {
     ContactSearchStats stats;
     const PeriodicBox2D box{params.box.lx, params.box.ly};
-    stats.rebuilt_pairs =
-        pairs_.update(spheres.position, spheres.radius, spheres.body, box, travel);
+    pairs_.update(spheres.position, spheres.radius, spheres.body, box, travel);
     const auto slots = static_cast<size_t>(std::max(threads, 1));
     body_chunks_.resize(slots);
     plate_chunks_.resize(slots);

@@ -20,7 +20,6 @@ struct ContactSearchStats {
     size_t body_contacts = 0;
     size_t plate_contacts = 0;
     double max_overlap_fraction = 0.0;  // overlap / smaller radius, largest in this step
-    bool rebuilt_pairs = false;         // the Verlet list was rebuilt in this step
 };
 
 // Verlet-list skin (mm). Bodies move micrometres per step, so a list lasts hundreds of steps; a

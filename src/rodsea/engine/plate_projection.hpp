@@ -18,14 +18,15 @@ namespace rodsea {
 
 class PlateProjection {
   public:
-    // Returns the number of bodies moved. Keeps `spheres` in step with the moved bodies.
-    size_t apply(const std::vector<Contact>& contacts, BodyState& bodies, SphereTable& spheres);
+    // Keeps `spheres` in step with the moved bodies. Costs the plate contacts, not the bodies.
+    void apply(const std::vector<Contact>& contacts, BodyState& bodies, SphereTable& spheres);
 
   private:
-    // Deepest overlap of each body with the base and with the lid in this step (mm); scratch
-    // reused every step.
+    // Deepest overlap of each body with the base and with the lid in this step (mm), zero between
+    // steps: only the entries of `touched_` are set, and they are cleared again after use.
     std::vector<double> base_depth_;
     std::vector<double> lid_depth_;
+    std::vector<std::uint32_t> touched_;  // bodies with a plate contact, each once
 };
 
 }  // namespace rodsea

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "rodsea/math/vec3.hpp"
@@ -40,10 +41,7 @@ class VerletPairList {
     // in the list's (i, j) order. `points` are the same points as in the last update().
     template <class Visit>
     void for_each_pair(std::span<const Vec3> points, Visit&& visit) const {
-        for (size_t k = 0; k < first_.size(); ++k) {
-            const std::uint32_t i = first_[k], j = second_[k];
-            visit(i, j, minimum_image(points[i] - points[j]));
-        }
+        for_each_pair(points, 0, size(), std::forward<Visit>(visit));
     }
 
     // Pairs [begin, end) only, for splitting the list between threads.
