@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Installs every build, test and plotting dependency of rodsea from Debian 12's archive.
 # Nothing is downloaded from anywhere else. Safe to run again: apt skips what is present.
+#
+#   scripts/install-deps.sh           # build, tests, plots
+#   scripts/install-deps.sh --race    # also LAMMPS and Open MPI, for bench/race/race.sh
 set -euo pipefail
 
 packages=(
@@ -16,6 +19,13 @@ packages=(
     python3-h5py python3-scipy          # reading trajectories from Python; cross-checks
     python3-mdanalysis python3-sklearn  # MDAnalysis reads trajectory and export (tested)
 )
+
+for arg in "$@"; do
+    case $arg in
+        --race) packages+=(lammps openmpi-bin) ;;  # the peer code of the speed race
+        *) echo "install-deps: unknown option '$arg' (allowed: --race)" >&2; exit 2 ;;
+    esac
+done
 
 if [ "$(id -u)" -eq 0 ]; then sudo=(); else sudo=(sudo); fi
 

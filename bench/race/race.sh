@@ -3,7 +3,7 @@
 # vibrating plates, bench/race/race_system.hpp), each at its own time step, on 1 and on 2
 # threads / MPI ranks. Prints simulated seconds per wall second for each and their ratio.
 #
-#   bench/race/race.sh [OUT]        (default OUT: out/race; needs Debian's lammps and openmpi-bin)
+#   bench/race/race.sh [OUT]        (default OUT: out/race; needs scripts/install-deps.sh --race)
 #
 # Environment: RODSEA_BUILD (default build), RACE_WARMUP and RACE_TIME (simulated seconds before
 # and during the timing; default 0.01 and 0.05, the reference run's 2000 + 10000 LAMMPS steps),
@@ -20,8 +20,8 @@ rodsea_dt=${RODSEA_DT:-1.25e-6}
 lammps_dt=${LAMMPS_DT:-5e-6}
 threads_list=${RACE_THREADS:-1 2}
 
-command -v lmp >/dev/null || { echo "race.sh: lmp not found: apt-get install lammps" >&2; exit 2; }
-command -v mpirun >/dev/null || { echo "race.sh: mpirun not found: apt-get install openmpi-bin" >&2; exit 2; }
+command -v lmp >/dev/null || { echo "race.sh: lmp not found: scripts/install-deps.sh --race" >&2; exit 2; }
+command -v mpirun >/dev/null || { echo "race.sh: mpirun not found: scripts/install-deps.sh --race" >&2; exit 2; }
 cmake --build "$build" --target rodsea_race >/dev/null
 mkdir -p "$out"
 race=$build/bench/rodsea_race

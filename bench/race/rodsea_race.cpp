@@ -60,6 +60,13 @@ double positive(const char* text, const std::string& flag) {
     return v;
 }
 
+int whole(const char* text, const std::string& flag) {
+    const double v = positive(text, flag);
+    if (v != std::floor(v) || v > 1e6)
+        usage(flag + " wants a whole number >= 1, not '" + text + "'");
+    return static_cast<int>(v);
+}
+
 Options parse(int argc, char** argv) {
     Options o;
     for (int i = 1; i < argc; ++i) {
@@ -69,7 +76,7 @@ Options parse(int argc, char** argv) {
             return argv[++i];
         };
         if (flag == "--threads")
-            o.threads = static_cast<int>(positive(value(), flag));
+            o.threads = whole(value(), flag);
         else if (flag == "--dt")
             o.dt = positive(value(), flag);
         else if (flag == "--warmup")
@@ -77,10 +84,10 @@ Options parse(int argc, char** argv) {
         else if (flag == "--time")
             o.time = positive(value(), flag);
         else if (flag == "--cells") {
-            o.cells_x = static_cast<int>(positive(value(), flag));
-            o.cells_y = static_cast<int>(positive(value(), flag));
+            o.cells_x = whole(value(), flag);
+            o.cells_y = whole(value(), flag);
         } else if (flag == "--seed")
-            o.seed = static_cast<std::uint64_t>(positive(value(), flag));
+            o.seed = static_cast<std::uint64_t>(whole(value(), flag));
         else if (flag == "--write-lammps")
             o.lammps_data = value();
         else
