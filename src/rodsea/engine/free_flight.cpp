@@ -20,19 +20,39 @@ Vec3 unit_axis(int k) {
     return k == 0 ? Vec3{1, 0, 0} : (k == 1 ? Vec3{0, 1, 0} : Vec3{0, 0, 1});
 }
 
-// Quat::from_axis_angle without the library sin and cos for the small angles of one step (a
-// body spinning at 100 rad/s turns by 1e-4 rad in 1.25 µs): their Taylor series, cut where the
-// first omitted term is below 1e-17 relative, cost a few multiplications against ~20 ns per call.
-// Larger angles fall back to the library.
+// cos h and sin(h) / h from h² by their Taylor series, for the small angles of one step (a body
+// spinning at 100 rad/s turns by 1e-4 rad in 1.25 µs): a few multiplications against ~20 ns for
+// the library's sin and cos. Valid for h² <= kSeriesLimit (|h| <= 0.02), where the first omitted
+// terms, h¹⁰/10! and h¹⁰/11!, are < 1e-17 of the result.
+constexpr double kSeriesLimit = 4e-4;
+struct HalfAngle {
+    double cos, sinc;
+};
+HalfAngle half_angle_series(double h2) {
+    constexpr double k2 = 0.5, k12 = 1.0 / 12.0, k30 = 1.0 / 30.0, k56 = 1.0 / 56.0;
+    constexpr double k6 = 1.0 / 6.0, k20 = 1.0 / 20.0, k42 = 1.0 / 42.0, k72 = 1.0 / 72.0;
+    return {1.0 - h2 * k2 * (1.0 - h2 * k12 * (1.0 - h2 * k30 * (1.0 - h2 * k56))),
+            1.0 - h2 * k6 * (1.0 - h2 * k20 * (1.0 - h2 * k42 * (1.0 - h2 * k72)))};
+}
+
+// Quat::from_axis_angle, by the series where the angle is small enough.
 Quat axis_angle(const Vec3& unit_axis, double angle) {
     const double h = 0.5 * angle, h2 = h * h;
-    if (h2 > 4e-4) return Quat::from_axis_angle(unit_axis, angle);  // |h| > 0.02
-    // |h| <= 0.02: sin's next term h⁹/9! and cos's h¹⁰/10! are < 1e-17 of the result.
-    constexpr double k6 = 1.0 / 6.0, k20 = 1.0 / 20.0, k42 = 1.0 / 42.0;
-    constexpr double k2 = 0.5, k12 = 1.0 / 12.0, k30 = 1.0 / 30.0, k56 = 1.0 / 56.0;
-    const double s = h * (1.0 - h2 * k6 * (1.0 - h2 * k20 * (1.0 - h2 * k42)));
-    const double c = 1.0 - h2 * k2 * (1.0 - h2 * k12 * (1.0 - h2 * k30 * (1.0 - h2 * k56)));
-    return {c, unit_axis.x * s, unit_axis.y * s, unit_axis.z * s};
+    if (h2 > kSeriesLimit) return Quat::from_axis_angle(unit_axis, angle);
+    const HalfAngle a = half_angle_series(h2);
+    const double s = h * a.sinc;
+    return {a.cos, unit_axis.x * s, unit_axis.y * s, unit_axis.z * s};
+}
+
+// q · (c, s e_K): a turn about body axis K, without the products with zero.
+template <int K>
+Quat turned_about_body_axis(const Quat& q, double c, double s) {
+    if constexpr (K == 0)
+        return {q.w * c - q.x * s, q.w * s + q.x * c, q.y * c + q.z * s, q.z * c - q.y * s};
+    else if constexpr (K == 1)
+        return {q.w * c - q.y * s, q.x * c - q.z * s, q.w * s + q.y * c, q.x * s + q.z * c};
+    else
+        return {q.w * c - q.z * s, q.x * c + q.y * s, q.y * c - q.x * s, q.w * s + q.z * c};
 }
 
 Quat unit(const Quat& q) {
@@ -52,13 +72,26 @@ struct Rotor {
     double largest_inverse = 0.0;
 };
 
-// An upper bound on |ω| over a torque-free step: |ω| itself for a symmetric body (regular
-// precession keeps it), |L| / I_min otherwise (|L| is kept, ω = I⁻¹ L in the body frame).
-double spin_bound(const Rotor& rotor, const Quat& q, const Vec3& spin) {
-    if (rotor.axis >= 0) return norm(spin);
+// An upper bound on |ω|² over a torque-free step: |ω|² itself for a symmetric body (regular
+// precession keeps it), (|L| / I_min)² otherwise (|L| is kept, ω = I⁻¹ L in the body frame).
+double spin_bound2(const Rotor& rotor, const Quat& q, const Vec3& spin) {
+    if (rotor.axis >= 0) return norm2(spin);
     const Vec3 w = rotate(conjugate(q), spin);
     const Vec3& i = rotor.inertia;
-    return norm(Vec3{i.x * w.x, i.y * w.y, i.z * w.z}) * rotor.largest_inverse;
+    return norm2(Vec3{i.x * w.x, i.y * w.y, i.z * w.z}) * rotor.largest_inverse *
+           rotor.largest_inverse;
+}
+
+// PeriodicBox2D::wrap without its division for the usual case: a step moves a body micrometres,
+// so it is still inside the box or just outside one edge.
+double wrap_after_step(double x, double side) {
+    if (x >= 0.0 && x < side) return x;
+    if (x >= side && x < 2.0 * side) return x - side;  // exact (Sterbenz), so below side
+    if (x < 0.0 && x >= -side) {
+        const double w = x + side;  // rounds to side for a tiny negative x, as wrap's does
+        return w < side ? w : 0.0;
+    }
+    return PeriodicBox2D::wrap(x, side);
 }
 
 Rotor make_rotor(const Vec3& inertia) {
@@ -88,7 +121,8 @@ void principal_subflow(Quat& q, Vec3& l_body, int k, double inverse_k, double h)
     l_body = rotate(axis_angle(unit_axis(k), -angle), l_body);
 }
 
-void rotate_free(Quat& q, Vec3& spin, const Rotor& rotor, double dt) {
+// Any body, with the library's sin, cos, square roots and divisions.
+void rotate_general(Quat& q, Vec3& spin, const Rotor& rotor, double dt) {
     const Vec3 w_body = rotate(conjugate(q), spin);
     const Vec3& i = rotor.inertia;
     const Vec3 l_body{i.x * w_body.x, i.y * w_body.y, i.z * w_body.z};
@@ -116,6 +150,55 @@ void rotate_free(Quat& q, Vec3& spin, const Rotor& rotor, double dt) {
     spin = rotate(q, Vec3{lb.x * inv.x, lb.y * inv.y, lb.z * inv.z});
 }
 
+// The same regular precession as rotate_general for an axisymmetric body with symmetry axis K
+// (every rod and bead: over 60 % of the step went to rotate_general's square roots, divisions
+// and quaternion rotations). The precession about L by φ = |L| dt / I_t is the quaternion
+// (cos(φ/2), L sin(φ/2) / |L|), and both entries are even series in |L| dt / 2I_t: no square
+// root of |L|², no division by it. ω = L / I_t + (1/I_a − 1/I_t) L_a u follows from L and the new
+// axis u without rotating back into the body frame. Returns false, changing nothing, when an
+// angle is too large for the series; rotate_general then does it.
+template <int K>
+bool rotate_symmetric(Quat& q, Vec3& spin, const Rotor& rotor, double dt) {
+    const Vec3 u = rotated_axis(q, K);
+    const double axial_spin = dot(spin, u);
+    const double transverse = rotor.inertia[K == 0 ? 1 : 0];
+    const double axial_momentum = rotor.inertia[K] * axial_spin;  // L·u, kept exactly
+    const Vec3 l = transverse * spin + (axial_momentum - transverse * axial_spin) * u;
+    const double beta = 0.5 * dt * rotor.inverse_transverse;  // φ/2 = β |L|
+    const double precession2 = norm2(l) * beta * beta;        // (φ/2)²
+    const double half_spin = 0.5 * axial_momentum * rotor.spin_rate * dt;
+    if (precession2 > kSeriesLimit || half_spin * half_spin > kSeriesLimit) return false;
+    const HalfAngle p = half_angle_series(precession2);
+    const HalfAngle a = half_angle_series(half_spin * half_spin);
+    const double p_scale = beta * p.sinc;
+    const Quat precession{p.cos, p_scale * l.x, p_scale * l.y, p_scale * l.z};
+    const Quat turned = turned_about_body_axis<K>(precession * q, a.cos, half_spin * a.sinc);
+    // One Newton step for 1/|q| (the product of unit quaternions is off by round-off only).
+    const double n2 =
+        turned.w * turned.w + turned.x * turned.x + turned.y * turned.y + turned.z * turned.z;
+    const double inv = std::abs(n2 - 1.0) < 1e-8 ? 0.5 * (3.0 - n2) : 1.0 / std::sqrt(n2);
+    q = {turned.w * inv, turned.x * inv, turned.y * inv, turned.z * inv};
+    spin = rotor.inverse_transverse * l + (rotor.spin_rate * axial_momentum) * rotated_axis(q, K);
+    return true;
+}
+
+void rotate_free(Quat& q, Vec3& spin, const Rotor& rotor, double dt) {
+    switch (rotor.axis) {
+        case 0:
+            if (rotate_symmetric<0>(q, spin, rotor, dt)) return;
+            break;
+        case 1:
+            if (rotate_symmetric<1>(q, spin, rotor, dt)) return;
+            break;
+        case 2:
+            if (rotate_symmetric<2>(q, spin, rotor, dt)) return;
+            break;
+        default:
+            break;
+    }
+    rotate_general(q, spin, rotor, dt);
+}
+
 }  // namespace
 
 void rotate_free(Quat& q, Vec3& spin, const Vec3& inertia, double dt) {
@@ -128,7 +211,7 @@ double advance_free_flight(BodyState& bodies, const std::vector<Species>& specie
     // stack for the few species a run has, so that a step allocates nothing.
     struct Motion {
         Rotor rotor;
-        double reach = 0.0;
+        double reach2 = 0.0;  // mm²
     };
     constexpr size_t kFewSpecies = 8;
     std::array<Motion, kFewSpecies> few;
@@ -137,33 +220,37 @@ double advance_free_flight(BodyState& bodies, const std::vector<Species>& specie
     for (size_t k = 0; k < species.size(); ++k) {
         motion[k].rotor = make_rotor(species[k].shape.principal_inertia);
         for (const Vec3& offset : species[k].shape.offsets)
-            motion[k].reach = std::max(motion[k].reach, norm(offset));
+            motion[k].reach2 = std::max(motion[k].reach2, norm2(offset));
     }
 
     const double drop = 0.5 * gravity * dt * dt;
     const auto n = static_cast<std::ptrdiff_t>(bodies.size());
-    double fastest = 0.0;  // mm/s, in the plane
+    // The largest squared speed in the plane of a centre of mass, and of a sphere about it
+    // (mm²/s²): the sum of their roots bounds every sphere centre's speed in the plane, with no
+    // square root per body.
+    double fastest_drift2 = 0.0, fastest_turn2 = 0.0;
     // clang-format off
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1) \
-    reduction(max : fastest)
+    reduction(max : fastest_drift2, fastest_turn2)
     // clang-format on
     for (std::ptrdiff_t i = 0; i < n; ++i) {
         Vec3& x = bodies.position[i];
         Vec3& v = bodies.velocity[i];
         Vec3& w = bodies.spin[i];
-        const std::uint32_t k = bodies.species[i];
+        const Motion& m = motion[bodies.species[i]];
         // Gravity does not act in the plane: v_xy and the bound on |ω| bound every sphere
         // centre's speed in the plane during this step.
-        const double spin = spin_bound(motion[k].rotor, bodies.orientation[i], w);
-        fastest = std::max(fastest, std::sqrt(v.x * v.x + v.y * v.y) + spin * motion[k].reach);
+        fastest_drift2 = std::max(fastest_drift2, v.x * v.x + v.y * v.y);
+        fastest_turn2 =
+            std::max(fastest_turn2, spin_bound2(m.rotor, bodies.orientation[i], w) * m.reach2);
         x += dt * v;
         x.z -= drop;
         v.z -= gravity * dt;
-        x.x = PeriodicBox2D::wrap(x.x, box.lx);
-        x.y = PeriodicBox2D::wrap(x.y, box.ly);
-        rotate_free(bodies.orientation[i], w, motion[k].rotor, dt);
+        x.x = wrap_after_step(x.x, box.lx);
+        x.y = wrap_after_step(x.y, box.ly);
+        rotate_free(bodies.orientation[i], w, m.rotor, dt);
     }
-    return fastest;
+    return std::sqrt(fastest_drift2) + std::sqrt(fastest_turn2);
 }
 
 }  // namespace rodsea

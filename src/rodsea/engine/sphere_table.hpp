@@ -20,6 +20,11 @@ struct SphereTable {
     void update_positions(const BodyState& bodies, const std::vector<Species>& species,
                           int threads = 1);
     size_t size() const { return body.size(); }
+
+  private:
+    // Per species: the principal axis that all its sphere centres lie on (every rod and bead),
+    // or -1. Their world centres are then x + s u, with u one column of the rotation.
+    std::vector<int> species_axis_;
 };
 
 }  // namespace rodsea

@@ -53,6 +53,22 @@ constexpr Mat3 to_matrix(const Quat& q) {
     return m;
 }
 
+// Column k of to_matrix(q), computed the same way: the world direction of body axis k, without
+// building the whole matrix.
+constexpr Vec3 rotated_axis(const Quat& q, int k) {
+    switch (k) {
+        case 0:
+            return {1 - 2 * (q.y * q.y + q.z * q.z), 2 * (q.x * q.y + q.w * q.z),
+                    2 * (q.x * q.z - q.w * q.y)};
+        case 1:
+            return {2 * (q.x * q.y - q.w * q.z), 1 - 2 * (q.x * q.x + q.z * q.z),
+                    2 * (q.y * q.z + q.w * q.x)};
+        default:
+            return {2 * (q.x * q.z + q.w * q.y), 2 * (q.y * q.z - q.w * q.x),
+                    1 - 2 * (q.x * q.x + q.y * q.y)};
+    }
+}
+
 constexpr Vec3 rotate(const Quat& q, const Vec3& v) {
     // v + 2 w (u x v) + 2 u x (u x v), u = vector part: cheaper than building R.
     const Vec3 u = q.vec();
