@@ -147,11 +147,16 @@ void Simulation::step() {
                                   params_.seed, step_count_);
     }
 
-    last_ = {found.body_contacts,       found.plate_contacts,
-             resolved.sweeps,           resolved.impulses,
-             resolved.body_collisions,  resolved.plate_collisions,
-             resolved.unresolved,       kicks,
-             found.max_overlap_fraction};
+    last_ = {found.body_contacts,
+             found.plate_contacts,
+             resolved.sweeps,
+             resolved.impulses,
+             resolved.body_collisions,
+             resolved.plate_collisions,
+             resolved.unresolved,
+             kicks,
+             found.max_overlap_fraction,
+             resolved.lid_impulse};
     totals_.impulses += resolved.impulses;
     totals_.unresolved += resolved.unresolved;
     totals_.noise_kicks += kicks;
