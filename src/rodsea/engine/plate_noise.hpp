@@ -16,9 +16,10 @@ namespace rodsea {
 
 double noise_sign(std::uint64_t seed, std::uint64_t step, std::uint32_t body, std::uint32_t plate);
 
-// Returns the number of kicks given. Sorts `hits` in place.
+// Returns the number of kicks given. Sorts `hits` in place. Large hit lists are split over
+// `threads` OpenMP threads, by body: the same kicks on any number of threads.
 size_t apply_plate_noise(std::vector<PlateHit>& hits, BodyState& bodies,
                          const std::vector<Species>& species, double epsilon, std::uint64_t seed,
-                         std::uint64_t step);
+                         std::uint64_t step, int threads = 1);
 
 }  // namespace rodsea

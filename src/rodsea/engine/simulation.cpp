@@ -144,7 +144,7 @@ void Simulation::step() {
     {
         StageTimer t(profile_.noise);
         kicks = apply_plate_noise(plate_hits_, bodies_, params_.species, params_.noise_epsilon,
-                                  params_.seed, step_count_);
+                                  params_.seed, step_count_, threads_);
     }
 
     last_ = {found.body_contacts,
