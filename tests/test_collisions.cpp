@@ -257,37 +257,3 @@ TEST(PlateProjection, ABeadRestingOnTheShakenBaseSinksAtMostOneStepsWorth) {
 
 }  // namespace
 }  // namespace rodsea
-
-namespace rodsea {
-namespace {
-
-// The lid's impulse statistic: a bead flying up at v = 50 mm/s without gravity between still
-// plates 2 mm apart hits the lid once in the first 50 ms (it reaches it after 12 ms; back down at
-// e v it needs 80 ms more to reach the base). Head-on, Stronge's impulse gives the lid exactly
-// (1 + e) m v: round-off only.
-TEST(LidImpulse, ABeadHittingTheLidHeadOnGivesItOnePlusETimesItsMomentum) {
-    EngineParameters p;
-    p.box = {10.0, 10.0};
-    p.drive.gamma = 0.0;
-    p.drive.gap = 2.0;
-    p.drive.gravity = 0.0;
-    p.species = {bead_species()};
-    const double v = 50.0, m = p.species[0].shape.mass, e = p.species[0].plate.restitution;
-    BodyState bodies;
-    bodies.add(0, {5.0, 5.0, 1.0}, Quat{}, {0.0, 0.0, v}, {});
-    Simulation sim(p, bodies);
-    double lid = 0.0;
-    std::size_t lid_steps = 0;
-    const auto steps = static_cast<std::uint64_t>(std::llround(0.05 / p.dt));
-    for (std::uint64_t i = 0; i < steps; ++i) {
-        sim.step();
-        lid += sim.last_step().lid_impulse;
-        lid_steps += sim.last_step().lid_impulse != 0.0 ? 1 : 0;
-    }
-    EXPECT_EQ(lid_steps, 1u);
-    EXPECT_NEAR(lid, (1.0 + e) * m * v, 1e-12 * m * v);
-    EXPECT_NEAR(sim.bodies().velocity[0].z, -e * v, 1e-12 * v);
-}
-
-}  // namespace
-}  // namespace rodsea

@@ -136,7 +136,6 @@ ResolutionStats ContactResolver::sweep_island(size_t island, const std::vector<C
             last_changed_[c.a] = sweep;
             if (plate) {
                 hits.push_back({c.a, c.b, -un});
-                if (c.b == kLidPlate) stats.lid_impulse -= impulse.p.z;
             } else {
                 bodies.velocity[c.b] -= inertia.inv_mass[c.b] * impulse.p;
                 bodies.spin[c.b] -= inertia.inv_inertia[c.b] * cross(c.arm_b, impulse.p);
@@ -169,7 +168,6 @@ ResolutionStats ContactResolver::resolve(const std::vector<Contact>& contacts, B
         total.body_collisions += s.body_collisions;
         total.plate_collisions += s.plate_collisions;
         total.unresolved += s.unresolved;
-        total.lid_impulse += s.lid_impulse;
     };
     if (threads <= 1) {
         for (size_t i = 0; i < island_count_; ++i)

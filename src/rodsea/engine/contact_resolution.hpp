@@ -55,9 +55,6 @@ struct ResolutionStats {
     size_t body_collisions = 0;   // impulses between two bodies approaching > kCollisionSpeed
     size_t plate_collisions = 0;  // impulses with a plate approaching > kCollisionSpeed
     size_t unresolved = 0;        // contacts still approaching when the sweep cap was reached
-    // Momentum the bodies pushed into the lid (mass unit · mm/s, upward): the lid's mean force is
-    // its sum over a run divided by the time, with no threshold that depends on dt.
-    double lid_impulse = 0.0;
 };
 
 class ContactResolver {

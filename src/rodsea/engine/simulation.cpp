@@ -147,16 +147,11 @@ void Simulation::step() {
                                   params_.seed, step_count_, threads_);
     }
 
-    last_ = {found.body_contacts,
-             found.plate_contacts,
-             resolved.sweeps,
-             resolved.impulses,
-             resolved.body_collisions,
-             resolved.plate_collisions,
-             resolved.unresolved,
-             kicks,
-             found.max_overlap_fraction,
-             resolved.lid_impulse};
+    last_ = {found.body_contacts,       found.plate_contacts,
+             resolved.sweeps,           resolved.impulses,
+             resolved.body_collisions,  resolved.plate_collisions,
+             resolved.unresolved,       kicks,
+             found.max_overlap_fraction};
     totals_.impulses += resolved.impulses;
     totals_.unresolved += resolved.unresolved;
     totals_.noise_kicks += kicks;

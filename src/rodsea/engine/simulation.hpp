@@ -30,7 +30,6 @@ struct StepStatistics {
     size_t unresolved = 0;
     size_t noise_kicks = 0;
     double max_overlap_fraction = 0.0;  // largest overlap / smaller radius found this step
-    double lid_impulse = 0.0;           // ResolutionStats::lid_impulse
 };
 
 // Accumulated over every step since construction.
