@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # rodsea's largest converged time step on the race system: the collision rates and the mean
 # squared velocities in the plane and along z at dt = 20 µs down to 0.625 µs, 4 seeds × 0.1 s
-# each, and each dt against dt/4 (bench/race/converge_report.py). race.sh's RODSEA_DT comes from
-# here.
+# each, and each dt against dt/4 (bench/race/converge_report.py). race.sh's
+# RODSEA_DT is the largest step that passes in the observables LAMMPS reports too (the two mean
+# squared velocities; converge_lammps.sh), the report's last line.
 #
-#   bench/race/converge.sh [OUT]        (default OUT: out/race-converge; about 6 min on 2 cores)
+#   bench/race/converge.sh [OUT]        (default OUT: out/race-converge; about 3 min on 2 cores)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 out=${1:-$root/out/race-converge}

@@ -5,10 +5,15 @@
 #
 #   bench/race/race.sh [OUT]        (default OUT: out/race; needs scripts/install-deps.sh --race)
 #
+# Each code runs at its largest converged step on this system, judged the same way for both: the
+# rods' mean squared velocity in the plane and along z agree with a quarter of the step within 2σ
+# (converge.sh, converge_lammps.sh; docs/performance.md).
+#
 # Environment: RODSEA_BUILD (default build), RACE_WARMUP and RACE_TIME (simulated seconds before
-# and during the timing; default 0.01 and 0.05, the reference run's 2000 + 10000 LAMMPS steps),
-# RODSEA_DT (default 1.25e-6, rodsea's converged step), LAMMPS_DT (default 5e-6, the largest that
-# LAMMPS keeps stable with these contact constants), RACE_THREADS (default "1 2").
+# and during the timing; default 0.01 and 0.05), RODSEA_DT (default 5e-6: converge.sh),
+# LAMMPS_DT (default 1.25e-6: 5 µs is the largest step LAMMPS keeps stable, but 5, 2.5 and 1.25 µs
+# all fail against a quarter of themselves, so its converged step is smaller still and 1.25 µs
+# favours LAMMPS), RACE_THREADS (default "1 2").
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -16,8 +21,8 @@ out=${1:-$root/out/race}
 build=${RODSEA_BUILD:-$root/build}
 warmup=${RACE_WARMUP:-0.01}
 time=${RACE_TIME:-0.05}
-rodsea_dt=${RODSEA_DT:-1.25e-6}
-lammps_dt=${LAMMPS_DT:-5e-6}
+rodsea_dt=${RODSEA_DT:-5e-6}
+lammps_dt=${LAMMPS_DT:-1.25e-6}
 threads_list=${RACE_THREADS:-1 2}
 
 command -v lmp >/dev/null || { echo "race.sh: lmp not found: scripts/install-deps.sh --race" >&2; exit 2; }

@@ -3,7 +3,10 @@
 // line per run that race.sh parses.
 //
 //   rodsea_race [--threads N] [--dt SECONDS] [--warmup SECONDS] [--time SECONDS]
-//               [--cells NX NY] [--seed N] [--write-lammps FILE]
+//               [--cells NX NY] [--seed N] [--shuffle] [--write-lammps FILE]
+//
+// --shuffle starts with the rods in random order in memory, as they end up after a long run in
+// which they wander far: what spatial order of the bodies is worth.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -11,6 +14,7 @@
 #include <cstdlib>
 #include <exception>
 #include <fstream>
+#include <random>
 #include <string>
 
 #include "race_system.hpp"
@@ -33,6 +37,19 @@ double peak_resident_bytes() {
     return 0.0;
 }
 
+// The bodies in a random order (Fisher–Yates, seeded).
+rodsea::BodyState shuffled(const rodsea::BodyState& in, std::uint64_t seed) {
+    std::vector<size_t> order(in.size());
+    for (size_t i = 0; i < order.size(); ++i)
+        order[i] = i;
+    std::mt19937_64 random(seed);
+    std::shuffle(order.begin(), order.end(), random);
+    rodsea::BodyState out;
+    for (const size_t i : order)
+        out.add(in.species[i], in.position[i], in.orientation[i], in.velocity[i], in.spin[i]);
+    return out;
+}
+
 struct Options {
     int threads = 1;
     double dt = 1.25e-6;   // s
@@ -41,12 +58,13 @@ struct Options {
     int cells_x = 25, cells_y = 80;
     std::uint64_t seed = 1;
     std::string lammps_data;
+    bool shuffle = false;
 };
 
 [[noreturn]] void usage(const std::string& why) {
     std::fprintf(stderr,
                  "rodsea_race: %s\nusage: rodsea_race [--threads N] [--dt SECONDS] "
-                 "[--warmup SECONDS] [--time SECONDS] [--cells NX NY] [--seed N] "
+                 "[--warmup SECONDS] [--time SECONDS] [--cells NX NY] [--seed N] [--shuffle] "
                  "[--write-lammps FILE]\n",
                  why.c_str());
     std::exit(2);
@@ -88,6 +106,8 @@ Options parse(int argc, char** argv) {
             o.cells_y = whole(value(), flag);
         } else if (flag == "--seed")
             o.seed = static_cast<std::uint64_t>(whole(value(), flag));
+        else if (flag == "--shuffle")
+            o.shuffle = true;
         else if (flag == "--write-lammps")
             o.lammps_data = value();
         else
@@ -107,12 +127,14 @@ int main(int argc, char** argv) {
             std::printf("wrote %s: %zu rods\n", o.lammps_data.c_str(), scene.bodies.size());
             return 0;
         }
+        if (o.shuffle) scene.bodies = shuffled(scene.bodies, o.seed);
         scene.params.dt = o.dt;
         rodsea::Simulation sim(scene.params, scene.bodies);
         sim.set_threads(o.threads);
         const auto warmup_steps = static_cast<std::uint64_t>(std::llround(o.warmup / o.dt));
         const auto steps = static_cast<std::uint64_t>(std::llround(o.time / o.dt));
         sim.run(warmup_steps);
+        const std::uint64_t builds_before = sim.pair_list_builds();
         // What a converged step must not change (converge.sh compares time steps): the collision
         // rates and the mean squared velocity in the plane and along z. Reading them costs
         // nothing next to a step.
@@ -146,14 +168,16 @@ int main(int argc, char** argv) {
             "rodsea threads=%d bodies=%zu spheres=%.0f dt=%g steps=%llu wall=%.3f "
             "steps_per_s=%.1f sphere_steps_per_s=%.4g sim_s_per_wall_s=%.6g unresolved=%llu "
             "max_overlap=%.4f body_collision_rate=%.2f plate_collision_rate=%.2f "
-            "in_plane_speed2=%.3f vertical_speed2=%.3f peak_rss_mb=%.1f\n",
+            "in_plane_speed2=%.3f vertical_speed2=%.3f pair_list_builds=%llu peak_rss_mb=%.1f\n",
             o.threads, sim.bodies().size(), spheres, o.dt, static_cast<unsigned long long>(steps),
             wall, timed / wall, timed * spheres / wall, o.time / wall,
             static_cast<unsigned long long>(sim.totals().unresolved),
             sim.totals().max_overlap_fraction,
             static_cast<double>(body_collisions) * per_body_second,
             static_cast<double>(plate_collisions) * per_body_second, in_plane / samples,
-            vertical / samples, peak_resident_bytes() / 1048576.0);
+            vertical / samples,
+            static_cast<unsigned long long>(sim.pair_list_builds() - builds_before),
+            peak_resident_bytes() / 1048576.0);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "rodsea_race: %s\n", e.what());
         return 1;
