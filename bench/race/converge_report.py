@@ -69,5 +69,6 @@ def main():
         else:
             print(f"No dt agrees with dt/4 within 2 σ in {what}")
 
+
 if __name__ == "__main__":
     main()
