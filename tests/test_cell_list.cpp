@@ -110,6 +110,10 @@ TEST(PeriodicCellList, RefusesCutoffsAndDiscsItCannotServe) {
     // Wrapping maps into [0, L) even where x − L floor(x/L) rounds to L.
     EXPECT_EQ(PeriodicBox2D::wrap(-1e-18, 10.0), 0.0);
     EXPECT_EQ(PeriodicBox2D::wrap(-2.5, 10.0), 7.5);
+    EXPECT_EQ(PeriodicBox2D::wrap(std::nextafter(20.0, 0.0), 10.0),
+              std::nextafter(20.0, 0.0) - 10.0);
+    EXPECT_EQ(PeriodicBox2D::wrap(34.0, 10.0), 4.0);
+    EXPECT_EQ(PeriodicBox2D::wrap(-10.0, 10.0), 0.0);
 }
 
 }  // namespace

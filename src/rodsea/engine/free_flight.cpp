@@ -82,18 +82,6 @@ double spin_bound2(const Rotor& rotor, const Quat& q, const Vec3& spin) {
            rotor.largest_inverse;
 }
 
-// PeriodicBox2D::wrap without its division for the usual case: a step moves a body micrometres,
-// so it is still inside the box or just outside one edge.
-double wrap_after_step(double x, double side) {
-    if (x >= 0.0 && x < side) return x;
-    if (x >= side && x < 2.0 * side) return x - side;  // exact (Sterbenz), so below side
-    if (x < 0.0 && x >= -side) {
-        const double w = x + side;  // rounds to side for a tiny negative x, as wrap's does
-        return w < side ? w : 0.0;
-    }
-    return PeriodicBox2D::wrap(x, side);
-}
-
 Rotor make_rotor(const Vec3& inertia) {
     Rotor r;
     r.inertia = inertia;
@@ -246,8 +234,8 @@ double advance_free_flight(BodyState& bodies, const std::vector<Species>& specie
         x += dt * v;
         x.z -= drop;
         v.z -= gravity * dt;
-        x.x = wrap_after_step(x.x, box.lx);
-        x.y = wrap_after_step(x.y, box.ly);
+        x.x = PeriodicBox2D::wrap(x.x, box.lx);
+        x.y = PeriodicBox2D::wrap(x.y, box.ly);
         rotate_free(bodies.orientation[i], w, m.rotor, dt);
     }
     return std::sqrt(fastest_drift2) + std::sqrt(fastest_turn2);

@@ -35,26 +35,7 @@ inline Quat normalized(const Quat& q) {
     return {q.w / n, q.x / n, q.y / n, q.z / n};
 }
 
-// Rotation matrix R with R v = q v q*.
-constexpr Mat3 to_matrix(const Quat& q) {
-    const double xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z;
-    const double xy = q.x * q.y, xz = q.x * q.z, yz = q.y * q.z;
-    const double wx = q.w * q.x, wy = q.w * q.y, wz = q.w * q.z;
-    Mat3 m;
-    m(0, 0) = 1 - 2 * (yy + zz);
-    m(0, 1) = 2 * (xy - wz);
-    m(0, 2) = 2 * (xz + wy);
-    m(1, 0) = 2 * (xy + wz);
-    m(1, 1) = 1 - 2 * (xx + zz);
-    m(1, 2) = 2 * (yz - wx);
-    m(2, 0) = 2 * (xz - wy);
-    m(2, 1) = 2 * (yz + wx);
-    m(2, 2) = 1 - 2 * (xx + yy);
-    return m;
-}
-
-// Column k of to_matrix(q), computed the same way: the world direction of body axis k, without
-// building the whole matrix.
+// Column k of q's rotation matrix R (R v = q v q*): the world direction of body axis k.
 constexpr Vec3 rotated_axis(const Quat& q, int k) {
     switch (k) {
         case 0:
@@ -67,6 +48,18 @@ constexpr Vec3 rotated_axis(const Quat& q, int k) {
             return {2 * (q.x * q.z + q.w * q.y), 2 * (q.y * q.z - q.w * q.x),
                     1 - 2 * (q.x * q.x + q.y * q.y)};
     }
+}
+
+// Rotation matrix R with R v = q v q*, column by column.
+constexpr Mat3 to_matrix(const Quat& q) {
+    Mat3 m;
+    for (int k = 0; k < 3; ++k) {
+        const Vec3 c = rotated_axis(q, k);
+        m(0, k) = c.x;
+        m(1, k) = c.y;
+        m(2, k) = c.z;
+    }
+    return m;
 }
 
 constexpr Vec3 rotate(const Quat& q, const Vec3& v) {
