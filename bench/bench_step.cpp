@@ -20,7 +20,7 @@ void report(benchmark::State& state, const rodsea::Simulation& sim,
     const auto spheres = static_cast<double>(sim.spheres().size());
     state.counters["bodies"] = static_cast<double>(sim.bodies().size());
     state.counters["spheres"] = spheres;
-    state.counters["threads"] = sim.threads();
+    state.counters["threads"] = sim.options().threads;
     state.counters["steps/s"] = benchmark::Counter(steps, benchmark::Counter::kIsRate);
     state.counters["sphere-steps/s"] =
         benchmark::Counter(steps * spheres, benchmark::Counter::kIsRate);
@@ -37,8 +37,8 @@ void report(benchmark::State& state, const rodsea::Simulation& sim,
 }
 
 void run_mixture(benchmark::State& state, const rodsea::Scene& scene, int threads) {
-    auto sim = std::make_unique<rodsea::Simulation>(scene.params, scene.bodies);
-    sim->set_threads(threads);
+    auto sim = std::make_unique<rodsea::Simulation>(scene.params, scene.bodies,
+                                                    rodsea::BackendOptions{.threads = threads});
     sim->run(2000);  // leave the lattice: let the rods tilt, collide and spread out a little
     const rodsea::StageProfile before = sim->profile();
     const std::uint64_t builds_before = sim->pair_list_builds();

@@ -16,7 +16,7 @@
 #include "rodsea/builder/initial_state.hpp"
 #include "rodsea/builder/lattice.hpp"
 #include "rodsea/builder/monte_carlo.hpp"
-#include "rodsea/engine/plates.hpp"
+#include "rodsea/engine/physics/plates.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/neighbors/periodic_cell_list.hpp"
@@ -89,7 +89,7 @@ void expect_valid_start(const Request& r, const BodyState& bodies, bool seam = t
         EXPECT_EQ(std::count(bodies.species.begin(), bodies.species.end(), s), r.counts[s])
             << r.params.species[s].name;
     }
-    const double base = plate_state(r.params.drive, 0.0).base_z;
+    const double base = physics::plate_state(r.params.drive.motion(), 0.0).base_z;
     for (size_t b = 0; b < bodies.size(); ++b) {
         const Vec3& x = bodies.position[b];
         EXPECT_TRUE(x.x >= 0.0 && x.x < r.params.box.lx && x.y >= 0.0 && x.y < r.params.box.ly)

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "rodsea/engine/free_flight.hpp"
+#include "rodsea/engine/cpu/free_flight.hpp"
 #include "rodsea/random.hpp"
 #include "rodsea/scenes/scenes.hpp"
 #include "two_body.hpp"
@@ -41,7 +41,7 @@ Outcome collide(const Species& a, const Species& b, const BodySpec& sa, const Bo
     // The state the contact search saw: the same free flight the step does.
     BodyState flown = sim.bodies();
     const EngineParameters& prm = sim.parameters();
-    advance_free_flight(flown, prm.species, prm.box, prm.drive.gravity, prm.dt);
+    cpu::advance_free_flight(flown.view(), SpeciesTable::from(prm), step_context(prm, 1), 1);
     sim.step();
     Outcome out;
     out.contacts = sim.contacts().size();

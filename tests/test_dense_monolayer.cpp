@@ -25,8 +25,8 @@ TEST(DenseMonolayer, StaysInTheGapWithSmallOverlapsForOneHundredPeriods) {
     for (int p = 0; p < 100; ++p) {
         for (std::uint64_t s = 0; s < steps_per_period; ++s) {
             sim.step();
-            const PlateState plates = sim.plates();
-            const SphereTable& spheres = sim.spheres();
+            const physics::PlateState plates = sim.plates();
+            const SphereView spheres = sim.spheres();
             for (size_t k = 0; k < spheres.size(); ++k) {
                 const double z = spheres.position[k].z, r = spheres.radius[k];
                 worst_escape =

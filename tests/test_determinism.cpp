@@ -8,10 +8,10 @@
 namespace rodsea {
 namespace {
 
-Simulation noisy_mixture(std::uint64_t seed) {
+Simulation noisy_mixture(std::uint64_t seed, int threads = 1) {
     Scene scene = polar_in_apolar_mixture(0.10, 2.5, 0.40, 20.0, seed);
     scene.params.noise_epsilon = 0.05;
-    return Simulation(scene.params, scene.bodies);
+    return Simulation(scene.params, scene.bodies, {.threads = threads});
 }
 
 TEST(Determinism, RepeatedRunsGiveTheSameStateHash) {
@@ -69,8 +69,7 @@ namespace {
 TEST(Determinism, AnyNumberOfThreadsGivesTheSameStateHash) {
     std::uint64_t hash[3] = {};
     for (int threads = 1; threads <= 3; ++threads) {
-        Simulation sim = noisy_mixture(6);
-        sim.set_threads(threads);
+        Simulation sim = noisy_mixture(6, threads);
         sim.run(1500);
         EXPECT_GT(sim.totals().noise_kicks, 0u);
         hash[threads - 1] = sim.state_hash();
@@ -80,8 +79,7 @@ TEST(Determinism, AnyNumberOfThreadsGivesTheSameStateHash) {
 }
 
 TEST(Determinism, RefusesFewerThanOneThread) {
-    Simulation sim = noisy_mixture(6);
-    EXPECT_THROW(sim.set_threads(0), InvalidParameter);
+    EXPECT_THROW(noisy_mixture(6, 0), InvalidParameter);
 }
 
 }  // namespace

@@ -78,8 +78,7 @@ struct GoldenRun {
 
 GoldenRun golden_run(int threads) {
     const EngineParameters p = golden_parameters();
-    GoldenRun run{Simulation(p, golden_bodies(p))};
-    run.sim.set_threads(threads);
+    GoldenRun run{Simulation(p, golden_bodies(p), {.threads = threads})};
     for (std::uint64_t k = 0; k < kGoldenSteps; ++k) {
         run.sim.step();
         run.body_contacts += run.sim.last_step().body_contacts;

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "rodsea/engine/impulse.hpp"
+#include "rodsea/engine/physics/impulse.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/random.hpp"
 #include "rodsea/scenes/scenes.hpp"
@@ -30,7 +30,7 @@ RodOnWall random_rod_on_wall(SplitMix64& rng) {
     const Vec3 arm = r * shape.offsets[s] - shape.radii[s] * n;
     RodOnWall c;
     c.n = n;
-    c.k = collision_matrix(1 / shape.mass, inv_i, arm, 0.0, Mat3::zero(), {});
+    c.k = physics::collision_matrix(1 / shape.mass, inv_i, arm, 0.0, Mat3::zero(), {});
     c.u = {rng.uniform(-50, 50), rng.uniform(-50, 50), -rng.uniform(1, 100)};
     return c;
 }
@@ -39,7 +39,7 @@ TEST(StrongeImpulse, FrictionlessReversesNormalVelocityByE) {
     SplitMix64 rng(7);
     for (int trial = 0; trial < 200; ++trial) {
         const RodOnWall c = random_rod_on_wall(rng);
-        const Impulse p = stronge_impulse(c.u, c.n, c.k, 0.0, 0.3);
+        const physics::Impulse p = physics::stronge_impulse(c.u, c.n, c.k, 0.0, 0.3);
         const Vec3 after = c.u + c.k * p.p;
         EXPECT_NEAR(dot(after, c.n), -0.3 * dot(c.u, c.n), 1e-12 * norm(c.u));
         EXPECT_NEAR(norm(p.p - dot(p.p, c.n) * c.n), 0.0, 1e-12 * norm(p.p));
@@ -55,7 +55,7 @@ TEST(StrongeImpulse, StaysInFrictionConeSticksExactlyAndDissipates) {
     for (int trial = 0; trial < 2000; ++trial) {
         const RodOnWall c = random_rod_on_wall(rng);
         const double mu = trial % 2 ? 0.03 : 0.6, e = trial % 3 ? 0.1 : 0.3;
-        const Impulse p = stronge_impulse(c.u, c.n, c.k, mu, e);
+        const physics::Impulse p = physics::stronge_impulse(c.u, c.n, c.k, mu, e);
         const double pn = dot(p.p, c.n);
         const double pt = norm(p.p - pn * c.n);
         ASSERT_GT(pn, 0.0);

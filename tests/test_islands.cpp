@@ -6,10 +6,9 @@
 #include <algorithm>
 #include <vector>
 
-#include "rodsea/engine/contact_resolution.hpp"
-#include "rodsea/engine/contact_search.hpp"
-#include "rodsea/engine/impulse.hpp"
-#include "rodsea/engine/plates.hpp"
+#include "rodsea/engine/cpu/contact_resolution.hpp"
+#include "rodsea/engine/cpu/contact_search.hpp"
+#include "rodsea/engine/physics/impulse.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/random.hpp"
 #include "rodsea/scenes/scenes.hpp"
@@ -19,7 +18,7 @@ namespace {
 
 // The whole list swept in order until no impulse, the resolver before islands.
 size_t sweep_whole_list(const std::vector<Contact>& contacts, BodyState& bodies,
-                        const InverseInertia& inertia, double plate_velocity_z,
+                        const cpu::InverseInertia& inertia, double plate_velocity_z,
                         const EngineParameters& params) {
     std::vector<int> last_changed(bodies.size(), 0);
     const Vec3 plate_velocity{0.0, 0.0, plate_velocity_z};
@@ -39,17 +38,19 @@ size_t sweep_whole_list(const std::vector<Contact>& contacts, BodyState& bodies,
                            (plate ? plate_velocity : point_velocity(c.b, c.arm_b));
             if (dot(u, c.normal) >= -params.approach_tolerance) continue;
             const Mat3 k =
-                plate ? collision_matrix(inertia.inv_mass[c.a], inertia.inv_inertia[c.a], c.arm_a,
-                                         0.0, Mat3::zero(), {})
-                      : collision_matrix(inertia.inv_mass[c.a], inertia.inv_inertia[c.a], c.arm_a,
-                                         inertia.inv_mass[c.b], inertia.inv_inertia[c.b], c.arm_b);
-            const Impulse p = stronge_impulse(u, c.normal, k, c.friction, c.restitution);
-            bodies.velocity[c.a] += inertia.inv_mass[c.a] * p.p;
-            bodies.spin[c.a] += inertia.inv_inertia[c.a] * cross(c.arm_a, p.p);
+                plate ? physics::collision_matrix(inertia.inv_mass(c.a), inertia.inv_inertia(c.a),
+                                                  c.arm_a, 0.0, Mat3::zero(), {})
+                      : physics::collision_matrix(inertia.inv_mass(c.a), inertia.inv_inertia(c.a),
+                                                  c.arm_a, inertia.inv_mass(c.b),
+                                                  inertia.inv_inertia(c.b), c.arm_b);
+            const physics::Impulse p =
+                physics::stronge_impulse(u, c.normal, k, c.friction, c.restitution);
+            bodies.velocity[c.a] += inertia.inv_mass(c.a) * p.p;
+            bodies.spin[c.a] += inertia.inv_inertia(c.a) * cross(c.arm_a, p.p);
             last_changed[c.a] = sweep;
             if (!plate) {
-                bodies.velocity[c.b] -= inertia.inv_mass[c.b] * p.p;
-                bodies.spin[c.b] -= inertia.inv_inertia[c.b] * cross(c.arm_b, p.p);
+                bodies.velocity[c.b] -= inertia.inv_mass(c.b) * p.p;
+                bodies.spin[c.b] -= inertia.inv_inertia(c.b) * cross(c.arm_b, p.p);
                 last_changed[c.b] = sweep;
             }
             ++impulses;
@@ -66,7 +67,8 @@ TEST(IslandResolver, AppliesExactlyTheImpulsesOfOneSweepOverTheWholeList) {
     params.box = {40.0, 40.0};
     params.species = {bead_species()};
     const double r = 0.4;
-    const PlateState plates = plate_state(params.drive, 0.0);
+    const StepContext step = step_context(params, 0);  // the plates at t = 0
+    const physics::PlateState& plates = step.plates;
     BodyState start;
     SplitMix64 rng(8);
     for (int chain = 0; chain < 6; ++chain) {
@@ -77,15 +79,16 @@ TEST(IslandResolver, AppliesExactlyTheImpulsesOfOneSweepOverTheWholeList) {
             start.add(0, x, Quat{}, v, w);
         }
     }
-    SphereTable spheres;
-    spheres.assign(start, params.species);
-    spheres.update_positions(start, params.species);
-    ContactFinder finder;
+    const SpeciesTable species = SpeciesTable::from(params);
+    cpu::SphereTable spheres;
+    spheres.assign(start.species, species);
+    spheres.update_positions(start.view(), species, 1);
+    cpu::ContactFinder finder;
     std::vector<Contact> contacts;
-    finder.find(spheres, start, params, plates, contacts);
+    finder.find(spheres, start.view(), species, step, contacts, 1);
     ASSERT_EQ(contacts.size(), 6u * (7 + 8));  // 7 neighbours and 8 base contacts per chain
-    InverseInertia inertia;
-    inertia.update(start, params.species);
+    cpu::InverseInertia inertia;
+    inertia.update_for(contacts, start.view(), species);
 
     BodyState reference = start;
     const size_t reference_impulses =
@@ -93,10 +96,10 @@ TEST(IslandResolver, AppliesExactlyTheImpulsesOfOneSweepOverTheWholeList) {
     ASSERT_GT(reference_impulses, 200u);  // many sweeps, not one impulse per contact
     for (int threads = 1; threads <= 2; ++threads) {
         BodyState bodies = start;
-        ContactResolver resolver;
-        std::vector<PlateHit> hits;
-        const ResolutionStats stats =
-            resolver.resolve(contacts, bodies, inertia, plates.velocity_z, params, hits, threads);
+        cpu::ContactResolver resolver;
+        std::vector<cpu::PlateHit> hits;
+        const cpu::ResolutionStats stats =
+            resolver.resolve(contacts, bodies.view(), inertia, step, hits, threads);
         EXPECT_EQ(resolver.islands(), 6u);
         EXPECT_EQ(stats.impulses, reference_impulses);
         EXPECT_EQ(stats.unresolved, 0u);

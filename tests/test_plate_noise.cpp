@@ -7,7 +7,9 @@
 #include <map>
 #include <utility>
 
-#include "rodsea/engine/plate_noise.hpp"
+#include "rodsea/engine/cpu/plate_noise.hpp"
+#include "rodsea/engine/physics/plate_noise.hpp"
+#include "rodsea/engine/simulation.hpp"
 #include "rodsea/random.hpp"
 #include "rodsea/scenes/scenes.hpp"
 
@@ -15,9 +17,8 @@ namespace rodsea {
 namespace {
 
 struct NoiseCase {
-    std::vector<Species> species{polar_rod_species(), bead_species()};
     BodyState bodies;
-    std::vector<PlateHit> hits;
+    std::vector<cpu::PlateHit> hits;
 };
 
 // 3000 bodies, every third a bead; 4000 hits in island-like (unsorted) order, several per body
@@ -43,7 +44,7 @@ TEST(PlateNoise, EachPolarRodGetsOneKickPerPlateFromItsFastestApproachOnAnyThrea
 
     // Direct evaluation: the fastest approach per (body, plate).
     std::map<std::pair<std::uint32_t, std::uint32_t>, double> fastest;
-    for (const PlateHit& hit : start.hits) {
+    for (const cpu::PlateHit& hit : start.hits) {
         double& f = fastest[{hit.body, hit.plate}];
         f = std::max(f, hit.approach_speed);
     }
@@ -54,16 +55,21 @@ TEST(PlateNoise, EachPolarRodGetsOneKickPerPlateFromItsFastestApproachOnAnyThrea
     for (const auto& [key, speed] : fastest) {
         if (start.bodies.species[key.first] != 0) continue;  // beads get no kick
         expected_spin_z[key.first] +=
-            epsilon * speed * noise_sign(seed, step, key.first, key.second);
+            epsilon * speed * physics::noise_sign(seed, step, key.first, key.second);
         ++expected_kicks;
     }
     ASSERT_GT(start.hits.size(), 1024u);  // long enough to be split over threads
     ASSERT_GT(expected_kicks, 1000u);
 
+    EngineParameters params;
+    params.species = {polar_rod_species(), bead_species()};
+    params.noise_epsilon = epsilon;
+    params.seed = seed;
+    const SpeciesTable species = SpeciesTable::from(params);
     for (int threads : {1, 2, 3}) {
         NoiseCase c = start;
-        const size_t kicks =
-            apply_plate_noise(c.hits, c.bodies, c.species, epsilon, seed, step, threads);
+        const size_t kicks = cpu::apply_plate_noise(c.hits, c.bodies.view(), species,
+                                                    step_context(params, step), threads);
         EXPECT_EQ(kicks, expected_kicks) << threads << " threads";
         for (size_t b = 0; b < c.bodies.size(); ++b) {
             // Bit for bit: a body with two kicks adds them in plate order, as the direct sum does.

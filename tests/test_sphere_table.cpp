@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "rodsea/engine/sphere_table.hpp"
+#include "rodsea/engine/cpu/sphere_table.hpp"
 #include "rodsea/random.hpp"
 #include "rodsea/scenes/scenes.hpp"
 
@@ -14,13 +14,15 @@ namespace rodsea {
 namespace {
 
 TEST(SphereTable, SpheresOnAnAxisAreWhereTheRotationMatrixPutsThem) {
-    const std::vector<Species> species{
+    EngineParameters params;
+    params.species = {
         polar_rod_species(), apolar_rod_species(2.5), bead_species(),
         Species{"bent",
                 BodyKind::bead,
                 make_shape({{{0, 0, 0}, 0.3}, {{1.0, 0.2, 0}, 0.2}, {{0.1, 0.9, 0.3}, 0.25}}, 1.0),
                 {0.0, 0.3}}};
     // The rods' and the bead's centres lie on x exactly, so they take the x + s u path.
+    const std::vector<Species>& species = params.species;
     for (size_t k = 0; k < 3; ++k)
         for (const Vec3& o : species[k].shape.offsets) {
             ASSERT_EQ(o.y, 0.0);
@@ -37,9 +39,10 @@ TEST(SphereTable, SpheresOnAnAxisAreWhereTheRotationMatrixPutsThem) {
         bodies.add(b % 4, {50 * uniform(), 50 * uniform(), uniform()},
                    Quat::from_axis_angle(normalized(axis), 3.2 * uniform()));
     }
-    SphereTable table;
-    table.assign(bodies, species);
-    table.update_positions(bodies, species);
+    const SpeciesTable table_species = SpeciesTable::from(params);
+    cpu::SphereTable table;
+    table.assign(bodies.species, table_species);
+    table.update_positions(bodies.view(), table_species, 1);
     for (std::uint32_t b = 0; b < bodies.size(); ++b) {
         const Mat3 r = to_matrix(bodies.orientation[b]);
         const Shape& shape = species[bodies.species[b]].shape;

@@ -5,7 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "rodsea/engine/plates.hpp"
+#include "rodsea/engine/physics/plates.hpp"
 #include "rodsea/io/atomic_file.hpp"
 #include "rodsea/random.hpp"
 #include "rodsea/shape/shape.hpp"
@@ -47,7 +47,7 @@ Scene race_scene(int cells_x, int cells_y, std::uint64_t seed) {
     p.noise_epsilon = 0.0;
     p.seed = seed;
     SplitMix64 rng(seed);
-    const double mid_gap = plate_state(p.drive, 0.0).base_z + 0.5 * kGap;
+    const double mid_gap = physics::plate_state(p.drive.motion(), 0.0).base_z + 0.5 * kGap;
     for (int i = 0; i < cells_x; ++i) {
         for (int j = 0; j < cells_y; ++j) {
             const double deg = std::numbers::pi / 180.0;
@@ -67,7 +67,7 @@ void write_lammps_data(const Scene& scene, const std::string& path) {
     const Shape& shape = p.species[0].shape;
     const BodyState& b = scene.bodies;
     const double m = 1e-3;  // mm → m
-    const PlateState plates = plate_state(p.drive, 0.0);
+    const physics::PlateState plates = physics::plate_state(p.drive.motion(), 0.0);
     // LAMMPS' plates start at z = 0 and rise to 2A (lo + A(1 − cos ωt)); rodsea's base starts at
     // A and falls: shift so that both start at the base.
     const double shift = -plates.base_z;

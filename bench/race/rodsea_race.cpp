@@ -129,8 +129,7 @@ int main(int argc, char** argv) {
         }
         if (o.shuffle) scene.bodies = shuffled(scene.bodies, o.seed);
         scene.params.dt = o.dt;
-        rodsea::Simulation sim(scene.params, scene.bodies);
-        sim.set_threads(o.threads);
+        rodsea::Simulation sim(scene.params, scene.bodies, {.threads = o.threads});
         const auto warmup_steps = static_cast<std::uint64_t>(std::llround(o.warmup / o.dt));
         const auto steps = static_cast<std::uint64_t>(std::llround(o.time / o.dt));
         sim.run(warmup_steps);

@@ -3,9 +3,11 @@
 // standard libraries, which would break bit-for-bit reproducibility across machines).
 #include <cstdint>
 
+#include "rodsea/math/hostdevice.hpp"
+
 namespace rodsea {
 
-constexpr std::uint64_t splitmix64(std::uint64_t x) {
+RODSEA_HD constexpr std::uint64_t splitmix64(std::uint64_t x) {
     x += 0x9E3779B97F4A7C15ULL;
     x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
     x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;

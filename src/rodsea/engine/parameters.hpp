@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "rodsea/engine/physics/contact.hpp"
+#include "rodsea/engine/physics/plates.hpp"
 #include "rodsea/shape/shape.hpp"
 
 namespace rodsea {
@@ -20,11 +22,7 @@ struct DriveParameters {
     double amplitude() const {  // A, mm
         return gamma * gravity / (angular_frequency * angular_frequency);
     }
-};
-
-struct ContactCoefficients {
-    double friction = 0.05;     // μ, Coulomb, [0, 10]
-    double restitution = 0.30;  // e, normal, [0, 1]
+    physics::PlateMotion motion() const { return {amplitude(), angular_frequency, gap}; }
 };
 
 enum class BodyKind { polar_rod, apolar_rod, bead };

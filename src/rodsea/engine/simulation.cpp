@@ -1,32 +1,16 @@
 #include "rodsea/engine/simulation.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <string>
 
-#include "rodsea/engine/free_flight.hpp"
-#include "rodsea/engine/plate_noise.hpp"
+#include "rodsea/engine/cpu/cpu_backend.hpp"
 #include "rodsea/error.hpp"
 
 namespace rodsea {
 
 namespace {
-
-class StageTimer {
-  public:
-    explicit StageTimer(double& sink) : sink_(sink), start_(std::chrono::steady_clock::now()) {}
-    ~StageTimer() {
-        sink_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    }
-    StageTimer(const StageTimer&) = delete;
-    StageTimer& operator=(const StageTimer&) = delete;
-
-  private:
-    double& sink_;
-    std::chrono::steady_clock::time_point start_;
-};
 
 bool finite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
@@ -40,7 +24,7 @@ void validate_bodies(const EngineParameters& params, BodyState& bodies, bool fre
         throw InvalidParameter("bodies", "arrays of different lengths",
                                "one entry per body in each");
     }
-    const PlateState plates = plate_state(params.drive, 0.0);
+    const physics::PlateState plates = physics::plate_state(params.drive.motion(), 0.0);
     for (size_t b = 0; b < n; ++b) {
         const std::string key = "bodies[" + std::to_string(b) + "]";
         if (bodies.species[b] >= params.species.size()) {
@@ -92,77 +76,54 @@ void hash_bytes(std::uint64_t& h, const std::vector<T>& data) {
 
 }  // namespace
 
-Simulation::Simulation(EngineParameters params, BodyState bodies)
-    : params_(std::move(params)), bodies_(std::move(bodies)) {
+Simulation::Simulation(EngineParameters params, BodyState bodies, BackendOptions options)
+    : Simulation(std::move(params), std::move(bodies), 0, options, true) {}
+
+Simulation::Simulation(EngineParameters params, BodyState bodies, std::uint64_t step_count,
+                       BackendOptions options, bool fresh_start)
+    : params_(std::move(params)), options_(options), step_count_(step_count) {
     validate(params_);
-    validate_bodies(params_, bodies_, true);
-    spheres_.assign(bodies_, params_.species);
-    spheres_.update_positions(bodies_, params_.species);
+    if (options_.threads < 1)
+        throw InvalidParameter("threads", std::to_string(options_.threads), ">= 1");
+    validate_bodies(params_, bodies, fresh_start);
+    species_ = std::make_unique<SpeciesTable>(SpeciesTable::from(params_));
+    backend_ = std::make_unique<cpu::CpuBackend>(*species_, std::move(bodies), options_.threads);
 }
 
-Simulation::Simulation(EngineParameters params, BodyState bodies, std::uint64_t step_count, Resumed)
-    : params_(std::move(params)), bodies_(std::move(bodies)), step_count_(step_count) {
-    validate(params_);
-    validate_bodies(params_, bodies_, false);
-    spheres_.assign(bodies_, params_.species);
-    spheres_.update_positions(bodies_, params_.species);
+Simulation Simulation::resume(EngineParameters params, BodyState bodies, std::uint64_t step_count,
+                              BackendOptions options) {
+    return Simulation(std::move(params), std::move(bodies), step_count, options, false);
 }
 
-Simulation Simulation::resume(EngineParameters params, BodyState bodies, std::uint64_t step_count) {
-    return Simulation(std::move(params), std::move(bodies), step_count, Resumed{});
+Simulation::Simulation(Simulation&&) noexcept = default;
+Simulation& Simulation::operator=(Simulation&&) noexcept = default;
+Simulation::~Simulation() = default;
+
+StepContext step_context(const EngineParameters& params, std::uint64_t step) {
+    StepContext context;
+    context.dt = params.dt;
+    context.gravity = params.drive.gravity;
+    context.box = {params.box.lx, params.box.ly};
+    context.step = step;
+    context.plates =
+        physics::plate_state(params.drive.motion(), static_cast<double>(step) * params.dt);
+    context.approach_tolerance = params.approach_tolerance;
+    context.max_sweeps = params.max_sweeps;
+    context.noise_epsilon = params.noise_epsilon;
+    context.seed = params.seed;
+    return context;
 }
 
 void Simulation::step() {
-    double fastest = 0.0;  // bound on any sphere's speed in the plane in this step (mm/s)
-    {
-        StageTimer t(profile_.free_flight);
-        fastest = advance_free_flight(bodies_, params_.species, params_.box, params_.drive.gravity,
-                                      params_.dt, threads_);
-    }
-    ++step_count_;
-    const PlateState plates = plate_state(params_.drive, time());
-    {
-        StageTimer t(profile_.sphere_update);
-        spheres_.update_positions(bodies_, params_.species, threads_);
-    }
-    ContactSearchStats found;
-    {
-        StageTimer t(profile_.contact_search);
-        found = finder_.find(spheres_, bodies_, params_, plates, contacts_, threads_,
-                             fastest * params_.dt);
-    }
-    ResolutionStats resolved;
-    {
-        StageTimer t(profile_.resolution);
-        inverse_inertia_.update_for(contacts_, bodies_, params_.species);
-        plate_hits_.clear();
-        resolved = resolver_.resolve(contacts_, bodies_, inverse_inertia_, plates.velocity_z,
-                                     params_, plate_hits_, threads_);
-        plate_projection_.apply(contacts_, bodies_, spheres_);
-    }
-    size_t kicks = 0;
-    {
-        StageTimer t(profile_.noise);
-        kicks = apply_plate_noise(plate_hits_, bodies_, params_.species, params_.noise_epsilon,
-                                  params_.seed, step_count_, threads_);
-    }
-
-    last_ = {found.body_contacts,       found.plate_contacts,
-             resolved.sweeps,           resolved.impulses,
-             resolved.body_collisions,  resolved.plate_collisions,
-             resolved.unresolved,       kicks,
-             found.max_overlap_fraction};
-    totals_.impulses += resolved.impulses;
-    totals_.unresolved += resolved.unresolved;
-    totals_.noise_kicks += kicks;
-    totals_.max_sweeps = std::max(totals_.max_sweeps, resolved.sweeps);
+    const StepContext context = step_context(params_, step_count_ + 1);
+    backend_->step(context, last_, profile_);
+    step_count_ = context.step;
+    totals_.impulses += last_.impulses;
+    totals_.unresolved += last_.unresolved;
+    totals_.noise_kicks += last_.noise_kicks;
+    totals_.max_sweeps = std::max(totals_.max_sweeps, last_.sweeps);
     totals_.max_overlap_fraction =
-        std::max(totals_.max_overlap_fraction, found.max_overlap_fraction);
-}
-
-void Simulation::set_threads(int threads) {
-    if (threads < 1) throw InvalidParameter("threads", std::to_string(threads), ">= 1");
-    threads_ = threads;
+        std::max(totals_.max_overlap_fraction, last_.max_overlap_fraction);
 }
 
 void Simulation::run(std::uint64_t steps) {
@@ -172,11 +133,12 @@ void Simulation::run(std::uint64_t steps) {
 
 double Simulation::kinetic_energy() const {
     double e = 0.0;
-    for (size_t b = 0; b < bodies_.size(); ++b) {
-        const Shape& shape = params_.species[bodies_.species[b]].shape;
-        const Vec3 w = rotate(conjugate(bodies_.orientation[b]), bodies_.spin[b]);
+    const BodyState& state = bodies();
+    for (size_t b = 0; b < state.size(); ++b) {
+        const Shape& shape = params_.species[state.species[b]].shape;
+        const Vec3 w = rotate(conjugate(state.orientation[b]), state.spin[b]);
         const Vec3& i = shape.principal_inertia;
-        e += 0.5 * shape.mass * norm2(bodies_.velocity[b]) +
+        e += 0.5 * shape.mass * norm2(state.velocity[b]) +
              0.5 * (i.x * w.x * w.x + i.y * w.y * w.y + i.z * w.z * w.z);
     }
     return e;
@@ -184,32 +146,35 @@ double Simulation::kinetic_energy() const {
 
 Vec3 Simulation::linear_momentum() const {
     Vec3 p;
-    for (size_t b = 0; b < bodies_.size(); ++b)
-        p += params_.species[bodies_.species[b]].shape.mass * bodies_.velocity[b];
+    const BodyState& state = bodies();
+    for (size_t b = 0; b < state.size(); ++b)
+        p += params_.species[state.species[b]].shape.mass * state.velocity[b];
     return p;
 }
 
 Vec3 Simulation::angular_momentum(const Vec3& about) const {
     Vec3 l;
-    for (size_t b = 0; b < bodies_.size(); ++b) {
-        const Shape& shape = params_.species[bodies_.species[b]].shape;
-        const Quat& q = bodies_.orientation[b];
-        const Vec3 wb = rotate(conjugate(q), bodies_.spin[b]);
+    const BodyState& state = bodies();
+    for (size_t b = 0; b < state.size(); ++b) {
+        const Shape& shape = params_.species[state.species[b]].shape;
+        const Quat& q = state.orientation[b];
+        const Vec3 wb = rotate(conjugate(q), state.spin[b]);
         const Vec3& i = shape.principal_inertia;
         l += rotate(q, Vec3{i.x * wb.x, i.y * wb.y, i.z * wb.z}) +
-             shape.mass * cross(bodies_.position[b] - about, bodies_.velocity[b]);
+             shape.mass * cross(state.position[b] - about, state.velocity[b]);
     }
     return l;
 }
 
 std::uint64_t Simulation::state_hash() const {
     std::uint64_t h = 14695981039346656037ULL;
+    const BodyState& state = bodies();
     hash_bytes(h, std::vector<std::uint64_t>{step_count_});
-    hash_bytes(h, bodies_.species);
-    hash_bytes(h, bodies_.position);
-    hash_bytes(h, bodies_.orientation);
-    hash_bytes(h, bodies_.velocity);
-    hash_bytes(h, bodies_.spin);
+    hash_bytes(h, state.species);
+    hash_bytes(h, state.position);
+    hash_bytes(h, state.orientation);
+    hash_bytes(h, state.velocity);
+    hash_bytes(h, state.spin);
     return h;
 }
 

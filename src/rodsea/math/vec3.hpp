@@ -1,7 +1,9 @@
 #pragma once
-// Plain 3-vector of doubles. Trivially copyable so that arrays of it are contiguous
-// and can later be mirrored on a GPU without conversion.
+// Plain 3-vector of doubles. Trivially copyable so that arrays of it are contiguous and are
+// copied to a GPU as they are.
 #include <cmath>
+
+#include "rodsea/math/hostdevice.hpp"
 
 namespace rodsea {
 
@@ -9,24 +11,24 @@ struct Vec3 {
     double x = 0.0, y = 0.0, z = 0.0;
 
     constexpr Vec3() = default;
-    constexpr Vec3(double x_, double y_, double z_) : x(x_), y(y_), z(z_) {}
+    RODSEA_HD constexpr Vec3(double x_, double y_, double z_) : x(x_), y(y_), z(z_) {}
 
-    constexpr double operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
-    constexpr double& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
+    RODSEA_HD constexpr double operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
+    RODSEA_HD constexpr double& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
 
-    constexpr Vec3& operator+=(const Vec3& o) {
+    RODSEA_HD constexpr Vec3& operator+=(const Vec3& o) {
         x += o.x;
         y += o.y;
         z += o.z;
         return *this;
     }
-    constexpr Vec3& operator-=(const Vec3& o) {
+    RODSEA_HD constexpr Vec3& operator-=(const Vec3& o) {
         x -= o.x;
         y -= o.y;
         z -= o.z;
         return *this;
     }
-    constexpr Vec3& operator*=(double s) {
+    RODSEA_HD constexpr Vec3& operator*=(double s) {
         x *= s;
         y *= s;
         z *= s;
@@ -34,41 +36,41 @@ struct Vec3 {
     }
 };
 
-constexpr Vec3 operator+(Vec3 a, const Vec3& b) {
+RODSEA_HD constexpr Vec3 operator+(Vec3 a, const Vec3& b) {
     return a += b;
 }
-constexpr Vec3 operator-(Vec3 a, const Vec3& b) {
+RODSEA_HD constexpr Vec3 operator-(Vec3 a, const Vec3& b) {
     return a -= b;
 }
-constexpr Vec3 operator-(const Vec3& a) {
+RODSEA_HD constexpr Vec3 operator-(const Vec3& a) {
     return {-a.x, -a.y, -a.z};
 }
-constexpr Vec3 operator*(Vec3 a, double s) {
+RODSEA_HD constexpr Vec3 operator*(Vec3 a, double s) {
     return a *= s;
 }
-constexpr Vec3 operator*(double s, Vec3 a) {
+RODSEA_HD constexpr Vec3 operator*(double s, Vec3 a) {
     return a *= s;
 }
-constexpr Vec3 operator/(const Vec3& a, double s) {
+RODSEA_HD constexpr Vec3 operator/(const Vec3& a, double s) {
     return {a.x / s, a.y / s, a.z / s};
 }
-constexpr bool operator==(const Vec3& a, const Vec3& b) {
+RODSEA_HD constexpr bool operator==(const Vec3& a, const Vec3& b) {
     return a.x == b.x && a.y == b.y && a.z == b.z;
 }
 
-constexpr double dot(const Vec3& a, const Vec3& b) {
+RODSEA_HD constexpr double dot(const Vec3& a, const Vec3& b) {
     return a.x * b.x + a.y * b.y + a.z * b.z;
 }
-constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
+RODSEA_HD constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-constexpr double norm2(const Vec3& a) {
+RODSEA_HD constexpr double norm2(const Vec3& a) {
     return dot(a, a);
 }
-inline double norm(const Vec3& a) {
+RODSEA_HD inline double norm(const Vec3& a) {
     return std::sqrt(norm2(a));
 }
-inline Vec3 normalized(const Vec3& a) {
+RODSEA_HD inline Vec3 normalized(const Vec3& a) {
     return a / norm(a);
 }
 

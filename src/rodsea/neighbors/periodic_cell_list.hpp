@@ -12,30 +12,10 @@
 #include <span>
 #include <vector>
 
+#include "rodsea/math/periodic_box.hpp"
 #include "rodsea/math/vec3.hpp"
 
 namespace rodsea {
-
-struct PeriodicBox2D {
-    double lx = 0.0, ly = 0.0;
-
-    // x mapped into [0, side): exactly, including the x just below 0 that rounds to side.
-    // Without a division for x within one side of the box, the usual case (a body moved
-    // micrometres in a step): free flight wraps every body every step.
-    static double wrap(double x, double side) {
-        if (x >= 0.0 && x < side) return x;
-        if (x >= side && x < 2.0 * side) return x - side;  // exact (Sterbenz), so below side
-        const double w = x < 0.0 && x >= -side ? x + side : x - side * std::floor(x / side);
-        return w < side ? w : 0.0;
-    }
-
-    // Minimum-image difference in x and y; z untouched.
-    Vec3 minimum_image(Vec3 d) const {
-        d.x -= lx * std::nearbyint(d.x / lx);
-        d.y -= ly * std::nearbyint(d.y / ly);
-        return d;
-    }
-};
 
 class PeriodicCellList2D {
   public:

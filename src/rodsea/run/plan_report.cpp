@@ -7,7 +7,7 @@
 #include <string>
 
 #include "rodsea/builder/initial_state.hpp"
-#include "rodsea/engine/contact.hpp"
+#include "rodsea/engine/physics/contact.hpp"
 #include "rodsea/run/progress.hpp"
 
 namespace rodsea {

@@ -280,9 +280,7 @@ int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out,
                      << ", S = " << built.nematic_order.at(s) << ";";
         out << line.str() << "\n";
     }
-    Simulation sim(plan.engine, std::move(bodies));
-    sim.set_threads(plan.control.threads);
-
+    Simulation sim(plan.engine, std::move(bodies), {.threads = plan.control.threads});
     write_file_atomically(dir / kConfigFile, plan.config_toml);
     const SeriesRecorder columns(plan.engine);
     TrajectoryFile trajectory =
@@ -341,8 +339,8 @@ int resume_run(const std::filesystem::path& dir, const RunOptions& options, std:
             << plan.total_steps() << " (t = " << static_cast<double>(c.step) * plan.engine.dt
             << " s), " << c.frames_written << " frames kept\n";
     }
-    Simulation sim = Simulation::resume(plan.engine, std::move(c.bodies), c.step);
-    sim.set_threads(plan.control.threads);
+    Simulation sim = Simulation::resume(plan.engine, std::move(c.bodies), c.step,
+                                        {.threads = plan.control.threads});
     SeriesCsv csv = SeriesCsv::reopen(dir / kSeriesFile, c.frames_written);
     TrajectoryFile trajectory =
         TrajectoryFile::reopen(dir / kTrajectoryFile, c.frames_written, columns.columns());

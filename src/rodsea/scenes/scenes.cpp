@@ -5,7 +5,7 @@
 #include <numbers>
 #include <string>
 
-#include "rodsea/engine/plates.hpp"
+#include "rodsea/engine/physics/plates.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/random.hpp"
 
@@ -25,7 +25,7 @@ double resting_height(const Shape& shape, const Quat& orientation, const DrivePa
     double lowest = 0.0;  // lowest point of the body relative to its centre of mass
     for (size_t s = 0; s < shape.sphere_count(); ++s)
         lowest = std::min(lowest, rotate(orientation, shape.offsets[s]).z - shape.radii[s]);
-    return plate_state(drive, 0.0).base_z - lowest + clearance;
+    return physics::plate_state(drive.motion(), 0.0).base_z - lowest + clearance;
 }
 
 Scene single_body(const Species& species, double box_side, double tilt) {

@@ -1,5 +1,5 @@
 #pragma once
-// Stage 4 of the step: impulses on every approaching contact, swept Gauss–Seidel style until
+// Stage 4 of the CPU step: impulses on every approaching contact, swept Gauss–Seidel style until
 // no contact approaches or the sweep cap is reached. After the first sweep only contacts with
 // a body that changed since they were last checked are looked at again.
 //
@@ -12,25 +12,26 @@
 #include <vector>
 
 #include "rodsea/engine/body_state.hpp"
-#include "rodsea/engine/contact.hpp"
-#include "rodsea/engine/parameters.hpp"
+#include "rodsea/engine/physics/contact.hpp"
+#include "rodsea/engine/physics/step_context.hpp"
+#include "rodsea/engine/species_table.hpp"
+#include "rodsea/math/mat3.hpp"
 
-namespace rodsea {
+namespace rodsea::cpu {
 
-// Inverse mass and world-frame inverse inertia of bodies for the current orientations.
-struct InverseInertia {
-    std::vector<double> inv_mass;
-    std::vector<Mat3> inv_inertia;  // R I⁻¹ Rᵀ
-
-    // Every body.
-    void update(const BodyState& bodies, const std::vector<Species>& species, int threads = 1);
-    // Only the bodies in `contacts`, the only ones the resolver reads: in a vibrated monolayer a
-    // step has a contact for a few per cent of the bodies. The others keep stale values.
-    void update_for(const std::vector<Contact>& contacts, const BodyState& bodies,
-                    const std::vector<Species>& species);
+// Inverse mass and world-frame inverse inertia R I⁻¹ Rᵀ of the bodies in contact, for their
+// current orientations: in a vibrated monolayer a step has a contact for a few per cent of the
+// bodies, and the resolver reads no others. The others keep stale values.
+class InverseInertia {
+  public:
+    void update_for(const std::vector<Contact>& contacts, BodyView bodies,
+                    const SpeciesTable& species);
+    double inv_mass(std::uint32_t b) const { return inv_mass_[b]; }
+    const Mat3& inv_inertia(std::uint32_t b) const { return inv_inertia_[b]; }
 
   private:
-    void compute(const BodyState& bodies, const std::vector<Species>& species, size_t b);
+    std::vector<double> inv_mass_;
+    std::vector<Mat3> inv_inertia_;
     std::vector<std::uint64_t> stamp_;  // the update_for() call that last computed each body
     std::uint64_t calls_ = 0;
 };
@@ -60,18 +61,16 @@ struct ResolutionStats {
 class ContactResolver {
   public:
     // Appends the plate hits to `hits`, island by island: the same list on any number of threads.
-    ResolutionStats resolve(const std::vector<Contact>& contacts, BodyState& bodies,
-                            const InverseInertia& inertia, double plate_velocity_z,
-                            const EngineParameters& params, std::vector<PlateHit>& hits,
-                            int threads = 1);
+    ResolutionStats resolve(const std::vector<Contact>& contacts, BodyView bodies,
+                            const InverseInertia& inertia, const StepContext& step,
+                            std::vector<PlateHit>& hits, int threads);
     size_t islands() const { return island_count_; }  // of the last resolve()
 
   private:
     void find_islands(const std::vector<Contact>& contacts, size_t bodies);
     ResolutionStats sweep_island(size_t island, const std::vector<Contact>& contacts,
-                                 BodyState& bodies, const InverseInertia& inertia,
-                                 double plate_velocity_z, const EngineParameters& params,
-                                 std::vector<PlateHit>& hits);
+                                 BodyView bodies, const InverseInertia& inertia,
+                                 const StepContext& step, std::vector<PlateHit>& hits);
 
     std::vector<int> last_changed_;  // per body: the last sweep that gave it an impulse
     // Islands, rebuilt every step: union–find over bodies, then the contacts of each island in
@@ -87,4 +86,4 @@ class ContactResolver {
     size_t island_count_ = 0;
 };
 
-}  // namespace rodsea
+}  // namespace rodsea::cpu

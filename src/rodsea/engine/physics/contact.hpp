@@ -1,15 +1,23 @@
 #pragma once
+// A contact found in a step: two touching spheres of different bodies, or a sphere poking
+// through a plate, with what its impulse needs.
 #include <cstdint>
 #include <limits>
 
+#include "rodsea/math/hostdevice.hpp"
 #include "rodsea/math/vec3.hpp"
 
 namespace rodsea {
 
+// Coefficients of one kind of collision (MODEL.md §3, paper Table S2).
+struct ContactCoefficients {
+    double friction = 0.05;     // μ, Coulomb, [0, 10]
+    double restitution = 0.30;  // e, normal, [0, 1]
+};
+
 inline constexpr std::uint32_t kBasePlate = std::numeric_limits<std::uint32_t>::max();
 inline constexpr std::uint32_t kLidPlate = kBasePlate - 1;
 
-// One touching pair of spheres (or a sphere and a plate) found in this step.
 struct Contact {
     std::uint32_t a = 0;  // body
     std::uint32_t b = 0;  // body, or kBasePlate / kLidPlate
@@ -20,7 +28,7 @@ struct Contact {
     double restitution = 0.0;
     double overlap = 0.0;  // mm
 
-    bool with_plate() const { return b >= kLidPlate; }
+    RODSEA_HD bool with_plate() const { return b >= kLidPlate; }
 };
 
 }  // namespace rodsea

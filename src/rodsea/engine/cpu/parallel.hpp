@@ -8,7 +8,7 @@
 #include <omp.h>
 #endif
 
-namespace rodsea {
+namespace rodsea::cpu {
 
 inline int team_size() {
 #ifdef _OPENMP
@@ -35,4 +35,4 @@ inline Chunk chunk_of(std::size_t n, int t, int parts) {
     return {n * i / p, n * (i + 1) / p};
 }
 
-}  // namespace rodsea
+}  // namespace rodsea::cpu

@@ -1,10 +1,10 @@
-#include "rodsea/engine/plate_projection.hpp"
+#include "rodsea/engine/cpu/plate_projection.hpp"
 
 #include <algorithm>
 
-namespace rodsea {
+namespace rodsea::cpu {
 
-void PlateProjection::apply(const std::vector<Contact>& contacts, BodyState& bodies,
+void PlateProjection::apply(const std::vector<Contact>& contacts, BodyView bodies,
                             SphereTable& spheres) {
     base_depth_.resize(bodies.size(), 0.0);
     lid_depth_.resize(bodies.size(), 0.0);
@@ -26,4 +26,4 @@ void PlateProjection::apply(const std::vector<Contact>& contacts, BodyState& bod
     }
 }
 
-}  // namespace rodsea
+}  // namespace rodsea::cpu

@@ -1,5 +1,5 @@
 #pragma once
-// Stage 3 of the step: every sphere–sphere overlap between different bodies (minimum image in
+// Stage 3 of the CPU step: every sphere–sphere overlap between different bodies (minimum image in
 // x, y) and every sphere poking through the base or the lid. Contact points sit in the middle
 // of the overlap. Sphere pairs come from a Verlet list. Body contacts are listed in the order
 // of their (sphere i < sphere j) pairs, then plate contacts in sphere order, so the list is a
@@ -8,13 +8,14 @@
 #include <limits>
 #include <vector>
 
-#include "rodsea/engine/contact.hpp"
-#include "rodsea/engine/parameters.hpp"
-#include "rodsea/engine/plates.hpp"
-#include "rodsea/engine/sphere_table.hpp"
+#include "rodsea/engine/body_state.hpp"
+#include "rodsea/engine/cpu/sphere_table.hpp"
+#include "rodsea/engine/physics/contact.hpp"
+#include "rodsea/engine/physics/step_context.hpp"
+#include "rodsea/engine/species_table.hpp"
 #include "rodsea/neighbors/verlet_pair_list.hpp"
 
-namespace rodsea {
+namespace rodsea::cpu {
 
 struct ContactSearchStats {
     size_t body_contacts = 0;
@@ -32,9 +33,9 @@ class ContactFinder {
   public:
     // `travel`: a bound on how far any sphere moved in the plane since the last call (mm), for
     // the Verlet list (VerletPairList::update).
-    ContactSearchStats find(const SphereTable& spheres, const BodyState& bodies,
-                            const EngineParameters& params, const PlateState& plates,
-                            std::vector<Contact>& out, int threads = 1,
+    ContactSearchStats find(const SphereTable& spheres, BodyView bodies,
+                            const SpeciesTable& species, const StepContext& step,
+                            std::vector<Contact>& out, int threads,
                             double travel = std::numeric_limits<double>::infinity());
     std::uint64_t pair_list_builds() const { return pairs_.builds(); }
 
@@ -45,4 +46,4 @@ class ContactFinder {
     std::vector<double> max_overlap_;
 };
 
-}  // namespace rodsea
+}  // namespace rodsea::cpu

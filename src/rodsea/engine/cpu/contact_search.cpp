@@ -1,18 +1,18 @@
-#include "rodsea/engine/contact_search.hpp"
+#include "rodsea/engine/cpu/contact_search.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "rodsea/engine/parallel.hpp"
+#include "rodsea/engine/cpu/parallel.hpp"
+#include "rodsea/engine/physics/contact_geometry.hpp"
 
-namespace rodsea {
+namespace rodsea::cpu {
 
-ContactSearchStats ContactFinder::find(const SphereTable& spheres, const BodyState& bodies,
-                                       const EngineParameters& params, const PlateState& plates,
+ContactSearchStats ContactFinder::find(const SphereTable& spheres, BodyView bodies,
+                                       const SpeciesTable& species, const StepContext& step,
                                        std::vector<Contact>& out, int threads, double travel) {
     ContactSearchStats stats;
-    const PeriodicBox2D box{params.box.lx, params.box.ly};
-    pairs_.update(spheres.position, spheres.radius, spheres.body, box, travel);
+    pairs_.update(spheres.position, spheres.radius, spheres.body, step.box, travel);
     const auto slots = static_cast<size_t>(std::max(threads, 1));
     body_chunks_.resize(slots);
     plate_chunks_.resize(slots);
@@ -22,24 +22,13 @@ ContactSearchStats ContactFinder::find(const SphereTable& spheres, const BodySta
         pairs_.for_each_pair(
             spheres.position, range.begin, range.end,
             [&](std::uint32_t i, std::uint32_t j, const Vec3& d) {
-                const double reach = spheres.radius[i] + spheres.radius[j];
-                const double d2 = norm2(d);
-                if (d2 >= reach * reach || d2 == 0.0) return;
                 const std::uint32_t bi = spheres.body[i], bj = spheres.body[j];
-                const double dist = std::sqrt(d2);
                 Contact c;
-                c.a = bi;
-                c.b = bj;
-                c.normal = d / dist;
-                c.overlap = reach - dist;
-                c.arm_a = (spheres.position[i] - bodies.position[bi]) -
-                          (spheres.radius[i] - 0.5 * c.overlap) * c.normal;
-                c.arm_b = (spheres.position[j] - bodies.position[bj]) +
-                          (spheres.radius[j] - 0.5 * c.overlap) * c.normal;
-                const ContactCoefficients& k =
-                    params.pair_coefficients(bodies.species[bi], bodies.species[bj]);
-                c.friction = k.friction;
-                c.restitution = k.restitution;
+                if (!physics::sphere_sphere_contact(
+                        d, bi, spheres.position[i], spheres.radius[i], bodies.position[bi], bj,
+                        spheres.position[j], spheres.radius[j], bodies.position[bj],
+                        species.pair_coefficients(bodies.species[bi], bodies.species[bj]), c))
+                    return;
                 deepest =
                     std::max(deepest, c.overlap / std::min(spheres.radius[i], spheres.radius[j]));
                 found.push_back(c);
@@ -50,23 +39,16 @@ ContactSearchStats ContactFinder::find(const SphereTable& spheres, const BodySta
         const auto add = [&](size_t s, bool base, double overlap) {
             const std::uint32_t b = spheres.body[s];
             const double r = spheres.radius[s];
-            const ContactCoefficients& k = params.species[bodies.species[b]].plate;
-            Contact c;
-            c.a = b;
-            c.b = base ? kBasePlate : kLidPlate;
-            c.normal = {0.0, 0.0, base ? 1.0 : -1.0};
-            c.overlap = overlap;
-            c.arm_a = (spheres.position[s] - bodies.position[b]) - (r - 0.5 * overlap) * c.normal;
-            c.friction = k.friction;
-            c.restitution = k.restitution;
+            found.push_back(physics::plate_contact(b, spheres.position[s], r, bodies.position[b],
+                                                   base, overlap,
+                                                   species.plate[bodies.species[b]]));
             deepest = std::max(deepest, overlap / r);
-            found.push_back(c);
         };
         for (size_t s = range.begin; s < range.end; ++s) {
-            const double z = spheres.position[s].z, r = spheres.radius[s];
-            const double below = plates.base_z - (z - r), above = (z + r) - plates.lid_z;
-            if (below > 0.0) add(s, true, below);
-            if (above > 0.0) add(s, false, above);
+            const physics::PlateOverlaps o =
+                physics::plate_overlaps(spheres.position[s].z, spheres.radius[s], step.plates);
+            if (o.base > 0.0) add(s, true, o.base);
+            if (o.lid > 0.0) add(s, false, o.lid);
         }
     };
 
@@ -113,4 +95,4 @@ ContactSearchStats ContactFinder::find(const SphereTable& spheres, const BodySta
     return stats;
 }
 
-}  // namespace rodsea
+}  // namespace rodsea::cpu

@@ -1,5 +1,6 @@
 #pragma once
-// Stage 4b of the step: move each body that sank into a plate back out of it, after the impulses.
+// Stage 4b of the CPU step: move each body that sank into a plate back out of it, after the
+// impulses.
 //
 // Time-driven stepping lets a sphere pressed against an accelerating plate sink by about
 // ½ (a + g) dt² each step; the impulses stop the approach but nothing undoes the depth, so over a
@@ -11,15 +12,15 @@
 #include <vector>
 
 #include "rodsea/engine/body_state.hpp"
-#include "rodsea/engine/contact.hpp"
-#include "rodsea/engine/sphere_table.hpp"
+#include "rodsea/engine/cpu/sphere_table.hpp"
+#include "rodsea/engine/physics/contact.hpp"
 
-namespace rodsea {
+namespace rodsea::cpu {
 
 class PlateProjection {
   public:
     // Keeps `spheres` in step with the moved bodies. Costs the plate contacts, not the bodies.
-    void apply(const std::vector<Contact>& contacts, BodyState& bodies, SphereTable& spheres);
+    void apply(const std::vector<Contact>& contacts, BodyView bodies, SphereTable& spheres);
 
   private:
     // Deepest overlap of each body with the base and with the lid in this step (mm), zero between
@@ -29,4 +30,4 @@ class PlateProjection {
     std::vector<std::uint32_t> touched_;  // bodies with a plate contact, each once
 };
 
-}  // namespace rodsea
+}  // namespace rodsea::cpu

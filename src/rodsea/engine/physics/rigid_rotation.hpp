@@ -1,34 +1,25 @@
-#include "rodsea/engine/free_flight.hpp"
-
+#pragma once
+// Torque-free rotation of a rigid body for one time step: world angular momentum L is kept
+// exactly. Axisymmetric and spherical bodies (every rod and bead) follow the exact solution,
+// regular precession; asymmetric bodies use the symmetric splitting into the exact rotations
+// about the three principal axes (energy error O(dt²), bounded).
 #include <algorithm>
-#include <array>
 #include <cmath>
 
-#include "rodsea/neighbors/periodic_cell_list.hpp"
+#include "rodsea/math/hostdevice.hpp"
+#include "rodsea/math/quat.hpp"
 
-namespace rodsea {
-
-namespace {
-
-constexpr double kSameMoment = 1e-12;  // relative: moments closer than this are equal
-
-bool same(double a, double b) {
-    return std::abs(a - b) <= kSameMoment * std::max(a, b);
-}
-
-Vec3 unit_axis(int k) {
-    return k == 0 ? Vec3{1, 0, 0} : (k == 1 ? Vec3{0, 1, 0} : Vec3{0, 0, 1});
-}
+namespace rodsea::physics {
 
 // cos h and sin(h) / h from h² by their Taylor series, for the small angles of one step (a body
 // spinning at 100 rad/s turns by 1e-4 rad in 1.25 µs): a few multiplications against ~20 ns for
 // the library's sin and cos. Valid for h² <= kSeriesLimit (|h| <= 0.02), where the first omitted
 // terms, h¹⁰/10! and h¹⁰/11!, are < 1e-17 of the result.
-constexpr double kSeriesLimit = 4e-4;
+inline constexpr double kSeriesLimit = 4e-4;
 struct HalfAngle {
     double cos, sinc;
 };
-HalfAngle half_angle_series(double h2) {
+RODSEA_HD inline HalfAngle half_angle_series(double h2) {
     constexpr double k2 = 0.5, k12 = 1.0 / 12.0, k30 = 1.0 / 30.0, k56 = 1.0 / 56.0;
     constexpr double k6 = 1.0 / 6.0, k20 = 1.0 / 20.0, k42 = 1.0 / 42.0, k72 = 1.0 / 72.0;
     return {1.0 - h2 * k2 * (1.0 - h2 * k12 * (1.0 - h2 * k30 * (1.0 - h2 * k56))),
@@ -36,7 +27,7 @@ HalfAngle half_angle_series(double h2) {
 }
 
 // Quat::from_axis_angle, by the series where the angle is small enough.
-Quat axis_angle(const Vec3& unit_axis, double angle) {
+RODSEA_HD inline Quat axis_angle(const Vec3& unit_axis, double angle) {
     const double h = 0.5 * angle, h2 = h * h;
     if (h2 > kSeriesLimit) return Quat::from_axis_angle(unit_axis, angle);
     const HalfAngle a = half_angle_series(h2);
@@ -44,9 +35,13 @@ Quat axis_angle(const Vec3& unit_axis, double angle) {
     return {a.cos, unit_axis.x * s, unit_axis.y * s, unit_axis.z * s};
 }
 
+RODSEA_HD inline Vec3 unit_axis(int k) {
+    return k == 0 ? Vec3{1, 0, 0} : (k == 1 ? Vec3{0, 1, 0} : Vec3{0, 0, 1});
+}
+
 // q · (c, s e_K): a turn about body axis K, without the products with zero.
 template <int K>
-Quat turned_about_body_axis(const Quat& q, double c, double s) {
+RODSEA_HD Quat turned_about_body_axis(const Quat& q, double c, double s) {
     if constexpr (K == 0)
         return {q.w * c - q.x * s, q.w * s + q.x * c, q.y * c + q.z * s, q.z * c - q.y * s};
     else if constexpr (K == 1)
@@ -55,14 +50,13 @@ Quat turned_about_body_axis(const Quat& q, double c, double s) {
         return {q.w * c - q.z * s, q.x * c + q.y * s, q.y * c - q.x * s, q.w * s + q.z * c};
 }
 
-Quat unit(const Quat& q) {
+RODSEA_HD inline Quat unit(const Quat& q) {
     const double inv = 1.0 / std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
     return {q.w * inv, q.x * inv, q.y * inv, q.z * inv};
 }
 
-// What torque-free rotation needs of a species' moments, worked out once per species and call:
-// a step then costs no division but one (the norm of L). Free flight was half of the step's time
-// before, most of it in divisions.
+// What torque-free rotation needs of a body's principal moments, worked out once per species:
+// a step then costs no division but one (the norm of L).
 struct Rotor {
     Vec3 inertia;   // principal moments
     Vec3 inverse;   // their inverses
@@ -72,17 +66,13 @@ struct Rotor {
     double largest_inverse = 0.0;
 };
 
-// An upper bound on |ω|² over a torque-free step: |ω|² itself for a symmetric body (regular
-// precession keeps it), (|L| / I_min)² otherwise (|L| is kept, ω = I⁻¹ L in the body frame).
-double spin_bound2(const Rotor& rotor, const Quat& q, const Vec3& spin) {
-    if (rotor.axis >= 0) return norm2(spin);
-    const Vec3 w = rotate(conjugate(q), spin);
-    const Vec3& i = rotor.inertia;
-    return norm2(Vec3{i.x * w.x, i.y * w.y, i.z * w.z}) * rotor.largest_inverse *
-           rotor.largest_inverse;
-}
+// Moments closer than this, relative, are equal.
+inline constexpr double kSameMoment = 1e-12;
 
-Rotor make_rotor(const Vec3& inertia) {
+inline Rotor make_rotor(const Vec3& inertia) {
+    const auto same = [](double a, double b) {
+        return std::abs(a - b) <= kSameMoment * std::max(a, b);
+    };
     Rotor r;
     r.inertia = inertia;
     r.inverse = {1.0 / inertia.x, 1.0 / inertia.y, 1.0 / inertia.z};
@@ -101,8 +91,18 @@ Rotor make_rotor(const Vec3& inertia) {
     return r;
 }
 
+// An upper bound on |ω|² over a torque-free step: |ω|² itself for a symmetric body (regular
+// precession keeps it), (|L| / I_min)² otherwise (|L| is kept, ω = I⁻¹ L in the body frame).
+RODSEA_HD inline double spin_bound2(const Rotor& rotor, const Quat& q, const Vec3& spin) {
+    if (rotor.axis >= 0) return norm2(spin);
+    const Vec3 w = rotate(conjugate(q), spin);
+    const Vec3& i = rotor.inertia;
+    return norm2(Vec3{i.x * w.x, i.y * w.y, i.z * w.z}) * rotor.largest_inverse *
+           rotor.largest_inverse;
+}
+
 // Exact flow of H_k = L_k² / 2I_k: the body turns about its own axis k by L_k h / I_k.
-void principal_subflow(Quat& q, Vec3& l_body, int k, double inverse_k, double h) {
+RODSEA_HD inline void principal_subflow(Quat& q, Vec3& l_body, int k, double inverse_k, double h) {
     const double angle = l_body[k] * h * inverse_k;
     q = q * axis_angle(unit_axis(k), angle);
     // The world vector L is fixed, so its body components turn the other way.
@@ -110,7 +110,7 @@ void principal_subflow(Quat& q, Vec3& l_body, int k, double inverse_k, double h)
 }
 
 // Any body, with the library's sin, cos, square roots and divisions.
-void rotate_general(Quat& q, Vec3& spin, const Rotor& rotor, double dt) {
+RODSEA_HD inline void rotate_general(Quat& q, Vec3& spin, const Rotor& rotor, double dt) {
     const Vec3 w_body = rotate(conjugate(q), spin);
     const Vec3& i = rotor.inertia;
     const Vec3 l_body{i.x * w_body.x, i.y * w_body.y, i.z * w_body.z};
@@ -139,14 +139,14 @@ void rotate_general(Quat& q, Vec3& spin, const Rotor& rotor, double dt) {
 }
 
 // The same regular precession as rotate_general for an axisymmetric body with symmetry axis K
-// (every rod and bead: over 60 % of the step went to rotate_general's square roots, divisions
-// and quaternion rotations). The precession about L by φ = |L| dt / I_t is the quaternion
+// (every rod and bead: rotate_general's square roots, divisions and quaternion rotations were
+// over 60 % of the step). The precession about L by φ = |L| dt / I_t is the quaternion
 // (cos(φ/2), L sin(φ/2) / |L|), and both entries are even series in |L| dt / 2I_t: no square
 // root of |L|², no division by it. ω = L / I_t + (1/I_a − 1/I_t) L_a u follows from L and the new
 // axis u without rotating back into the body frame. Returns false, changing nothing, when an
 // angle is too large for the series; rotate_general then does it.
 template <int K>
-bool rotate_symmetric(Quat& q, Vec3& spin, const Rotor& rotor, double dt) {
+RODSEA_HD bool rotate_symmetric(Quat& q, Vec3& spin, const Rotor& rotor, double dt) {
     const Vec3 u = rotated_axis(q, K);
     const double axial_spin = dot(spin, u);
     const double transverse = rotor.inertia[K == 0 ? 1 : 0];
@@ -170,7 +170,8 @@ bool rotate_symmetric(Quat& q, Vec3& spin, const Rotor& rotor, double dt) {
     return true;
 }
 
-void rotate_free(Quat& q, Vec3& spin, const Rotor& rotor, double dt) {
+// One step of torque-free rotation: the fast path where it applies, the general one otherwise.
+RODSEA_HD inline void rotate_free(Quat& q, Vec3& spin, const Rotor& rotor, double dt) {
     switch (rotor.axis) {
         case 0:
             if (rotate_symmetric<0>(q, spin, rotor, dt)) return;
@@ -187,58 +188,4 @@ void rotate_free(Quat& q, Vec3& spin, const Rotor& rotor, double dt) {
     rotate_general(q, spin, rotor, dt);
 }
 
-}  // namespace
-
-void rotate_free(Quat& q, Vec3& spin, const Vec3& inertia, double dt) {
-    rotate_free(q, spin, make_rotor(inertia), dt);
-}
-
-double advance_free_flight(BodyState& bodies, const std::vector<Species>& species, const Box& box,
-                           double gravity, double dt, int threads) {
-    // Per species: its rotor and the farthest sphere centre from its centre of mass (mm). On the
-    // stack for the few species a run has, so that a step allocates nothing.
-    struct Motion {
-        Rotor rotor;
-        double reach2 = 0.0;  // mm²
-    };
-    constexpr size_t kFewSpecies = 8;
-    std::array<Motion, kFewSpecies> few;
-    std::vector<Motion> many(species.size() > kFewSpecies ? species.size() : 0);
-    Motion* motion = many.empty() ? few.data() : many.data();
-    for (size_t k = 0; k < species.size(); ++k) {
-        motion[k].rotor = make_rotor(species[k].shape.principal_inertia);
-        for (const Vec3& offset : species[k].shape.offsets)
-            motion[k].reach2 = std::max(motion[k].reach2, norm2(offset));
-    }
-
-    const double drop = 0.5 * gravity * dt * dt;
-    const auto n = static_cast<std::ptrdiff_t>(bodies.size());
-    // The largest squared speed in the plane of a centre of mass, and of a sphere about it
-    // (mm²/s²): the sum of their roots bounds every sphere centre's speed in the plane, with no
-    // square root per body.
-    double fastest_drift2 = 0.0, fastest_turn2 = 0.0;
-    // clang-format off
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1) \
-    reduction(max : fastest_drift2, fastest_turn2)
-    // clang-format on
-    for (std::ptrdiff_t i = 0; i < n; ++i) {
-        Vec3& x = bodies.position[i];
-        Vec3& v = bodies.velocity[i];
-        Vec3& w = bodies.spin[i];
-        const Motion& m = motion[bodies.species[i]];
-        // Gravity does not act in the plane: v_xy and the bound on |ω| bound every sphere
-        // centre's speed in the plane during this step.
-        fastest_drift2 = std::max(fastest_drift2, v.x * v.x + v.y * v.y);
-        fastest_turn2 =
-            std::max(fastest_turn2, spin_bound2(m.rotor, bodies.orientation[i], w) * m.reach2);
-        x += dt * v;
-        x.z -= drop;
-        v.z -= gravity * dt;
-        x.x = PeriodicBox2D::wrap(x.x, box.lx);
-        x.y = PeriodicBox2D::wrap(x.y, box.ly);
-        rotate_free(bodies.orientation[i], w, m.rotor, dt);
-    }
-    return std::sqrt(fastest_drift2) + std::sqrt(fastest_turn2);
-}
-
-}  // namespace rodsea
+}  // namespace rodsea::physics

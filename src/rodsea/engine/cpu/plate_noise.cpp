@@ -1,26 +1,18 @@
-#include "rodsea/engine/plate_noise.hpp"
+#include "rodsea/engine/cpu/plate_noise.hpp"
 
 #include <algorithm>
 
-#include "rodsea/engine/parallel.hpp"
-#include "rodsea/random.hpp"
+#include "rodsea/engine/cpu/parallel.hpp"
+#include "rodsea/engine/physics/plate_noise.hpp"
 
-namespace rodsea {
-
-double noise_sign(std::uint64_t seed, std::uint64_t step, std::uint32_t body, std::uint32_t plate) {
-    std::uint64_t h = splitmix64(seed);
-    h = splitmix64(h ^ step);
-    h = splitmix64(h ^ ((static_cast<std::uint64_t>(body) << 1) | (plate == kBasePlate ? 0 : 1)));
-    return (h >> 63) ? 1.0 : -1.0;
-}
+namespace rodsea::cpu {
 
 namespace {
 
 // The kicks of hits[begin, end), sorted by body and plate, with `begin` and `end` on body
 // boundaries.
-size_t kick(const std::vector<PlateHit>& hits, size_t begin, size_t end, BodyState& bodies,
-            const std::vector<Species>& species, double epsilon, std::uint64_t seed,
-            std::uint64_t step) {
+size_t kick(const std::vector<PlateHit>& hits, size_t begin, size_t end, BodyView bodies,
+            const SpeciesTable& species, const StepContext& step) {
     size_t kicks = 0;
     for (size_t i = begin; i < end;) {
         const PlateHit& first = hits[i];
@@ -28,9 +20,10 @@ size_t kick(const std::vector<PlateHit>& hits, size_t begin, size_t end, BodySta
         size_t j = i;
         for (; j < end && hits[j].body == first.body && hits[j].plate == first.plate; ++j)
             speed = std::max(speed, hits[j].approach_speed);
-        if (species[bodies.species[first.body]].kind == BodyKind::polar_rod) {
+        if (species.polar[bodies.species[first.body]]) {
             bodies.spin[first.body].z +=
-                epsilon * speed * noise_sign(seed, step, first.body, first.plate);
+                step.noise_epsilon * speed *
+                physics::noise_sign(step.seed, step.step, first.body, first.plate);
             ++kicks;
         }
         i = j;
@@ -43,10 +36,9 @@ constexpr size_t kHitsWorthThreads = 1024;
 
 }  // namespace
 
-size_t apply_plate_noise(std::vector<PlateHit>& hits, BodyState& bodies,
-                         const std::vector<Species>& species, double epsilon, std::uint64_t seed,
-                         std::uint64_t step, int threads) {
-    if (epsilon == 0.0 || hits.empty()) return 0;
+size_t apply_plate_noise(std::vector<PlateHit>& hits, BodyView bodies, const SpeciesTable& species,
+                         const StepContext& step, int threads) {
+    if (step.noise_epsilon == 0.0 || hits.empty()) return 0;
     std::sort(hits.begin(), hits.end(), [](const PlateHit& x, const PlateHit& y) {
         return x.body != y.body ? x.body < y.body : x.plate < y.plate;
     });
@@ -62,10 +54,9 @@ size_t apply_plate_noise(std::vector<PlateHit>& hits, BodyState& bodies,
 #pragma omp parallel num_threads(team) if (team > 1) reduction(+ : kicks)
     {
         const Chunk c = chunk_of(hits.size(), thread_index(), team_size());
-        kicks += kick(hits, body_boundary(c.begin), body_boundary(c.end), bodies, species, epsilon,
-                      seed, step);
+        kicks += kick(hits, body_boundary(c.begin), body_boundary(c.end), bodies, species, step);
     }
     return kicks;
 }
 
-}  // namespace rodsea
+}  // namespace rodsea::cpu

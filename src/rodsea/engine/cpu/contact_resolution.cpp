@@ -1,55 +1,31 @@
-#include "rodsea/engine/contact_resolution.hpp"
+#include "rodsea/engine/cpu/contact_resolution.hpp"
 
 #include <algorithm>
 #include <limits>
 
-#include "rodsea/engine/impulse.hpp"
+#include "rodsea/engine/physics/impulse.hpp"
 
-namespace rodsea {
+namespace rodsea::cpu {
 
-void InverseInertia::compute(const BodyState& bodies, const std::vector<Species>& species,
-                             size_t b) {
-    const Shape& shape = species[bodies.species[b]].shape;
-    const Mat3 r = to_matrix(bodies.orientation[b]);
-    const Vec3& i = shape.principal_inertia;
-    inv_mass[b] = 1.0 / shape.mass;
-    inv_inertia[b] = r * Mat3::diagonal({1.0 / i.x, 1.0 / i.y, 1.0 / i.z}) * transpose(r);
-}
-
-void InverseInertia::update(const BodyState& bodies, const std::vector<Species>& species,
-                            int threads) {
-    inv_mass.resize(bodies.size());
-    inv_inertia.resize(bodies.size());
-    const auto n = static_cast<std::ptrdiff_t>(bodies.size());
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-    for (std::ptrdiff_t b = 0; b < n; ++b)
-        compute(bodies, species, static_cast<size_t>(b));
-}
-
-void InverseInertia::update_for(const std::vector<Contact>& contacts, const BodyState& bodies,
-                                const std::vector<Species>& species) {
-    inv_mass.resize(bodies.size());
-    inv_inertia.resize(bodies.size());
+void InverseInertia::update_for(const std::vector<Contact>& contacts, BodyView bodies,
+                                const SpeciesTable& species) {
+    inv_mass_.resize(bodies.size());
+    inv_inertia_.resize(bodies.size());
     stamp_.resize(bodies.size(), 0);
     ++calls_;
     const auto need = [&](std::uint32_t b) {
         if (stamp_[b] == calls_) return;
         stamp_[b] = calls_;
-        compute(bodies, species, b);
+        const std::uint32_t k = bodies.species[b];
+        inv_mass_[b] = species.inverse_mass[k];
+        inv_inertia_[b] =
+            physics::world_inverse_inertia(bodies.orientation[b], species.inverse_inertia[k]);
     };
     for (const Contact& c : contacts) {
         need(c.a);
         if (!c.with_plate()) need(c.b);
     }
 }
-
-namespace {
-
-Vec3 contact_point_velocity(const BodyState& bodies, std::uint32_t b, const Vec3& arm) {
-    return bodies.velocity[b] + cross(bodies.spin[b], arm);
-}
-
-}  // namespace
 
 void ContactResolver::find_islands(const std::vector<Contact>& contacts, size_t bodies) {
     constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
@@ -92,23 +68,23 @@ void ContactResolver::find_islands(const std::vector<Contact>& contacts, size_t 
 }
 
 ResolutionStats ContactResolver::sweep_island(size_t island, const std::vector<Contact>& contacts,
-                                              BodyState& bodies, const InverseInertia& inertia,
-                                              double plate_velocity_z,
-                                              const EngineParameters& params,
+                                              BodyView bodies, const InverseInertia& inertia,
+                                              const StepContext& step,
                                               std::vector<PlateHit>& hits) {
     ResolutionStats stats;
-    const Vec3 plate_velocity{0.0, 0.0, plate_velocity_z};
+    const Vec3 plate_velocity{0.0, 0.0, step.plates.velocity_z};
     const Mat3 zero = Mat3::zero();
     const auto relative_velocity = [&](const Contact& c) {
-        const Vec3 va = contact_point_velocity(bodies, c.a, c.arm_a);
-        return c.with_plate() ? va - plate_velocity
-                              : va - contact_point_velocity(bodies, c.b, c.arm_b);
+        const Vec3 va = physics::point_velocity(bodies.velocity[c.a], bodies.spin[c.a], c.arm_a);
+        return c.with_plate()
+                   ? va - plate_velocity
+                   : va - physics::point_velocity(bodies.velocity[c.b], bodies.spin[c.b], c.arm_b);
     };
     const std::uint32_t* first = island_contacts_.data() + island_start_[island];
     const std::uint32_t* last = island_contacts_.data() + island_start_[island + 1];
 
     bool any_impulse = true;
-    while (any_impulse && stats.sweeps < params.max_sweeps) {
+    while (any_impulse && stats.sweeps < step.max_sweeps) {
         ++stats.sweeps;
         const int sweep = stats.sweeps;
         any_impulse = false;
@@ -121,24 +97,25 @@ ResolutionStats ContactResolver::sweep_island(size_t island, const std::vector<C
 
             const Vec3 u = relative_velocity(c);
             const double un = dot(u, c.normal);
-            if (un >= -params.approach_tolerance) continue;
+            if (un >= -step.approach_tolerance) continue;
 
             const Mat3 k_matrix =
-                plate ? collision_matrix(inertia.inv_mass[c.a], inertia.inv_inertia[c.a], c.arm_a,
-                                         0.0, zero, {})
-                      : collision_matrix(inertia.inv_mass[c.a], inertia.inv_inertia[c.a], c.arm_a,
-                                         inertia.inv_mass[c.b], inertia.inv_inertia[c.b], c.arm_b);
-            const Impulse impulse =
-                stronge_impulse(u, c.normal, k_matrix, c.friction, c.restitution);
+                plate ? physics::collision_matrix(inertia.inv_mass(c.a), inertia.inv_inertia(c.a),
+                                                  c.arm_a, 0.0, zero, {})
+                      : physics::collision_matrix(inertia.inv_mass(c.a), inertia.inv_inertia(c.a),
+                                                  c.arm_a, inertia.inv_mass(c.b),
+                                                  inertia.inv_inertia(c.b), c.arm_b);
+            const physics::Impulse impulse =
+                physics::stronge_impulse(u, c.normal, k_matrix, c.friction, c.restitution);
 
-            bodies.velocity[c.a] += inertia.inv_mass[c.a] * impulse.p;
-            bodies.spin[c.a] += inertia.inv_inertia[c.a] * cross(c.arm_a, impulse.p);
+            bodies.velocity[c.a] += inertia.inv_mass(c.a) * impulse.p;
+            bodies.spin[c.a] += inertia.inv_inertia(c.a) * cross(c.arm_a, impulse.p);
             last_changed_[c.a] = sweep;
             if (plate) {
                 hits.push_back({c.a, c.b, -un});
             } else {
-                bodies.velocity[c.b] -= inertia.inv_mass[c.b] * impulse.p;
-                bodies.spin[c.b] -= inertia.inv_inertia[c.b] * cross(c.arm_b, impulse.p);
+                bodies.velocity[c.b] -= inertia.inv_mass(c.b) * impulse.p;
+                bodies.spin[c.b] -= inertia.inv_inertia(c.b) * cross(c.arm_b, impulse.p);
                 last_changed_[c.b] = sweep;
             }
             ++stats.impulses;
@@ -149,15 +126,14 @@ ResolutionStats ContactResolver::sweep_island(size_t island, const std::vector<C
     if (any_impulse) {
         for (const std::uint32_t* k = first; k != last; ++k)
             if (dot(relative_velocity(contacts[*k]), contacts[*k].normal) <
-                -params.approach_tolerance)
+                -step.approach_tolerance)
                 ++stats.unresolved;
     }
     return stats;
 }
 
-ResolutionStats ContactResolver::resolve(const std::vector<Contact>& contacts, BodyState& bodies,
-                                         const InverseInertia& inertia, double plate_velocity_z,
-                                         const EngineParameters& params,
+ResolutionStats ContactResolver::resolve(const std::vector<Contact>& contacts, BodyView bodies,
+                                         const InverseInertia& inertia, const StepContext& step,
                                          std::vector<PlateHit>& hits, int threads) {
     last_changed_.assign(bodies.size(), 0);
     find_islands(contacts, bodies.size());
@@ -171,7 +147,7 @@ ResolutionStats ContactResolver::resolve(const std::vector<Contact>& contacts, B
     };
     if (threads <= 1) {
         for (size_t i = 0; i < island_count_; ++i)
-            add(sweep_island(i, contacts, bodies, inertia, plate_velocity_z, params, hits));
+            add(sweep_island(i, contacts, bodies, inertia, step, hits));
         return total;
     }
     // Each thread keeps its islands' hits apart and they are put back in island order, so that
@@ -182,8 +158,8 @@ ResolutionStats ContactResolver::resolve(const std::vector<Contact>& contacts, B
 #pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
     for (std::ptrdiff_t i = 0; i < n; ++i) {
         island_hits_[i].clear();
-        island_stats_[i] = sweep_island(static_cast<size_t>(i), contacts, bodies, inertia,
-                                        plate_velocity_z, params, island_hits_[i]);
+        island_stats_[i] =
+            sweep_island(static_cast<size_t>(i), contacts, bodies, inertia, step, island_hits_[i]);
     }
     for (size_t i = 0; i < island_count_; ++i) {
         add(island_stats_[i]);
@@ -192,4 +168,4 @@ ResolutionStats ContactResolver::resolve(const std::vector<Contact>& contacts, B
     return total;
 }
 
-}  // namespace rodsea
+}  // namespace rodsea::cpu

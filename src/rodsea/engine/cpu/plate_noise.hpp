@@ -1,0 +1,20 @@
+#pragma once
+// Stage 5 of the CPU step: the rotational noise of MODEL.md §3. Each polar rod that hit a plate
+// in this step gets ω_z += ε |u_n| η, once per plate it hit, with |u_n| its largest approach
+// speed against that plate in this step and η = ±1 from physics::noise_sign.
+#include <cstdint>
+#include <vector>
+
+#include "rodsea/engine/body_state.hpp"
+#include "rodsea/engine/cpu/contact_resolution.hpp"
+#include "rodsea/engine/physics/step_context.hpp"
+#include "rodsea/engine/species_table.hpp"
+
+namespace rodsea::cpu {
+
+// Returns the number of kicks given. Sorts `hits` in place. Large hit lists are split over
+// `threads` OpenMP threads, by body: the same kicks on any number of threads.
+size_t apply_plate_noise(std::vector<PlateHit>& hits, BodyView bodies, const SpeciesTable& species,
+                         const StepContext& step, int threads);
+
+}  // namespace rodsea::cpu

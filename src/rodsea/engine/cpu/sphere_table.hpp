@@ -1,0 +1,26 @@
+#pragma once
+// Stage 2 of the CPU step: every sphere of every body, in body order: which body it belongs to,
+// its radius, and its world centre, recomputed after each free flight. Body b owns spheres
+// first_of[b] .. first_of[b+1]−1, in the order of its shape's spheres.
+#include <cstdint>
+#include <vector>
+
+#include "rodsea/engine/body_state.hpp"
+#include "rodsea/engine/species_table.hpp"
+#include "rodsea/engine/step_backend.hpp"
+
+namespace rodsea::cpu {
+
+struct SphereTable {
+    std::vector<std::uint32_t> body;
+    std::vector<double> radius;           // mm
+    std::vector<Vec3> position;           // world, mm; x, y not wrapped
+    std::vector<std::uint32_t> first_of;  // first sphere of each body, plus one past the end
+
+    void assign(std::span<const std::uint32_t> body_species, const SpeciesTable& species);
+    void update_positions(BodyView bodies, const SpeciesTable& species, int threads);
+    std::size_t size() const { return body.size(); }
+    SphereView view() const { return {body, radius, position, first_of}; }
+};
+
+}  // namespace rodsea::cpu

@@ -1,0 +1,77 @@
+#pragma once
+// The seam between the step's script and its executor. Simulation builds a StepContext each step
+// and hands it to its backend, which owns the state and the scratch of every stage and runs
+// free flight → sphere update → contact search → impulse resolution and plate projection →
+// noise. The CPU backend (engine/cpu/) runs the stages as OpenMP loops; another executor (a GPU)
+// implements the same interface over the same per-element physics (engine/physics/).
+//
+// Determinism contract: a backend gives the same trajectory, bit for bit, for the same state,
+// parameters and options. The CPU backend gives the same bits on any number of threads.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "rodsea/engine/body_state.hpp"
+#include "rodsea/engine/physics/contact.hpp"
+#include "rodsea/engine/physics/step_context.hpp"
+
+namespace rodsea {
+
+struct StepStatistics {
+    std::size_t body_contacts = 0;
+    std::size_t plate_contacts = 0;
+    int sweeps = 0;
+    std::size_t impulses = 0;
+    std::size_t body_collisions = 0;   // impulses at approach speeds above kCollisionSpeed
+    std::size_t plate_collisions = 0;  // the same with a plate
+    std::size_t unresolved = 0;
+    std::size_t noise_kicks = 0;
+    double max_overlap_fraction = 0.0;  // largest overlap / smaller radius found this step
+};
+
+// Wall-clock seconds spent in each stage.
+struct StageProfile {
+    double free_flight = 0.0;
+    double sphere_update = 0.0;
+    double contact_search = 0.0;
+    double resolution = 0.0;  // impulses and the projection out of the plates
+    double noise = 0.0;
+    double total() const {
+        return free_flight + sphere_update + contact_search + resolution + noise;
+    }
+};
+
+// How the step is executed; the trajectory does not depend on it.
+struct BackendOptions {
+    int threads = 1;  // OpenMP threads of the CPU backend, >= 1
+};
+
+// Every sphere of every body in body order: body b owns spheres first_of[b] .. first_of[b+1]−1,
+// in the order of its shape's spheres; centres in the world, x and y not wrapped.
+struct SphereView {
+    std::span<const std::uint32_t> body;
+    std::span<const double> radius;  // mm
+    std::span<const Vec3> position;  // mm
+    std::span<const std::uint32_t> first_of;
+
+    std::size_t size() const { return body.size(); }
+};
+
+class StepBackend {
+  public:
+    virtual ~StepBackend() = default;
+    virtual const char* name() const = 0;
+
+    // Moves the state by one step. Overwrites `stats`, adds each stage's time to `profile`.
+    virtual void step(const StepContext& context, StepStatistics& stats, StageProfile& profile) = 0;
+
+    // The state on the host. A backend whose state lives elsewhere copies it here first.
+    virtual const BodyState& bodies() const = 0;
+    // The spheres and contacts of the last step, for tests and diagnostics.
+    virtual SphereView spheres() const = 0;
+    virtual const std::vector<Contact>& contacts() const = 0;
+    // How often the neighbour list was built since construction.
+    virtual std::uint64_t pair_list_builds() const = 0;
+};
+
+}  // namespace rodsea
