@@ -15,6 +15,7 @@
 
 #include "rodsea/analysis/analyze_command.hpp"
 #include "rodsea/calibration/calibrate_command.hpp"
+#include "rodsea/calibration/calibration_table.hpp"
 #include "rodsea/config/config_file.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/meanfield/mean_field.hpp"
@@ -162,7 +163,8 @@ int command_run(int argc, char** argv) {
         throw rodsea::InvalidParameter("CONFIG", std::to_string(a.positional.size()) + " given",
                                        "exactly one config file (see rodsea run --help)");
     const std::filesystem::path config = a.positional[0];
-    const rodsea::RunPlan plan = rodsea::load_config_file(config);
+    const rodsea::RunPlan plan =
+        rodsea::load_config_file(config, rodsea::calibration_table_lookup());
     options.out_dir =
         a.value("--out").value_or((std::filesystem::path("out") / config.stem()).string());
     return rodsea::start_run(plan, options, std::cout, std::cerr, stdout_is_terminal());
@@ -177,7 +179,8 @@ int command_info(int argc, char** argv) {
     if (a.positional.size() != 1)
         throw rodsea::InvalidParameter("CONFIG", std::to_string(a.positional.size()) + " given",
                                        "exactly one config file (see rodsea info --help)");
-    const rodsea::RunPlan plan = rodsea::load_config_file(a.positional[0]);
+    const rodsea::RunPlan plan =
+        rodsea::load_config_file(a.positional[0], rodsea::calibration_table_lookup());
     std::cout << "rodsea info " << a.positional[0] << "\n";
     rodsea::describe_plan(plan, std::cout);
     return ExitCode::kExitOk;

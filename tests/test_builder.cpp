@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "rodsea/analysis/order_parameters.hpp"
 #include "rodsea/builder/footprint.hpp"
 #include "rodsea/builder/initial_state.hpp"
 #include "rodsea/builder/lattice.hpp"
 #include "rodsea/builder/monte_carlo.hpp"
+#include "rodsea/engine/order_parameters.hpp"
 #include "rodsea/engine/physics/plates.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/error.hpp"

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "child_process.hpp"
+#include "rodsea/calibration/calibration_table.hpp"
 #include "rodsea/calibration/single_body_experiment.hpp"
 #include "rodsea/config/config_file.hpp"
 #include "rodsea/error.hpp"
@@ -234,7 +235,7 @@ class ConfigFromCalibrationTable : public ::testing::Test {
         return load_config_string("[noise]\nrotational_diffusion = " + std::to_string(d_r) +
                                       "\ncalibration_table = \"" + path(table).string() + "\"\n" +
                                       extra,
-                                  "test");
+                                  "test", calibration_table_lookup());
     }
     fs::path path(const std::string& name) const { return scratch_->path() / name; }
     std::unique_ptr<ScratchDir> scratch_;

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "rodsea/calibration/calibration_table.hpp"
 #include "rodsea/config/config_file.hpp"
 #include "rodsea/config/did_you_mean.hpp"
 #include "rodsea/config/schema.hpp"
@@ -675,7 +676,7 @@ TEST(ConfigExamples, EveryExampleLoadsAndReloads) {
         if (entry.path().extension() != ".toml") continue;
         SCOPED_TRACE(entry.path().string());
         names.insert(entry.path().filename().string());
-        const RunPlan plan = load_config_file(entry.path());
+        const RunPlan plan = load_config_file(entry.path(), calibration_table_lookup());
         expect_reloads_identically(plan);
     }
     for (const char* name : {"demo.toml", "fig1-rods-vs-density.toml", "fig1-noise.toml",

@@ -1,6 +1,6 @@
 #include "rodsea/analysis/analysis_frame.hpp"
 
-#include "rodsea/analysis/order_parameters.hpp"
+#include "rodsea/engine/order_parameters.hpp"
 
 namespace rodsea {
 

@@ -7,10 +7,10 @@
 
 #include "rodsea/analysis/frame_context.hpp"
 #include "rodsea/analysis/observable_registry.hpp"
+#include "rodsea/cli/progress.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/stored_run.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
-#include "rodsea/run/progress.hpp"
 
 namespace rodsea {
 

@@ -2,7 +2,7 @@
 // P and S per species, every frame (MODEL.md §4): the time series over the whole run and the
 // steady-state means. Beads are spheres, so their axis means nothing and they are skipped.
 #include "rodsea/analysis/observable.hpp"
-#include "rodsea/analysis/order_parameters.hpp"
+#include "rodsea/engine/order_parameters.hpp"
 
 namespace rodsea {
 

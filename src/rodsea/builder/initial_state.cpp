@@ -6,15 +6,15 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "rodsea/analysis/order_parameters.hpp"
 #include "rodsea/builder/footprint.hpp"
 #include "rodsea/builder/lattice.hpp"
 #include "rodsea/builder/monte_carlo.hpp"
+#include "rodsea/builder/placement.hpp"
 #include "rodsea/builder/random_insertion.hpp"
+#include "rodsea/engine/order_parameters.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/neighbors/periodic_cell_list.hpp"
 #include "rodsea/random.hpp"
-#include "rodsea/scenes/scenes.hpp"
 
 namespace rodsea {
 
@@ -65,9 +65,9 @@ double area_fraction(const EngineParameters& params, const std::vector<long long
 
 // The engine's state from the planar one: each body flat on the base at t = 0 (resting_height),
 // its centre of mass placed off the geometric centre where the shape has it, and the small random
-// velocities and spins that break the mirror symmetry of a still packing (as
-// row_packed_monolayer). Bodies grouped by species in the parameters' order, each group in
-// lattice or insertion order (neighbours close in memory on a lattice).
+// velocities and spins that break the mirror symmetry of a still packing. Bodies grouped by species
+// in the parameters' order, each group in lattice or insertion order (neighbours close in memory on
+// a lattice).
 BodyState lay_on_base(const EngineParameters& params, const std::vector<Footprint>& feet,
                       const PlanarBodies& planar, SplitMix64& rng) {
     std::vector<std::uint32_t> order(planar.size());

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "rodsea/config/run_plan.hpp"
+#include "rodsea/builder/builder_options.hpp"
 #include "rodsea/engine/body_state.hpp"
 #include "rodsea/engine/parameters.hpp"
 

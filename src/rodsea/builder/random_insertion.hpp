@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "rodsea/builder/builder_options.hpp"
 #include "rodsea/builder/footprint.hpp"
 #include "rodsea/builder/planar_bodies.hpp"
-#include "rodsea/config/run_plan.hpp"
 #include "rodsea/engine/parameters.hpp"
 #include "rodsea/random.hpp"
 

@@ -1,5 +1,6 @@
 target_sources(rodsea_core PRIVATE
   src/rodsea/builder/footprint.cpp
+  src/rodsea/builder/placement.cpp
   src/rodsea/builder/lattice.cpp
   src/rodsea/builder/disc_grid.cpp
   src/rodsea/builder/random_insertion.cpp

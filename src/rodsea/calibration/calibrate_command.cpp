@@ -17,10 +17,10 @@
 
 #include "rodsea/calibration/calibration_grid.hpp"
 #include "rodsea/cli/arguments.hpp"
+#include "rodsea/cli/count_progress.hpp"
+#include "rodsea/cli/stop_signal.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
-#include "rodsea/run/count_progress.hpp"
-#include "rodsea/run/stop_signal.hpp"
 
 namespace rodsea {
 

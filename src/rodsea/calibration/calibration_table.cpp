@@ -119,4 +119,10 @@ double CalibrationTable::epsilon_for(double d_r) const {
     return a.epsilon + (b.epsilon - a.epsilon) * (d_r - a.d_r) / (b.d_r - a.d_r);
 }
 
+EpsilonLookup calibration_table_lookup() {
+    return [](const std::filesystem::path& table, double gap, double dt, double d_r) {
+        return CalibrationTable::read(table, gap, dt).epsilon_for(d_r);
+    };
+}
+
 }  // namespace rodsea

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "rodsea/config/config_file.hpp"
+
 namespace rodsea {
 
 class CalibrationTable {
@@ -30,5 +32,9 @@ class CalibrationTable {
     std::vector<Point> points_;
     std::filesystem::path path_;
 };
+
+// The lookup the config needs for noise.rotational_diffusion: reads the table at the run's gap
+// and dt and interpolates ε.
+EpsilonLookup calibration_table_lookup();
 
 }  // namespace rodsea

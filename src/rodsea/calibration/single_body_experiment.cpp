@@ -4,9 +4,9 @@
 #include <numbers>
 
 #include "rodsea/analysis/statistics.hpp"
+#include "rodsea/builder/placement.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/random.hpp"
-#include "rodsea/scenes/scenes.hpp"
 
 namespace rodsea {
 
@@ -52,18 +52,22 @@ SingleBodyTrace run_single_body_copy(const SingleBodyExperiment& e, int index) {
     SplitMix64 rng(e.seed * 0x9e3779b97f4a7c15ULL + static_cast<std::uint64_t>(index) + 1);
     // A small tilt and a slow spin: a perfectly flat, still rod is a mirror-symmetric start that
     // the vibration alone takes long to leave. No initial translation, which would coast.
-    Scene scene = single_body(e.species, kBoxSide, rng.uniform(-0.1, 0.1));
+    const Quat tipped = tipped_orientation(0.0, rng.uniform(-0.1, 0.1));
     const Quat turn =
         Quat::from_axis_angle({0.0, 0.0, 1.0}, rng.uniform(-std::numbers::pi, std::numbers::pi));
-    scene.bodies.orientation[0] = normalized(turn * scene.bodies.orientation[0]);
-    scene.bodies.spin[0] = {0.0, 0.0, rng.uniform(-2.0, 2.0)};
-    scene.params.drive = e.drive;
-    scene.params.dt = e.dt;
-    scene.params.noise_epsilon = e.epsilon;
-    scene.params.seed = e.seed + 7919ULL * static_cast<std::uint64_t>(index);
-    scene.bodies.position[0].z =
-        resting_height(e.species.shape, scene.bodies.orientation[0], e.drive);
-    Simulation sim(scene.params, scene.bodies);
+    const Quat q = normalized(turn * tipped);
+    const Vec3 spin{0.0, 0.0, rng.uniform(-2.0, 2.0)};
+    EngineParameters params;
+    params.box = {kBoxSide, kBoxSide};
+    params.species = {e.species};
+    params.drive = e.drive;
+    params.dt = e.dt;
+    params.noise_epsilon = e.epsilon;
+    params.seed = e.seed + 7919ULL * static_cast<std::uint64_t>(index);
+    BodyState body;
+    body.add(0, {0.5 * kBoxSide, 0.5 * kBoxSide, resting_height(e.species.shape, q, e.drive)}, q,
+             {}, spin);
+    Simulation sim(params, body);
 
     const double period = 2.0 * std::numbers::pi / e.drive.angular_frequency;
     const auto steps = static_cast<std::uint64_t>(std::llround(period / e.dt));

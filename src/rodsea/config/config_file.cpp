@@ -20,7 +20,7 @@ ConfigSyntaxError::ConfigSyntaxError(const std::string& source, long line, long 
       line_(line),
       column_(column) {}
 
-RunPlan load_config_file(const std::filesystem::path& path) {
+RunPlan load_config_file(const std::filesystem::path& path, const EpsilonLookup& epsilon) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw FileError(path.string(), "no such file");
     if (std::filesystem::is_directory(path, ec))
@@ -30,12 +30,13 @@ RunPlan load_config_file(const std::filesystem::path& path) {
     std::ostringstream text;
     text << in.rdbuf();
     if (in.bad()) throw FileError(path.string(), "read failed");
-    return load_config_string(text.str(), path.string());
+    return load_config_string(text.str(), path.string(), epsilon);
 }
 
-RunPlan load_config_string(std::string_view toml, std::string_view source_name) {
+RunPlan load_config_string(std::string_view toml, std::string_view source_name,
+                           const EpsilonLookup& epsilon) {
     config::ConfigValues values = config::read_toml(toml, source_name);
-    RunPlan plan = config::resolve(values);
+    RunPlan plan = config::resolve(values, epsilon);
     plan.config_toml = config::write_toml(values);
     plan.choices = config::list_choices(values, plan);
     return plan;

@@ -3,6 +3,7 @@
 // source of every key's type, unit, default, range and documentation: parsing, the resolved
 // TOML, the commented default config and docs/config.md are all generated from it.
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -27,13 +28,21 @@ class ConfigSyntaxError : public std::invalid_argument {
     long column_;
 };
 
+// Turns the paper's D_r (rad²/s) into ε (1/mm) for a run at this gap (mm) and dt (s) through the
+// calibration table at `table`: what noise.rotational_diffusion needs. The config layer reads no
+// calibration tables itself; calibration_table_lookup() (calibration/) is the one that does.
+using EpsilonLookup = std::function<double(const std::filesystem::path& table, double gap,
+                                           double dt, double rotational_diffusion)>;
+
 // Throws FileError when the file is missing or unreadable, otherwise as load_config_string.
-RunPlan load_config_file(const std::filesystem::path& path);
+RunPlan load_config_file(const std::filesystem::path& path, const EpsilonLookup& epsilon = {});
 
 // Parses and validates the whole config before returning: ConfigSyntaxError for bad TOML,
 // InvalidParameter (named by the key's full path, e.g. "species[1].length") for anything else.
-// `source_name` only labels error messages; it does not enter the plan.
-RunPlan load_config_string(std::string_view toml, std::string_view source_name);
+// `source_name` only labels error messages; it does not enter the plan. A config that gives
+// noise.rotational_diffusion needs `epsilon`; a resolved config (which holds ε) never does.
+RunPlan load_config_string(std::string_view toml, std::string_view source_name,
+                           const EpsilonLookup& epsilon = {});
 
 // A complete config with every key at its default, each commented with its unit and range.
 std::string default_config_toml();

@@ -6,11 +6,10 @@
 #include <numbers>
 #include <set>
 
-#include "rodsea/calibration/calibration_table.hpp"
+#include "rodsea/builder/placement.hpp"
 #include "rodsea/config/did_you_mean.hpp"
 #include "rodsea/config/schema.hpp"
 #include "rodsea/error.hpp"
-#include "rodsea/scenes/scenes.hpp"
 
 namespace rodsea::config {
 
@@ -69,15 +68,21 @@ void check_noise(const TableValues& noise, const std::string& source) {
 // noise.rotational_diffusion → noise.epsilon through the table, measured at this run's gap and
 // dt. The resolved config then holds ε (so that a stored run never needs the table again) and
 // D_r as its commented equivalent.
-double epsilon_from_calibration(ConfigValues& c, const EngineParameters& engine) {
+double epsilon_from_calibration(ConfigValues& c, const EngineParameters& engine,
+                                const EpsilonLookup& lookup) {
     TableValues& noise = c.one("noise");
+    if (!lookup)
+        throw InvalidParameter("noise.rotational_diffusion",
+                               toml_literal(noise.at("rotational_diffusion")) + " rad²/s",
+                               "noise.epsilon here",
+                               "the program reading this config was given no reader of "
+                               "calibration tables (calibration_table_lookup())");
     std::filesystem::path table = noise.text("calibration_table");
     const std::filesystem::path config_dir = std::filesystem::path(c.source).parent_path();
     if (table.is_relative() && std::filesystem::is_regular_file(c.source))
         table = config_dir / table;  // relative to the config file, like a path in a Makefile
     const double d_r = noise.real("rotational_diffusion");
-    const double epsilon =
-        CalibrationTable::read(table, engine.drive.gap, engine.dt).epsilon_for(d_r);
+    const double epsilon = lookup(table, engine.drive.gap, engine.dt, d_r);
     const long line = noise.entries.at("rotational_diffusion").line;
     noise.entries.erase("rotational_diffusion");
     noise.entries.erase("calibration_table");
@@ -265,9 +270,9 @@ void build_time_and_output(ConfigValues& c, RunPlan& plan) {
     plan.control.checkpoint_interval = output.real("checkpoint_interval");
 }
 
-void build_the_rest(ConfigValues& c, RunPlan& plan) {
+void build_the_rest(ConfigValues& c, RunPlan& plan, const EpsilonLookup& epsilon) {
     plan.engine.noise_epsilon = c.one("noise").has("rotational_diffusion")
-                                    ? epsilon_from_calibration(c, plan.engine)
+                                    ? epsilon_from_calibration(c, plan.engine, epsilon)
                                     : c.one("noise").real("epsilon");
     const TableValues& run = c.one("run");
     plan.engine.seed = static_cast<std::uint64_t>(run.integer("seed"));
@@ -334,13 +339,13 @@ void check_across_keys(const ConfigValues& c, const RunPlan& plan) {
 
 }  // namespace
 
-RunPlan resolve(ConfigValues& c) {
+RunPlan resolve(ConfigValues& c, const EpsilonLookup& epsilon) {
     complete_tables(c);
     RunPlan plan;
     build_box_and_drive(c, plan.engine);
     build_bodies(c, plan);
     build_time_and_output(c, plan);
-    build_the_rest(c, plan);
+    build_the_rest(c, plan, epsilon);
     check_across_keys(c, plan);
     validate(plan.engine);  // the engine's own checks, e.g. that every sphere fits the gap
     return plan;

@@ -1,6 +1,7 @@
 #pragma once
 // ConfigValues (as given) → RunPlan: fills in every default, checks the keys against each other
 // and builds the engine's parameters, counts and controls.
+#include "rodsea/config/config_file.hpp"
 #include "rodsea/config/config_values.hpp"
 #include "rodsea/config/run_plan.hpp"
 
@@ -8,8 +9,9 @@ namespace rodsea::config {
 
 // On return `values` holds every key in force (defaults included, one of each pair of
 // alternatives) and the equivalents of the alternatives not used. The plan's config_toml and
-// choices are left empty. Throws InvalidParameter naming the first bad key.
-RunPlan resolve(ConfigValues& values);
+// choices are left empty. `epsilon` turns noise.rotational_diffusion into ε. Throws
+// InvalidParameter naming the first bad key.
+RunPlan resolve(ConfigValues& values, const EpsilonLookup& epsilon);
 
 // Throws when both keys of a pair of alternatives (box.side, box.side_in_polar_lengths) are
 // given, naming the one that comes second in the schema.

@@ -5,17 +5,10 @@
 #include <string>
 #include <vector>
 
+#include "rodsea/builder/builder_options.hpp"
 #include "rodsea/engine/parameters.hpp"
 
 namespace rodsea {
-
-enum class InitialOrientation { isotropic, aligned };
-
-// How the initial state is built (see builder/initial_state.hpp).
-struct BuilderOptions {
-    InitialOrientation orientation = InitialOrientation::isotropic;
-    int randomisation_sweeps = 50;  // Monte Carlo sweeps after the lattice start, [0, 100000]
-};
 
 // The run's length and cadences.
 struct RunControl {

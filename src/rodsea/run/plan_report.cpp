@@ -7,8 +7,8 @@
 #include <string>
 
 #include "rodsea/builder/initial_state.hpp"
+#include "rodsea/cli/progress.hpp"
 #include "rodsea/engine/physics/contact.hpp"
-#include "rodsea/run/progress.hpp"
 
 namespace rodsea {
 

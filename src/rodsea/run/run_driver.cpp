@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "rodsea/builder/initial_state.hpp"
+#include "rodsea/cli/progress.hpp"
+#include "rodsea/cli/stop_signal.hpp"
 #include "rodsea/config/config_file.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/error.hpp"
@@ -16,10 +18,8 @@
 #include "rodsea/io/series_csv.hpp"
 #include "rodsea/io/trajectory_file.hpp"
 #include "rodsea/run/plan_report.hpp"
-#include "rodsea/run/progress.hpp"
 #include "rodsea/run/run_lock.hpp"
 #include "rodsea/run/series_recorder.hpp"
-#include "rodsea/run/stop_signal.hpp"
 
 namespace rodsea {
 

@@ -10,19 +10,10 @@
 #include <filesystem>
 #include <iosfwd>
 
+#include "rodsea/cli/exit_codes.hpp"
 #include "rodsea/config/run_plan.hpp"
 
 namespace rodsea {
-
-// Process exit codes of `rodsea run` (and of the other commands where they apply).
-enum ExitCode : int {
-    kExitOk = 0,
-    kExitFailure = 1,        // anything unexpected
-    kExitBadInput = 2,       // bad config, option or run directory: nothing was done
-    kExitIoError = 74,       // a file could not be written (disk full, permissions): checkpointed
-    kExitInterrupted = 130,  // SIGINT: checkpointed, resume with --resume
-    kExitTerminated = 143,   // SIGTERM: checkpointed, resume with --resume
-};
 
 struct RunOptions {
     std::filesystem::path out_dir;

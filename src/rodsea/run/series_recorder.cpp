@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "rodsea/analysis/order_parameters.hpp"
+#include "rodsea/engine/order_parameters.hpp"
 
 namespace rodsea {
 

@@ -1,9 +1,6 @@
 target_sources(rodsea_core PRIVATE
   src/rodsea/run/series_recorder.cpp
-  src/rodsea/run/progress.cpp
   src/rodsea/run/plan_report.cpp
-  src/rodsea/run/stop_signal.cpp
-  src/rodsea/run/count_progress.cpp
   src/rodsea/run/run_lock.cpp
   src/rodsea/run/run_driver.cpp
 )

@@ -5,34 +5,16 @@
 #include <numbers>
 #include <string>
 
-#include "rodsea/engine/physics/plates.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/random.hpp"
 
 namespace rodsea {
 
-long long count_for_area_fraction(double area_fraction, const Box& box, const Shape& shape) {
-    require_in_closed_range("area_fraction", area_fraction, 0.0, 1.0);
-    return std::llround(area_fraction * box.lx * box.ly / shape.projected_area);
-}
-
-Quat flat_orientation(double angle) {
-    return Quat::from_axis_angle({0, 0, 1}, angle);
-}
-
-double resting_height(const Shape& shape, const Quat& orientation, const DriveParameters& drive,
-                      double clearance) {
-    double lowest = 0.0;  // lowest point of the body relative to its centre of mass
-    for (size_t s = 0; s < shape.sphere_count(); ++s)
-        lowest = std::min(lowest, rotate(orientation, shape.offsets[s]).z - shape.radii[s]);
-    return physics::plate_state(drive.motion(), 0.0).base_z - lowest + clearance;
-}
-
 Scene single_body(const Species& species, double box_side, double tilt) {
     Scene scene;
     scene.params.box = {box_side, box_side};
     scene.params.species = {species};
-    const Quat q = flat_orientation(0.0) * Quat::from_axis_angle({0, 1, 0}, -tilt);
+    const Quat q = tipped_orientation(0.0, tilt);
     const double z = resting_height(species.shape, q, scene.params.drive);
     scene.bodies.add(0, {0.5 * box_side, 0.5 * box_side, z}, q);
     return scene;

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "rodsea/builder/placement.hpp"
 #include "rodsea/engine/body_state.hpp"
 #include "rodsea/engine/parameters.hpp"
 
@@ -13,17 +14,6 @@ struct Scene {
     EngineParameters params;
     BodyState bodies;
 };
-
-// N = round(φ L² / A), MODEL.md §2 (the paper's Table S1).
-long long count_for_area_fraction(double area_fraction, const Box& box, const Shape& shape);
-
-// Orientation of a body lying flat with its axis at angle (rad) to x.
-Quat flat_orientation(double angle);
-
-// Height of the centre of mass that puts the lowest sphere `clearance` mm above the base at
-// t = 0 for the given orientation.
-double resting_height(const Shape& shape, const Quat& orientation, const DriveParameters& drive,
-                      double clearance = 1e-3);
 
 // One body of `species` in a square box of side `box_side`, on the base, axis along x, tipped by
 // `tilt` rad about its y axis (thin end up for a polar rod when tilt > 0).
@@ -37,12 +27,8 @@ struct Population {
 // Bodies flat on the base in rows along x (each row one species, rows of the species
 // interleaved), spread evenly over the box, each pointing along +x or −x at random. A lattice
 // start: dense packings that random insertion cannot reach, with no overlap by construction.
-// Each body gets a small random velocity (in-plane, up to kStartSpeed) and spin (up to
-// kStartSpin about each axis): a perfectly still lattice is mirror-symmetric and the vibration
-// alone would never move it sideways.
-// Throws InvalidParameter when the rows do not fit in the box.
-inline constexpr double kStartSpeed = 5.0;  // mm/s
-inline constexpr double kStartSpin = 10.0;  // rad/s
+// Each body gets a small random velocity and spin (builder/placement.hpp). Throws
+// InvalidParameter when the rows do not fit in the box.
 Scene row_packed_monolayer(const std::vector<Population>& populations, const Box& box,
                            std::uint64_t seed);
 

@@ -15,15 +15,15 @@
 #include <string_view>
 
 #include "rodsea/cli/arguments.hpp"
-#include "rodsea/cli/frame_flags.hpp"
+#include "rodsea/cli/count_progress.hpp"
+#include "rodsea/cli/stop_signal.hpp"
 #include "rodsea/config/did_you_mean.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
 #include "rodsea/io/output_path.hpp"
 #include "rodsea/io/stored_run.hpp"
-#include "rodsea/run/count_progress.hpp"
-#include "rodsea/run/stop_signal.hpp"
 #include "rodsea/view/export_formats.hpp"
+#include "rodsea/view/frame_flags.hpp"
 
 namespace rodsea {
 

@@ -14,8 +14,8 @@
 #include <sstream>
 #include <vector>
 
+#include "rodsea/cli/stop_signal.hpp"
 #include "rodsea/error.hpp"
-#include "rodsea/run/stop_signal.hpp"
 
 namespace rodsea {
 

@@ -9,7 +9,7 @@
 #include <map>
 #include <numbers>
 
-#include "rodsea/analysis/order_parameters.hpp"
+#include "rodsea/engine/order_parameters.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/view/colour_wheel.hpp"
 

@@ -7,14 +7,14 @@
 #include <cstdlib>
 #include <ostream>
 
-#include "rodsea/cli/frame_flags.hpp"
+#include "rodsea/cli/count_progress.hpp"
+#include "rodsea/cli/stop_signal.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
 #include "rodsea/io/output_path.hpp"
 #include "rodsea/io/stored_run.hpp"
-#include "rodsea/run/count_progress.hpp"
-#include "rodsea/run/stop_signal.hpp"
 #include "rodsea/view/ffmpeg_pipe.hpp"
+#include "rodsea/view/frame_flags.hpp"
 #include "rodsea/view/render_flags.hpp"
 
 namespace rodsea {

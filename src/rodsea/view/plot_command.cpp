@@ -11,8 +11,8 @@
 #include <ostream>
 
 #include "rodsea/cli/arguments.hpp"
+#include "rodsea/cli/exit_codes.hpp"
 #include "rodsea/error.hpp"
-#include "rodsea/run/run_driver.hpp"
 
 namespace rodsea {
 

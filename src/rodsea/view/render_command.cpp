@@ -3,11 +3,11 @@
 #include <chrono>
 #include <ostream>
 
-#include "rodsea/cli/frame_flags.hpp"
+#include "rodsea/cli/stop_signal.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/output_path.hpp"
 #include "rodsea/io/stored_run.hpp"
-#include "rodsea/run/stop_signal.hpp"
+#include "rodsea/view/frame_flags.hpp"
 #include "rodsea/view/png_file.hpp"
 #include "rodsea/view/render_flags.hpp"
 

@@ -7,7 +7,7 @@
 #include <iosfwd>
 #include <string>
 
-#include "rodsea/run/progress.hpp"
+#include "rodsea/cli/progress.hpp"
 
 namespace rodsea {
 

@@ -1,4 +1,4 @@
-#include "rodsea/run/progress.hpp"
+#include "rodsea/cli/progress.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "rodsea/run/count_progress.hpp"
+#include "rodsea/cli/count_progress.hpp"
 
 #include <algorithm>
 #include <ostream>

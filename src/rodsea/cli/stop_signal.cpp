@@ -1,4 +1,4 @@
-#include "rodsea/run/stop_signal.hpp"
+#include "rodsea/cli/stop_signal.hpp"
 
 #include <csignal>
 
