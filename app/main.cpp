@@ -13,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-#include "rodsea/analysis/analyze_command.hpp"
+#include "rodsea/analyze/analyze_command.hpp"
 #include "rodsea/calibration/calibrate_command.hpp"
 #include "rodsea/calibration/calibration_table.hpp"
 #include "rodsea/config/config_file.hpp"

@@ -8,10 +8,10 @@
 #include <filesystem>
 #include <memory>
 
-#include "rodsea/analysis/analysis_frame.hpp"
-#include "rodsea/analysis/autocorrelation_observable.hpp"
-#include "rodsea/analysis/frame_context.hpp"
-#include "rodsea/analysis/observable_registry.hpp"
+#include "rodsea/analyze/analysis_frame.hpp"
+#include "rodsea/analyze/autocorrelation_observable.hpp"
+#include "rodsea/analyze/frame_context.hpp"
+#include "rodsea/analyze/observable_registry.hpp"
 #include "rodsea/builder/initial_state.hpp"
 #include "rodsea/io/trajectory_file.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
@@ -84,7 +84,7 @@ void BM_SharedGrids(benchmark::State& state) {
     for (auto _ : state) {
         const FrameContext context(largest().frame, largest().setup.species, true);
         for (BodyGroup g : {BodyGroup::polar, BodyGroup::medium})
-            benchmark::DoNotOptimize(context.grid(g).members().data());
+            benchmark::DoNotOptimize(context.group(g).members.data());
     }
 }
 BENCHMARK(BM_SharedGrids)->Unit(benchmark::kMillisecond);
@@ -95,8 +95,8 @@ void BM_Observable(benchmark::State& state, const char* name) {
     LargestSystem& s = largest();
     const std::unique_ptr<Observable> observable = make_observable(name, s.setup, s.options);
     const FrameContext context(s.frame, s.setup.species, true);
-    context.grid(BodyGroup::polar);
-    context.grid(BodyGroup::medium);
+    for (BodyGroup g : {BodyGroup::polar, BodyGroup::medium, BodyGroup::medium_rods})
+        context.group(g);
     for (auto _ : state)
         observable->compute(context);
 }

@@ -13,6 +13,9 @@ packages=(
     clang-format                        # the committed .clang-format
     libtomlplusplus-dev                 # TOML config files (toml++)
     libhdf5-dev                         # HDF5 trajectories and checkpoints (H5MD layout)
+    libfftw3-dev                        # FFTW: C(t) by FFT in the analysis
+    nlohmann-json3-dev                  # analysis.json
+    libcli11-dev                        # CLI11: every command's options, help and checks
     pkg-config libcairo2-dev libpng-dev fonts-dejavu-core  # `rodsea render`: Cairo, PNG, text
     ffmpeg                              # `rodsea movie`: H.264 MP4 (and ffprobe for its test)
     python3 python3-numpy python3-matplotlib  # `rodsea plot` (scripts/rodsea_plots/)

@@ -6,9 +6,9 @@
 #include <numbers>
 #include <vector>
 
-#include "rodsea/analysis/analysis_options.hpp"
-#include "rodsea/analysis/frame_context.hpp"
-#include "rodsea/analysis/observable.hpp"
+#include "rodsea/analyze/analysis_options.hpp"
+#include "rodsea/analyze/frame_context.hpp"
+#include "rodsea/analyze/observable.hpp"
 #include "rodsea/random.hpp"
 
 namespace rodsea::testing {
@@ -27,11 +27,9 @@ inline AnalysisFrame make_frame(double side, const std::vector<Body>& bodies, st
     f.step = static_cast<std::int64_t>(index);
     f.box = {side, side};
     for (const Body& b : bodies) {
-        f.x.push_back(PeriodicBox2D::wrap(b.x, side));
-        f.y.push_back(PeriodicBox2D::wrap(b.y, side));
+        f.position.push_back({PeriodicBox2D::wrap(b.x, side), PeriodicBox2D::wrap(b.y, side), 0.0});
         f.theta.push_back(std::remainder(b.theta, 2.0 * std::numbers::pi));
-        f.vx.push_back(b.vx);
-        f.vy.push_back(b.vy);
+        f.velocity.push_back({b.vx, b.vy, 0.0});
         f.species.push_back(b.species);
     }
     return f;
@@ -55,11 +53,12 @@ inline AnalysisOptions resolved(const AnalysisSetup& setup, AnalysisOptions o = 
     return resolve_analysis_options(o, setup);
 }
 
-// Feeds every frame (all steady) to the observable and returns its results.
+// Feeds every frame (all steady, in time blocks as `rodsea analyze` has them) to the observable
+// and returns its results.
 inline ObservableResults run_on(Observable& observable, const std::vector<AnalysisFrame>& frames,
                                 const AnalysisSetup& setup) {
-    for (const AnalysisFrame& f : frames) {
-        const FrameContext context(f, setup.species, true);
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+        const FrameContext context(frames[k], setup.species, true, setup.block_of(k));
         observable.compute(context);
     }
     return observable.finish();

@@ -6,52 +6,21 @@
 #include <numbers>
 
 #include "analysis_frames.hpp"
-#include "rodsea/analysis/autocorrelation_observable.hpp"
-#include "rodsea/analysis/corotating_maps_observable.hpp"
-#include "rodsea/analysis/flock_observable.hpp"
-#include "rodsea/analysis/medium_velocity_observable.hpp"
-#include "rodsea/analysis/observable_registry.hpp"
-#include "rodsea/analysis/order_parameter_observable.hpp"
-#include "rodsea/analysis/pair_correlation_observable.hpp"
-#include "rodsea/analysis/segregation_observable.hpp"
 #include "rodsea/analysis/time_correlation.hpp"
+#include "rodsea/analyze/autocorrelation_observable.hpp"
+#include "rodsea/analyze/corotating_maps_observable.hpp"
+#include "rodsea/analyze/flock_observable.hpp"
+#include "rodsea/analyze/medium_velocity_observable.hpp"
+#include "rodsea/analyze/observable_registry.hpp"
+#include "rodsea/analyze/order_parameter_observable.hpp"
+#include "rodsea/analyze/pair_correlation_observable.hpp"
+#include "rodsea/analyze/segregation_observable.hpp"
+#include "rodsea/engine/order_parameters.hpp"
 
 namespace rodsea::testing {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-TEST(BodyGrid, FindsExactlyTheBruteForceNeighboursAtAnyRadius) {
-    // Radii from below a cell to half the box: the stencil path, and the path where the
-    // stencil wraps around the box (min image per candidate) in one or both directions.
-    SplitMix64 rng(20);
-    const double side = 30.0;
-    const auto bodies = uniform_bodies(600, side, rng);
-    const AnalysisFrame f = make_frame(side, bodies);
-    std::vector<std::uint32_t> all(bodies.size());
-    for (std::uint32_t i = 0; i < all.size(); ++i)
-        all[i] = i;
-    BodyGrid grid;
-    grid.build(f, all, 2.5);
-    for (const double radius : {1.0, 2.5, 6.0, 11.0, 15.0}) {
-        for (std::uint32_t i = 0; i < 50; ++i) {
-            std::vector<std::uint32_t> expected, found;
-            for (std::uint32_t j = 0; j < bodies.size(); ++j) {
-                const Vec3 d = f.box.minimum_image({f.x[j] - f.x[i], f.y[j] - f.y[i], 0.0});
-                if (d.x * d.x + d.y * d.y < radius * radius) expected.push_back(j);
-            }
-            grid.for_each_within(
-                f.x[i], f.y[i], radius, [&](std::uint32_t j, double dx, double dy) {
-                    found.push_back(j);
-                    const Vec3 d = f.box.minimum_image({f.x[j] - f.x[i], f.y[j] - f.y[i], 0.0});
-                    EXPECT_NEAR(dx, d.x, 1e-12);
-                    EXPECT_NEAR(dy, d.y, 1e-12);
-                });
-            std::sort(found.begin(), found.end());
-            EXPECT_EQ(found, expected) << "radius " << radius << " body " << i;
-        }
-    }
-}
 
 TEST(OrderParameters, AlignedRodsHavePAndSOne) {
     SplitMix64 rng(1);

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "child_process.hpp"
-#include "rodsea/analysis/analyze_run.hpp"
+#include "rodsea/analyze/analyze_run.hpp"
 #include "rodsea/config/config_file.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
 #include "rodsea/run/run_driver.hpp"

@@ -19,7 +19,7 @@
 #include "rodsea/engine/physics/plates.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/error.hpp"
-#include "rodsea/neighbors/periodic_cell_list.hpp"
+#include "rodsea/math/periodic_box.hpp"
 #include "rodsea/scenes/scenes.hpp"
 
 namespace rodsea {

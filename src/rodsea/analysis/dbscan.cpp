@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "rodsea/error.hpp"
+#include "rodsea/neighbors/periodic_grid.hpp"
 
 namespace rodsea {
 
@@ -28,47 +29,24 @@ std::vector<int> dbscan(std::span<const Vec3> points, const PeriodicBox2D& box,
     const double cutoff = std::max(eps * (1.0 + 8.0 * std::numeric_limits<double>::epsilon()),
                                    std::max(box.lx, box.ly) / 1024.0);
 
-    // Points renumbered along a grid of cutoff-wide cells (a counting sort, stable), so that
-    // neighbours have nearby numbers: the neighbour lists and the cluster growth below then
-    // touch nearby memory instead of jumping across 10^5 points (a third faster at 10^5).
-    // Seeds are still taken in the original order, so the numbering is unchanged.
-    const int nx = std::max(1, static_cast<int>(box.lx / cutoff));
-    const int ny = std::max(1, static_cast<int>(box.ly / cutoff));
-    std::vector<std::uint32_t> cell_start(static_cast<std::size_t>(nx) * ny + 1, 0);
-    std::vector<std::uint32_t> cell_of(n);
-    std::vector<Vec3> wrapped(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        wrapped[i] = {PeriodicBox2D::wrap(points[i].x, box.lx),
-                      PeriodicBox2D::wrap(points[i].y, box.ly), 0.0};
-        const int cx = std::min(static_cast<int>(wrapped[i].x * nx / box.lx), nx - 1);
-        const int cy = std::min(static_cast<int>(wrapped[i].y * ny / box.ly), ny - 1);
-        cell_of[i] = static_cast<std::uint32_t>(cy * nx + cx);
-        ++cell_start[cell_of[i] + 1];
-    }
-    for (std::size_t c = 1; c < cell_start.size(); ++c)
-        cell_start[c] += cell_start[c - 1];
-    std::vector<std::uint32_t> rank(n);  // original index -> renumbered
-    std::vector<Vec3> sorted(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        rank[i] = cell_start[cell_of[i]]++;
-        sorted[rank[i]] = wrapped[i];
-    }
-    wrapped = {};
-    cell_of = {};
-
-    PeriodicCellList2D cells;
-    cells.build(sorted, box, cutoff);
+    // The grid keeps the points in cell order: the neighbour lists and the cluster growth below
+    // work on those slots, so they touch nearby memory instead of jumping across 10^5 points (a
+    // third faster at 10^5). Seeds are still taken in the original order, so the numbering is
+    // sklearn's.
+    PeriodicGrid2D grid;
+    grid.build(points, box, cutoff);
+    const std::span<const std::uint32_t> rank = grid.slot_of();
 
     // Neighbour lists in CSR form: one flat array instead of a vector per point, since the
     // 10^5-rod snapshots would otherwise spend most of their time in the allocator.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
     pairs.reserve(8 * n);
     std::vector<std::uint32_t> start(n + 1, 0);
-    cells.for_each_pair_within([&](std::uint32_t i, std::uint32_t j, const Vec3& d) {
+    grid.for_each_pair_within(cutoff, [&](std::uint32_t i, std::uint32_t j, const Vec3& d) {
         if (d.x * d.x + d.y * d.y > eps2) return;
-        pairs.emplace_back(i, j);
-        ++start[i + 1];
-        ++start[j + 1];
+        pairs.emplace_back(rank[i], rank[j]);
+        ++start[rank[i] + 1];
+        ++start[rank[j] + 1];
     });
     for (std::size_t i = 0; i < n; ++i)
         start[i + 1] += start[i];
@@ -116,6 +94,21 @@ std::vector<int> dbscan(std::span<const Vec3> points, const PeriodicBox2D& box,
     for (std::size_t i = 0; i < n; ++i)
         result[i] = label[rank[i]];
     return result;
+}
+
+}  // namespace rodsea
+
+namespace rodsea {
+
+std::vector<double> cluster_sizes(std::span<const int> labels) {
+    std::vector<double> sizes;
+    for (int l : labels) {
+        if (l < 0) continue;
+        if (static_cast<std::size_t>(l) >= sizes.size())
+            sizes.resize(static_cast<std::size_t>(l) + 1);
+        sizes[static_cast<std::size_t>(l)] += 1.0;
+    }
+    return sizes;
 }
 
 }  // namespace rodsea

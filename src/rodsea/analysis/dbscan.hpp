@@ -5,8 +5,8 @@
 #include <span>
 #include <vector>
 
+#include "rodsea/math/periodic_box.hpp"
 #include "rodsea/math/vec3.hpp"
-#include "rodsea/neighbors/periodic_cell_list.hpp"
 
 namespace rodsea {
 
@@ -21,5 +21,12 @@ struct DbscanParameters {
 // Throws InvalidParameter (rodsea/error.hpp) for eps not positive/finite or min_samples < 1.
 std::vector<int> dbscan(std::span<const Vec3> points, const PeriodicBox2D& box,
                         const DbscanParameters& parameters);
+
+}  // namespace rodsea
+
+namespace rodsea {
+
+// The number of points in each cluster: sizes[k] for label k; noise (−1) is not counted.
+std::vector<double> cluster_sizes(std::span<const int> labels);
 
 }  // namespace rodsea

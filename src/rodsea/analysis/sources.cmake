@@ -1,23 +1,10 @@
 target_sources(rodsea_core PRIVATE
-  src/rodsea/analysis/analysis_frame.cpp
-  src/rodsea/analysis/body_grid.cpp
-  src/rodsea/analysis/frame_context.cpp
   src/rodsea/analysis/statistics.cpp
-  src/rodsea/analysis/observable.cpp
-  src/rodsea/analysis/analysis_options.cpp
-  src/rodsea/analysis/order_parameter_observable.cpp
-  src/rodsea/analysis/pair_correlation_observable.cpp
+  src/rodsea/analysis/pair_correlation.cpp
+  src/rodsea/analysis/corotating_maps.cpp
   src/rodsea/analysis/flock_contour.cpp
-  src/rodsea/analysis/corotating_maps_observable.cpp
   src/rodsea/analysis/time_correlation.cpp
-  src/rodsea/analysis/autocorrelation_observable.cpp
   src/rodsea/analysis/dbscan.cpp
-  src/rodsea/analysis/flock_observable.cpp
-  src/rodsea/analysis/segregation_observable.cpp
-  src/rodsea/analysis/medium_velocity_observable.cpp
-  src/rodsea/analysis/observable_registry.cpp
-  src/rodsea/analysis/json_writer.cpp
-  src/rodsea/analysis/analyze_run.cpp
-  src/rodsea/analysis/analysis_output.cpp
-  src/rodsea/analysis/analyze_command.cpp
+  src/rodsea/analysis/segregation.cpp
+  src/rodsea/analysis/medium_velocity.cpp
 )

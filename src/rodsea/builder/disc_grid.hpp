@@ -1,7 +1,7 @@
 #pragma once
 // A periodic grid of the discs of flat bodies that follows Monte Carlo moves: a body's discs are
 // re-binned when it moves, so trial moves test against the current neighbours without rebuilds.
-// (PeriodicCellList2D is built once per step and is the wrong tool for one-body-at-a-time moves.)
+// (PeriodicGrid2D is built whole and is the wrong tool for moving one body at a time.)
 #include <cstdint>
 #include <vector>
 

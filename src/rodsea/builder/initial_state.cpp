@@ -13,7 +13,7 @@
 #include "rodsea/builder/random_insertion.hpp"
 #include "rodsea/engine/order_parameters.hpp"
 #include "rodsea/error.hpp"
-#include "rodsea/neighbors/periodic_cell_list.hpp"
+#include "rodsea/neighbors/periodic_grid.hpp"
 #include "rodsea/random.hpp"
 
 namespace rodsea {
@@ -112,9 +112,9 @@ double smallest_gap(const EngineParameters& params, const BodyState& state, doub
     const double cutoff = 2.0 * max_radius + reach;
     double gap = reach;
     if (centres.empty()) return gap;
-    PeriodicCellList2D cells;
-    cells.build(centres, PeriodicBox2D{params.box.lx, params.box.ly}, cutoff);
-    cells.for_each_pair_within([&](std::uint32_t i, std::uint32_t j, const Vec3& d) {
+    PeriodicGrid2D grid;
+    grid.build(centres, PeriodicBox2D{params.box.lx, params.box.ly}, cutoff);
+    grid.for_each_pair_within(cutoff, [&](std::uint32_t i, std::uint32_t j, const Vec3& d) {
         if (owner[i] == owner[j]) return;
         gap = std::min(gap, std::hypot(d.x, d.y) - radii[i] - radii[j]);
     });

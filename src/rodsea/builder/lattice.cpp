@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "rodsea/error.hpp"
-#include "rodsea/neighbors/periodic_cell_list.hpp"
+#include "rodsea/math/periodic_box.hpp"
 
 namespace rodsea {
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "rodsea/builder/disc_grid.hpp"
-#include "rodsea/neighbors/periodic_cell_list.hpp"
+#include "rodsea/math/periodic_box.hpp"
 
 namespace rodsea {
 

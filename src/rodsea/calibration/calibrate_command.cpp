@@ -21,6 +21,7 @@
 #include "rodsea/cli/stop_signal.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
+#include "rodsea/number_text.hpp"
 
 namespace rodsea {
 
@@ -52,12 +53,9 @@ struct PointResult {
     SingleBodyResult result;
 };
 
+// Non-finite values (no copy went either way) read back as NaN from "nan".
 std::string csv_number(double v) {
-    if (!std::isfinite(v)) return "nan";
-    std::ostringstream s;
-    s.precision(8);
-    s << v;
-    return s.str();
+    return std::isfinite(v) ? exact_number(v) : "nan";
 }
 
 double percentile(std::vector<double> v, double q) {

@@ -1,7 +1,8 @@
 #include "rodsea/config/config_values.hpp"
 
-#include <charconv>
 #include <cmath>
+
+#include "rodsea/number_text.hpp"
 
 namespace rodsea::config {
 
@@ -28,11 +29,9 @@ namespace {
 std::string real_literal(double v) {
     if (std::isnan(v)) return "nan";
     if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-    char buffer[64];
     // Shortest text that reads back as the same double: the resolved config must reload into
     // an identical plan.
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
-    std::string s(buffer, result.ptr);
+    std::string s = exact_number(v);
     if (s.find_first_of(".e") == std::string::npos) s += ".0";
     return s;
 }

@@ -1,10 +1,10 @@
 #include "rodsea/config/schema.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <numbers>
 
 #include "rodsea/error.hpp"
+#include "rodsea/number_text.hpp"
 #include "rodsea/shape/sphere_chain.hpp"
 
 namespace rodsea::config {
@@ -302,9 +302,7 @@ std::vector<KeySpec> make_keys() {
 std::string doc_number(double v) {
     // Whole numbers in full ("100000", not "1e+05"): ranges and defaults read as typed.
     if (v == std::floor(v) && std::abs(v) < 1e15) return std::to_string(static_cast<long long>(v));
-    char buffer[64];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
-    return std::string(buffer, result.ptr);
+    return exact_number(v);
 }
 
 std::string with_unit(const std::string& text, const std::string& unit) {

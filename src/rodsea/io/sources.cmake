@@ -6,5 +6,6 @@ target_sources(rodsea_core PRIVATE
   src/rodsea/io/series_csv.cpp
   src/rodsea/io/checkpoint.cpp
   src/rodsea/io/stored_run.cpp
+  src/rodsea/io/analysis_h5.cpp
   src/rodsea/io/output_path.cpp
 )

@@ -16,6 +16,7 @@
 
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
+#include "rodsea/number_text.hpp"
 
 namespace rodsea {
 
@@ -421,27 +422,22 @@ void describe(const MeanfieldPlan& plan, std::ostream& out) {
         << num(static_cast<double>(plan.sample_every) * o.dt) << " s\n";
 }
 
-// The shortest text that reads back as the same double (std::to_chars): exact and readable.
-std::string exact(double v) {
-    char text[64];
-    const auto result = std::to_chars(text, text + sizeof text, v);
-    return std::string(text, result.ptr);
-}
-
 std::string csv_text(const MeanfieldPlan& plan, const std::vector<MeanFieldSample>& samples) {
     const MeanFieldParameters& m = plan.options.model;
     const MeanfieldOptions& o = plan.options;
     std::string s = std::string("# rodsea ") + RODSEA_VERSION +
                     " meanfield; units: t [s] Px [1] Py [1] vx [mm/s] vy [mm/s] P [1] "
                     "P_adiabatic [1]; a=" +
-                    exact(m.a) + " lambda=" + exact(m.lambda) + " b=" + exact(m.b) +
-                    " friction=" + exact(m.friction) + " alpha=" + exact(m.alpha) +
-                    " rho=" + exact(m.rho) + " p0=" + exact(o.p0) + " angle=" + exact(o.angle) +
-                    " v0=" + exact(o.v0) + " dt=" + exact(o.dt) + "\nt,Px,Py,vx,vy,P,P_adiabatic\n";
+                    exact_number(m.a) + " lambda=" + exact_number(m.lambda) +
+                    " b=" + exact_number(m.b) + " friction=" + exact_number(m.friction) +
+                    " alpha=" + exact_number(m.alpha) + " rho=" + exact_number(m.rho) +
+                    " p0=" + exact_number(o.p0) + " angle=" + exact_number(o.angle) +
+                    " v0=" + exact_number(o.v0) + " dt=" + exact_number(o.dt) +
+                    "\nt,Px,Py,vx,vy,P,P_adiabatic\n";
     for (const MeanFieldSample& x : samples) {
-        s += exact(x.t) + ',' + exact(x.px) + ',' + exact(x.py) + ',' + exact(x.vx) + ',' +
-             exact(x.vy) + ',' + exact(x.p) + ',' + exact(adiabatic_polar_order(m, o.p0, x.t)) +
-             '\n';
+        s += exact_number(x.t) + ',' + exact_number(x.px) + ',' + exact_number(x.py) + ',' +
+             exact_number(x.vx) + ',' + exact_number(x.vy) + ',' + exact_number(x.p) + ',' +
+             exact_number(adiabatic_polar_order(m, o.p0, x.t)) + '\n';
     }
     return s;
 }

@@ -41,17 +41,21 @@ void VerletPairList::rebuild(std::span<const Vec3> points, std::span<const doubl
     box_ = box;
     half_x_ = 0.5 * box.lx;
     half_y_ = 0.5 * box.ly;
-    // Discs grown by skin / 2 each overlap when their centres are closer than r_i + r_j + skin.
-    inflated_.resize(radii.size());
+    if (radii.size() != points.size() || groups.size() != points.size())
+        throw std::invalid_argument("VerletPairList: radii and groups need one per point");
+    // Discs grown by skin / 2 each overlap when their centres are closer than r_i + r_j + skin;
+    // no pair is farther apart than the widest such disc.
+    const double half_skin = 0.5 * skin_;
     double widest = 0.0;
-    for (size_t i = 0; i < radii.size(); ++i) {
-        inflated_[i] = radii[i] + 0.5 * skin_;
-        widest = std::max(widest, 2.0 * inflated_[i]);
-    }
+    for (const double r : radii)
+        widest = std::max(widest, 2.0 * (r + half_skin));
     keys_.clear();
     if (!points.empty()) {
-        cells_.build(points, inflated_, groups, box, widest);
-        cells_.for_each_pair_within([&](std::uint32_t i, std::uint32_t j, const Vec3&) {
+        grid_.build(points, box, widest);
+        grid_.for_each_pair_within(widest, [&](std::uint32_t i, std::uint32_t j, const Vec3& d) {
+            if (groups[i] == groups[j]) return;  // spheres of one rigid body never meet
+            const double reach = (radii[i] + half_skin) + (radii[j] + half_skin);
+            if (d.x * d.x + d.y * d.y >= reach * reach) return;
             const auto lo = std::min(i, j), hi = std::max(i, j);
             keys_.push_back(static_cast<std::uint64_t>(lo) << 32 | hi);
         });

@@ -14,8 +14,9 @@
 #include <utility>
 #include <vector>
 
+#include "rodsea/math/periodic_box.hpp"
 #include "rodsea/math/vec3.hpp"
-#include "rodsea/neighbors/periodic_cell_list.hpp"
+#include "rodsea/neighbors/periodic_grid.hpp"
 
 namespace rodsea {
 
@@ -84,8 +85,7 @@ class VerletPairList {
     std::vector<std::uint32_t> first_, second_;  // the pairs, sorted by (first, second)
     std::vector<Vec3> reference_;                // the points at the last build
     // Scratch for rebuilds.
-    PeriodicCellList2D cells_;
-    std::vector<double> inflated_;
+    PeriodicGrid2D grid_;
     std::vector<std::uint64_t> keys_;
 };
 

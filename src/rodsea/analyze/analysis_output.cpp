@@ -1,0 +1,270 @@
+// The files of `rodsea analyze` (layout: docs/analysis.md), written into a staging directory
+// that replaces the previous analysis whole.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "rodsea/analyze/analyze_run.hpp"
+#include "rodsea/error.hpp"
+#include "rodsea/io/analysis_h5.hpp"
+#include "rodsea/io/atomic_file.hpp"
+#include "rodsea/number_text.hpp"
+
+namespace rodsea {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// In key order, as the analysis is read by people too. JSON has no NaN: nlohmann writes null.
+using Json = nlohmann::ordered_json;
+
+// RFC 4180: a field with a comma, quote or newline is quoted, quotes doubled.
+std::string csv_quoted(const std::string& text) {
+    if (text.find_first_of(",\"\n") == std::string::npos) return text;
+    std::string q(1, '"');
+    for (char c : text) {
+        q.push_back(c);
+        if (c == '"') q.push_back('"');
+    }
+    q.push_back('"');
+    return q;
+}
+
+std::string csv_text(const TableResult& t) {
+    std::ostringstream out;
+    out << "# rodsea " << RODSEA_VERSION << " " << t.name << ": " << t.description << "; units:";
+    for (std::size_t c = 0; c < t.columns.size(); ++c)
+        out << " " << t.columns[c] << " [" << (t.units[c].empty() ? "1" : t.units[c]) << "]";
+    out << "\n";
+    for (std::size_t c = 0; c < t.columns.size(); ++c)
+        out << (c ? "," : "") << t.columns[c];
+    out << "\n";
+    for (const auto& row : t.rows) {
+        for (std::size_t c = 0; c < row.size(); ++c)
+            out << (c ? "," : "") << exact_number(row[c]);
+        out << "\n";
+    }
+    return out.str();
+}
+
+void write_hdf5(const RunAnalysis& a, const fs::path& path) {
+    std::vector<AnalysisArrays> arrays;
+    for (const ObservableResults& r : a.results)
+        arrays.push_back({r.observable, r.maps, r.labels});
+    write_analysis_h5(path, a.run.run_dir.string(), arrays);
+}
+
+Json estimate_json(const ScalarResult& s) {
+    return {{"value", s.estimate.mean},
+            {"error", s.estimate.error},
+            {"unit", s.unit},
+            {"tau_int_samples", s.estimate.tau_int},
+            {"n_eff", s.estimate.n_eff},
+            {"samples", s.estimate.samples},
+            {"error_method", s.estimate.from_blocks ? "time blocks" : "tau_int"},
+            {"short_series", s.estimate.short_series()},
+            {"description", s.description}};
+}
+
+Json run_parameters_json(const PreparedRun& run) {
+    const EngineParameters& e = run.plan.engine;
+    Json species = Json::array();
+    for (const SpeciesInfo& s : run.setup.species)
+        species.push_back({{"name", s.name},
+                           {"kind", to_string(s.kind)},
+                           {"length_mm", s.length},
+                           {"count", s.count},
+                           {"area_fraction", s.area_fraction}});
+    return {{"box_lx_mm", e.box.lx},
+            {"box_ly_mm", e.box.ly},
+            {"gamma", e.drive.gamma},
+            {"frequency_hz", e.drive.angular_frequency / (2.0 * M_PI)},
+            {"gap_mm", e.drive.gap},
+            {"gravity_mm_per_s2", e.drive.gravity},
+            {"noise_epsilon_per_mm", e.noise_epsilon},
+            {"dt_s", e.dt},
+            {"seed", e.seed},
+            {"duration_s", run.plan.control.duration},
+            {"species", species}};
+}
+
+Json observable_json(const ObservableResults& r, const fs::path& out_dir) {
+    Json parameters = Json::object(), scalars = Json::object(), tables = Json::object(),
+         maps = Json::object();
+    for (const ParameterValue& p : r.parameters)
+        parameters[p.name] = {{"value", p.value}, {"unit", p.unit}};
+    for (const ScalarResult& s : r.scalars)
+        scalars[s.name] = estimate_json(s);
+    for (const TableResult& t : r.tables) {
+        const fs::path file = out_dir / (t.name + ".csv");
+        write_file_atomically(file, csv_text(t));
+        tables[t.name] = {{"file", file.filename().string()},
+                          {"description", t.description},
+                          {"columns", t.columns}};
+    }
+    for (const MapResult& m : r.maps)
+        maps[m.name] = {{"file", "analysis.h5"},
+                        {"dataset", "/maps/" + m.name + "/value"},
+                        {"description", m.description}};
+    for (const LabelResult& l : r.labels)
+        maps[l.name] = {{"file", "analysis.h5"},
+                        {"dataset", "/labels/" + l.name + "/value"},
+                        {"description", l.description}};
+    return {{"frames", r.frames}, {"seconds", r.seconds}, {"parameters", parameters},
+            {"scalars", scalars}, {"tables", tables},     {"maps", maps},
+            {"notes", r.notes}};
+}
+
+void write_analysis_files(const RunAnalysis& a, const fs::path& out_dir) {
+    const SteadyWindow& w = a.run.window;
+    Json observables = Json::object();
+    for (const ObservableResults& r : a.results)
+        observables[r.observable] = observable_json(r, out_dir);
+    const Json j = {
+        {"creator", std::string("rodsea ") + RODSEA_VERSION},
+        {"units", "lengths mm, times s, angles rad, velocities mm/s"},
+        {"run",
+         {{"directory", a.run.run_dir.string()},
+          {"trajectory", a.run.trajectory.string()},
+          {"frames", a.run.times.size()},
+          {"first_time_s", a.run.times.front()},
+          {"last_time_s", a.run.times.back()},
+          {"frame_interval_s", a.run.setup.frame_interval}}},
+        {"parameters", run_parameters_json(a.run)},
+        {"steady_state",
+         {{"from_s", w.from},
+          {"first_frame", w.first_frame},
+          {"frames", a.run.setup.steady_frames},
+          {"method", w.automatic
+                         ? "automatic: earliest start maximising n_eff = n/(2 tau_int) of " +
+                               (w.basis.empty() ? std::string("(none)") : w.basis)
+                         : std::string("given: --from")},
+          {"basis_n_eff", w.n_eff},
+          {"error_bars",
+           "per-frame series: sqrt(var * 2 tau_int / n), tau_int by Sokal's "
+           "window; window averages (D_r, sigma_f, N_avg): spread of " +
+               std::to_string(a.run.setup.blocks) + " time blocks"}}},
+        {"observables", observables},
+        {"skipped", a.run.skipped},
+        {"seconds", a.seconds}};
+    write_hdf5(a, out_dir / "analysis.h5");
+    write_file_atomically(out_dir / "summary.csv", summary_table_csv({a}));
+    // Paths are bytes: one that is not UTF-8 is written with replacement characters.
+    write_file_atomically(out_dir / "analysis.json",
+                          j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n");
+}
+
+}  // namespace
+
+void check_analysis_output_directory(const fs::path& out_dir) {
+    std::error_code ec;
+    if (!fs::exists(out_dir, ec)) return;
+    if (!fs::is_directory(out_dir))
+        throw FileError(out_dir.string(), "exists and is not a directory");
+    if (!fs::is_empty(out_dir) && !fs::exists(out_dir / "analysis.json"))
+        throw FileError(out_dir.string(),
+                        "exists, is not empty and holds no earlier analysis (analysis.json): "
+                        "refusing to replace it; choose another --out");
+}
+
+std::vector<fs::path> write_run_analysis(const RunAnalysis& a, const fs::path& out_dir) {
+    check_analysis_output_directory(out_dir);
+    // The whole set is written into a fresh directory next to the target and swapped in, so a
+    // reader never sees a mix of two analyses or files left from an earlier, larger one.
+    std::string suffix = ".";  // (not "." + ...: GCC 12 warns falsely, -Werror=restrict)
+    suffix += std::to_string(::getpid());
+    const fs::path parent = out_dir.has_parent_path() ? out_dir.parent_path() : fs::path(".");
+    const fs::path staging = parent / (out_dir.filename().string() + ".tmp" + suffix);
+    const fs::path previous = parent / (out_dir.filename().string() + ".old" + suffix);
+    std::error_code ec;
+    fs::remove_all(staging, ec);
+    fs::create_directories(staging, ec);
+    if (ec || !fs::is_directory(staging))
+        throw FileError(staging.string(), "cannot create the output directory (" +
+                                              (ec ? ec.message() : "not a directory") + ")");
+    try {
+        write_analysis_files(a, staging);
+    } catch (...) {
+        fs::remove_all(staging, ec);
+        throw;
+    }
+    const bool replacing = fs::exists(out_dir);
+    if (replacing) fs::rename(out_dir, previous, ec);
+    if (!ec) fs::rename(staging, out_dir, ec);
+    if (ec) {
+        if (replacing && !fs::exists(out_dir)) fs::rename(previous, out_dir, ec);
+        fs::remove_all(staging, ec);
+        throw FileError(out_dir.string(), "cannot move the new analysis into place");
+    }
+    fs::remove_all(previous, ec);
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(out_dir))
+        files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+std::string summary_table_csv(const std::vector<RunAnalysis>& runs) {
+    std::vector<std::string> columns{
+        "run",          "box_lx_mm",  "box_ly_mm",      "gamma",
+        "frequency_hz", "gap_mm",     "epsilon_per_mm", "dt_s",
+        "seed",         "duration_s", "steady_from_s",  "steady_frames"};
+    std::vector<std::map<std::string, std::string>> rows;
+    const auto add = [&](std::map<std::string, std::string>& row, const std::string& key,
+                         const std::string& value) {
+        if (std::find(columns.begin(), columns.end(), key) == columns.end()) columns.push_back(key);
+        row[key] = value;
+    };
+    for (const RunAnalysis& a : runs) {
+        const EngineParameters& e = a.run.plan.engine;
+        std::map<std::string, std::string> row;
+        row["run"] = csv_quoted(a.run.run_dir.string());
+        row["box_lx_mm"] = exact_number(e.box.lx);
+        row["box_ly_mm"] = exact_number(e.box.ly);
+        row["gamma"] = exact_number(e.drive.gamma);
+        row["frequency_hz"] = exact_number(e.drive.angular_frequency / (2.0 * M_PI));
+        row["gap_mm"] = exact_number(e.drive.gap);
+        row["epsilon_per_mm"] = exact_number(e.noise_epsilon);
+        row["dt_s"] = exact_number(e.dt);
+        row["seed"] = std::to_string(e.seed);
+        row["duration_s"] = exact_number(a.run.plan.control.duration);
+        row["steady_from_s"] = exact_number(a.run.window.from);
+        row["steady_frames"] = std::to_string(a.run.setup.steady_frames);
+        for (const SpeciesInfo& s : a.run.setup.species) {
+            add(row, "phi_" + s.name, exact_number(s.area_fraction));
+            add(row, "count_" + s.name, std::to_string(s.count));
+            add(row, "length_mm_" + s.name, exact_number(s.length));
+        }
+        for (const ObservableResults& r : a.results)
+            for (const ScalarResult& s : r.scalars) {
+                add(row, s.name, exact_number(s.estimate.mean));
+                add(row, s.name + "_err", exact_number(s.estimate.error));
+            }
+        rows.push_back(std::move(row));
+    }
+    std::ostringstream out;
+    out << "# rodsea " << RODSEA_VERSION
+        << " analysis summary: one row per run, its parameters (mm, s), then each steady-state "
+           "scalar and its error bar (<name>_err); the definitions are in each run's "
+           "analysis.json\n";
+    for (std::size_t c = 0; c < columns.size(); ++c)
+        out << (c ? "," : "") << columns[c];
+    out << "\n";
+    for (const auto& row : rows) {
+        for (std::size_t c = 0; c < columns.size(); ++c) {
+            const auto it = row.find(columns[c]);
+            out << (c ? "," : "") << (it == row.end() ? "" : it->second);
+        }
+        out << "\n";
+    }
+    return out.str();
+}
+
+}  // namespace rodsea

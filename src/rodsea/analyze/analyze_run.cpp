@@ -1,0 +1,192 @@
+#include "rodsea/analyze/analyze_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ostream>
+
+#include "rodsea/analyze/frame_context.hpp"
+#include "rodsea/analyze/observable_registry.hpp"
+#include "rodsea/cli/progress.hpp"
+#include "rodsea/error.hpp"
+#include "rodsea/io/stored_run.hpp"
+#include "rodsea/io/trajectory_reader.hpp"
+
+namespace rodsea {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+AnalysisSetup make_setup(const RunPlan& plan) {
+    AnalysisSetup setup;
+    setup.box = {plan.engine.box.lx, plan.engine.box.ly};
+    const double area = setup.box.lx * setup.box.ly;
+    for (std::size_t s = 0; s < plan.engine.species.size(); ++s) {
+        const Species& sp = plan.engine.species[s];
+        setup.species.push_back(
+            {sp.name, sp.kind, sp.shape.extent, plan.counts[s],
+             static_cast<double>(plan.counts[s]) * sp.shape.projected_area / area});
+    }
+    return setup;
+}
+
+// The series whose relaxation decides the automatic steady start: P of the first polar
+// species, else S of the first rod species (the same columns `rodsea run` records).
+std::string steady_basis(const AnalysisSetup& setup) {
+    for (const SpeciesInfo& s : setup.species)
+        if (s.kind == BodyKind::polar_rod && s.count > 0) return "polar_order_" + s.name;
+    for (const SpeciesInfo& s : setup.species)
+        if (s.kind == BodyKind::apolar_rod && s.count > 0) return "nematic_order_" + s.name;
+    return "";
+}
+
+}  // namespace
+
+PreparedRun prepare_run(const fs::path& run, const AnalyzeRequest& request) {
+    PreparedRun p;
+    const StoredRun stored = open_stored_run(run);
+    const TrajectoryReader& reader = stored.reader;
+    p.run_dir = stored.run_dir;
+    p.trajectory = stored.trajectory;
+    p.plan = stored.plan;
+    p.setup = make_setup(p.plan);
+    p.setup.blocks = request.options.blocks;
+    p.times = reader.times();
+    const std::size_t frames = p.times.size();
+    if (frames >= 2) {
+        p.setup.frame_interval =
+            (p.times.back() - p.times.front()) / static_cast<double>(frames - 1);
+        for (std::size_t k = 1; k < frames; ++k)
+            // Times are multiples of the output step: anything beyond rounding is not a rodsea run.
+            if (std::abs(p.times[k] - p.times[k - 1] - p.setup.frame_interval) >
+                1e-6 * p.setup.frame_interval)
+                throw FileError(
+                    p.trajectory.string(),
+                    "frames are not equally spaced in time (frame " + std::to_string(k) + ")");
+    } else {
+        p.setup.frame_interval = p.plan.control.output_interval;
+    }
+
+    // Every frame must be complete before any work starts: the last one is read in full (a
+    // file cut short fails here, not halfway through a multi-run analysis), and its body count
+    // must be the config's.
+    const BodyState last = reader.frame(frames - 1);
+    if (static_cast<long long>(last.size()) != p.setup.total_count())
+        throw FileError(p.trajectory.string(), "frames hold " + std::to_string(last.size()) +
+                                                   " bodies, the stored config " +
+                                                   std::to_string(p.setup.total_count()));
+
+    SteadyWindow& w = p.window;
+    if (request.from) {
+        const double from = *request.from;
+        // Rounding slack only: --from 0.5 must select the frame stored at 0.49999999999 s, and
+        // --from 0.515 the first frame at or after it, not the one at 0.51.
+        const double slack = 1e-6 * p.setup.frame_interval;
+        if (!std::isfinite(from) || from > p.times.back() + slack || from < 0.0)
+            throw InvalidParameter("--from", format_number(from) + " s",
+                                   "[0, " + format_number(p.times.back()) + "] s",
+                                   "the run's frames span " + format_number(p.times.front()) +
+                                       " to " + format_number(p.times.back()) + " s");
+        while (w.first_frame < frames && p.times[w.first_frame] < from - slack)
+            ++w.first_frame;
+    } else {
+        w.automatic = true;
+        w.basis = steady_basis(p.setup);
+        if (!w.basis.empty()) {
+            const std::vector<double> series = reader.series(w.basis);
+            if (series.size() != frames)
+                throw FileError(p.trajectory.string(), "the time series " + w.basis + " has " +
+                                                           std::to_string(series.size()) +
+                                                           " rows for " + std::to_string(frames) +
+                                                           " frames");
+            w.first_frame = steady_start(series);
+            const std::span<const double> kept(
+                series.begin() + static_cast<std::ptrdiff_t>(w.first_frame), series.end());
+            w.n_eff =
+                static_cast<double>(kept.size()) / (2.0 * integrated_autocorrelation_time(kept));
+        }
+    }
+    w.from = p.times[w.first_frame];
+    p.setup.steady_frames = frames - w.first_frame;
+    // Blocks need at least one frame each; fewer than two blocks leave no error bar (NaN).
+    p.setup.blocks = static_cast<int>(std::max<std::size_t>(
+        1, std::min<std::size_t>(static_cast<std::size_t>(p.setup.blocks), p.setup.steady_frames)));
+    p.options = resolve_analysis_options(request.options, p.setup);
+    p.observables = select_observables(request.observables, p.setup, &p.skipped);
+    return p;
+}
+
+RunAnalysis analyze_run(const PreparedRun& run, std::ostream& log, bool quiet) {
+    using clock = std::chrono::steady_clock;
+    const auto start = clock::now();
+    RunAnalysis out;
+    out.run = run;
+    const std::size_t frames = run.times.size();
+    if (!quiet) {
+        log << "analyze " << run.run_dir.string() << ": " << frames << " frames, "
+            << format_number(run.times.front()) << " to " << format_number(run.times.back())
+            << " s\n  steady window from " << format_number(run.window.from) << " s (frame "
+            << run.window.first_frame << ", " << run.setup.steady_frames << " frames; ";
+        if (run.window.automatic && !run.window.basis.empty())
+            log << "automatic: the start that maximises the independent samples of "
+                << run.window.basis << ", n_eff = " << format_number(run.window.n_eff) << ")\n";
+        else if (run.window.automatic)
+            log << "automatic: no order-parameter series, whole run)\n";
+        else
+            log << "--from)\n";
+        log << "  observables:";
+        for (const std::string& n : run.observables)
+            log << " " << n;
+        log << "\n";
+        for (const std::string& s : run.skipped)
+            log << "  skipped " << s << "\n";
+    }
+    std::vector<std::unique_ptr<Observable>> observables;
+    bool any_transient = false;
+    for (const std::string& name : run.observables) {
+        observables.push_back(make_observable(name, run.setup, run.options));
+        any_transient = any_transient || observables.back()->wants_transient();
+    }
+    std::vector<double> seconds(observables.size(), 0.0);
+    std::vector<std::size_t> computed(observables.size(), 0);
+    const TrajectoryReader reader(run.trajectory);
+    const std::size_t first = any_transient ? 0 : run.window.first_frame;
+    std::size_t next_report = 1;
+    for (std::size_t k = first; k < frames; ++k) {
+        const bool steady = k >= run.window.first_frame;
+        const AnalysisFrame frame =
+            make_analysis_frame(reader.frame(k), run.setup.box, k, run.times[k], reader.steps()[k]);
+        const int block = steady ? run.setup.block_of(k - run.window.first_frame) : 0;
+        const FrameContext context(frame, run.setup.species, steady, block);
+        for (std::size_t o = 0; o < observables.size(); ++o) {
+            if (!steady && !observables[o]->wants_transient()) continue;
+            const auto t0 = clock::now();
+            observables[o]->compute(context);
+            seconds[o] += std::chrono::duration<double>(clock::now() - t0).count();
+            ++computed[o];
+        }
+        const std::size_t done = k - first + 1, total = frames - first;
+        const double elapsed = std::chrono::duration<double>(clock::now() - start).count();
+        // Short analyses stay silent: a progress line only helps when there is time to wait.
+        if (!quiet && done * 10 >= next_report * total && elapsed > 2.0) {
+            log << "  " << done << "/" << total << " frames, " << format_duration(elapsed)
+                << " elapsed, ETA "
+                << format_duration(elapsed * static_cast<double>(total - done) /
+                                   static_cast<double>(done))
+                << "\n";
+            while (next_report * total <= done * 10)
+                ++next_report;
+        }
+    }
+    for (std::size_t o = 0; o < observables.size(); ++o) {
+        ObservableResults r = observables[o]->finish();
+        r.frames = computed[o];
+        r.seconds = seconds[o];
+        out.results.push_back(std::move(r));
+    }
+    out.seconds = std::chrono::duration<double>(clock::now() - start).count();
+    return out;
+}
+
+}  // namespace rodsea

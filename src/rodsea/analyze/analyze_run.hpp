@@ -1,0 +1,67 @@
+#pragma once
+// `rodsea analyze`: a run directory in, the paper's numbers out. prepare_run checks everything
+// (the file is a rodsea trajectory, the steady window lies inside the run, each requested
+// observable has the species it needs, every option fits the box) before any frame is read;
+// analyze_run then reads each frame once and hands it to every observable.
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rodsea/analyze/analysis_options.hpp"
+#include "rodsea/analyze/observable.hpp"
+#include "rodsea/config/run_plan.hpp"
+
+namespace rodsea {
+
+struct AnalyzeRequest {
+    std::vector<std::string> observables;  // empty: every one that applies
+    std::optional<double> from;            // s; none: chosen automatically
+    AnalysisOptions options;
+};
+
+struct SteadyWindow {
+    std::size_t first_frame = 0;
+    double from = 0.0;       // s, time of the first steady frame
+    bool automatic = false;  // chosen by steady_start() rather than --from
+    std::string basis;       // the series the automatic choice used
+    double n_eff = 0.0;      // its independent samples in the window
+};
+
+struct PreparedRun {
+    std::filesystem::path run_dir, trajectory;
+    RunPlan plan;
+    AnalysisSetup setup;
+    AnalysisOptions options;  // resolved for this run
+    SteadyWindow window;
+    std::vector<double> times;  // s, every frame
+    std::vector<std::string> observables, skipped;
+};
+
+struct RunAnalysis {
+    PreparedRun run;
+    std::vector<ObservableResults> results;
+    double seconds = 0.0;
+};
+
+// Accepts a run directory or its trajectory.h5. Throws FileError (not a rodsea trajectory,
+// unreadable or truncated file) or InvalidParameter (window, observable, option).
+PreparedRun prepare_run(const std::filesystem::path& run, const AnalyzeRequest& request);
+
+// Prints what it will do to `log`, then a progress line every 10 % of the frames (unless quiet).
+RunAnalysis analyze_run(const PreparedRun& run, std::ostream& log, bool quiet);
+
+// Throws FileError when `out_dir` exists and is not an earlier analysis (a directory holding
+// analysis.json, or empty): an analysis replaces its own output only.
+void check_analysis_output_directory(const std::filesystem::path& out_dir);
+
+// analysis.json, one CSV per table, analysis.h5 (maps, labels) and summary.csv in `out_dir`,
+// written into a staging directory and swapped in whole. Returns the files.
+std::vector<std::filesystem::path> write_run_analysis(const RunAnalysis& analysis,
+                                                      const std::filesystem::path& out_dir);
+
+// One CSV row per run: its parameters, then every scalar and its error bar.
+std::string summary_table_csv(const std::vector<RunAnalysis>& runs);
+
+}  // namespace rodsea

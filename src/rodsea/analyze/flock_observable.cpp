@@ -1,0 +1,90 @@
+#include "rodsea/analyze/flock_observable.hpp"
+
+#include <algorithm>
+
+namespace rodsea {
+
+FlockObservable::FlockObservable(const AnalysisSetup&, const AnalysisOptions& options)
+    : parameters_{options.flock_eps, options.flock_min_samples} {}
+
+void FlockObservable::compute(const FrameContext& context) {
+    const AnalysisFrame& f = context.frame();
+    const GroupArrays& group = context.group(BodyGroup::polar);
+    const std::vector<std::uint32_t>& polar = group.members;
+    if (bodies_.empty()) bodies_ = polar;
+    const std::vector<int> labels = dbscan(group.position, f.box, parameters_);
+    const std::vector<double> sizes = cluster_sizes(labels);
+    double members = 0.0;
+    for (double s : sizes)
+        members += s;
+    times_.push_back(f.time);
+    steady_.push_back(context.steady() ? 1 : 0);
+    largest_.push_back(sizes.empty() ? 0.0 : *std::max_element(sizes.begin(), sizes.end()));
+    flocks_.push_back(static_cast<double>(sizes.size()));
+    in_flocks_.push_back(polar.empty() ? 0.0 : members / static_cast<double>(polar.size()));
+    labels_.insert(labels_.end(), labels.begin(), labels.end());
+    if (context.steady())
+        for (double s : sizes) {
+            const auto k = static_cast<std::size_t>(s);
+            if (k >= size_distribution_.size()) size_distribution_.resize(k + 1, 0.0);
+            size_distribution_[k] += 1.0;
+        }
+}
+
+ObservableResults FlockObservable::finish() {
+    ObservableResults r;
+    r.observable = name();
+    r.parameters = {{"eps", parameters_.eps, "mm"},
+                    {"min_samples", static_cast<double>(parameters_.min_samples), ""}};
+    r.scalars.push_back(
+        {"N_m", "", "largest flock (polar rods), steady mean", steady_estimate(largest_, steady_)});
+    r.scalars.push_back(
+        {"flock_count", "", "number of flocks, steady mean", steady_estimate(flocks_, steady_)});
+    r.scalars.push_back({"flock_fraction", "", "fraction of polar rods in a flock, steady mean",
+                         steady_estimate(in_flocks_, steady_)});
+    TableResult series{"flocks",
+                       "largest flock N_m, number of flocks and fraction of polar rods in flocks, "
+                       "every frame",
+                       {"time", "steady", "N_m", "flocks", "fraction_in_flocks"},
+                       {"s", "", "", "", ""},
+                       {}};
+    std::vector<double> histogram;
+    double steady_frames = 0.0;
+    for (std::size_t k = 0; k < times_.size(); ++k) {
+        series.rows.push_back(
+            {times_[k], static_cast<double>(steady_[k]), largest_[k], flocks_[k], in_flocks_[k]});
+        if (!steady_[k]) continue;
+        const auto n = static_cast<std::size_t>(largest_[k]);
+        if (n >= histogram.size()) histogram.resize(n + 1, 0.0);
+        histogram[n] += 1.0;
+        steady_frames += 1.0;
+    }
+    r.tables.push_back(std::move(series));
+    TableResult hist{"largest_flock_histogram",
+                     "histogram of N_m over the steady frames",
+                     {"N_m", "frames", "probability"},
+                     {"", "", ""},
+                     {}};
+    for (std::size_t n = 0; n < histogram.size(); ++n)
+        if (histogram[n] > 0)
+            hist.rows.push_back(
+                {static_cast<double>(n), histogram[n], histogram[n] / steady_frames});
+    r.tables.push_back(std::move(hist));
+    TableResult dist{
+        "flock_size_distribution",
+        "flocks of each size over the steady frames (every flock, not only the largest)",
+        {"size", "flocks", "per_frame"},
+        {"", "", ""},
+        {}};
+    for (std::size_t n = 0; n < size_distribution_.size(); ++n)
+        if (size_distribution_[n] > 0)
+            dist.rows.push_back({static_cast<double>(n), size_distribution_[n],
+                                 size_distribution_[n] / std::max(1.0, steady_frames)});
+    r.tables.push_back(std::move(dist));
+    r.labels.push_back({"flock_labels",
+                        "DBSCAN label of each polar rod per frame (−1: not in a flock)", bodies_,
+                        times_, labels_});
+    return r;
+}
+
+}  // namespace rodsea

@@ -1,0 +1,24 @@
+#pragma once
+// g(r), G(r), G₂(r) among polar rods and g(r), G₂(r) among apolar medium rods
+// (analysis/pair_correlation.hpp), averaged over the steady frames.
+#include <optional>
+
+#include "rodsea/analysis/pair_correlation.hpp"
+#include "rodsea/analyze/analysis_options.hpp"
+#include "rodsea/analyze/observable.hpp"
+
+namespace rodsea {
+
+class PairCorrelationObservable final : public Observable {
+  public:
+    PairCorrelationObservable(const AnalysisSetup& setup, const AnalysisOptions& options);
+    std::string name() const override { return "pair"; }
+    void compute(const FrameContext& frame) override;
+    ObservableResults finish() override;
+
+  private:
+    double bin_;
+    std::optional<PairCorrelation> polar_, medium_;
+};
+
+}  // namespace rodsea
