@@ -186,17 +186,3 @@ TEST_F(AnalyzeCli, BadInputIsRefusedByNameAndWritesNothing) {
 
 }  // namespace
 }  // namespace rodsea
-
-namespace rodsea {
-namespace {
-
-// docs/analysis.md carries the parameter table generated from the code: they cannot drift.
-TEST(AnalysisReference, DocsMatchTheCode) {
-    const std::string doc =
-        read_text(std::filesystem::path(RODSEA_SOURCE_DIR) / "docs/analysis.md");
-    EXPECT_NE(doc.find(analysis_options_reference()), std::string::npos)
-        << "regenerate the table in docs/analysis.md from analysis_options_reference()";
-}
-
-}  // namespace
-}  // namespace rodsea

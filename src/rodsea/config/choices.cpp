@@ -1,6 +1,6 @@
-#include "rodsea/config/choices.hpp"
+#include "rodsea/config/detail/choices.hpp"
 
-#include "rodsea/config/resolve.hpp"
+#include "rodsea/config/detail/resolve.hpp"
 #include "rodsea/config/schema.hpp"
 #include "rodsea/error.hpp"
 

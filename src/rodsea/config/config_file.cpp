@@ -4,10 +4,10 @@
 #include <sstream>
 #include <system_error>
 
-#include "rodsea/config/choices.hpp"
-#include "rodsea/config/read_toml.hpp"
-#include "rodsea/config/resolve.hpp"
-#include "rodsea/config/write_toml.hpp"
+#include "rodsea/config/detail/choices.hpp"
+#include "rodsea/config/detail/read_toml.hpp"
+#include "rodsea/config/detail/resolve.hpp"
+#include "rodsea/config/detail/write_toml.hpp"
 #include "rodsea/error.hpp"
 
 namespace rodsea {

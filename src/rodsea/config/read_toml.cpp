@@ -1,4 +1,4 @@
-#include "rodsea/config/read_toml.hpp"
+#include "rodsea/config/detail/read_toml.hpp"
 
 #include <toml++/toml.h>
 

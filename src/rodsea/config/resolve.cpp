@@ -1,4 +1,4 @@
-#include "rodsea/config/resolve.hpp"
+#include "rodsea/config/detail/resolve.hpp"
 
 #include <algorithm>
 #include <cmath>

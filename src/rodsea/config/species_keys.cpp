@@ -2,7 +2,7 @@
 // builds (MODEL.md §2, with the sphere count and mass configurable).
 #include <algorithm>
 
-#include "rodsea/config/resolve.hpp"
+#include "rodsea/config/detail/resolve.hpp"
 #include "rodsea/config/schema.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/shape/sphere_chain.hpp"

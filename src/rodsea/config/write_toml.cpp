@@ -1,8 +1,8 @@
-#include "rodsea/config/write_toml.hpp"
+#include "rodsea/config/detail/write_toml.hpp"
 
 #include <sstream>
 
-#include "rodsea/config/resolve.hpp"
+#include "rodsea/config/detail/resolve.hpp"
 #include "rodsea/config/schema.hpp"
 
 namespace rodsea::config {

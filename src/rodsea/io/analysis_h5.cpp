@@ -1,7 +1,7 @@
 #include "rodsea/io/analysis_h5.hpp"
 
 #include "rodsea/io/atomic_file.hpp"
-#include "rodsea/io/hdf5.hpp"
+#include "rodsea/io/detail/hdf5.hpp"
 
 namespace rodsea {
 

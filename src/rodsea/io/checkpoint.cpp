@@ -2,7 +2,7 @@
 
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
-#include "rodsea/io/hdf5.hpp"
+#include "rodsea/io/detail/hdf5.hpp"
 
 namespace rodsea {
 

@@ -1,4 +1,4 @@
-#include "rodsea/io/hdf5.hpp"
+#include "rodsea/io/detail/hdf5.hpp"
 
 #include <cstring>
 

@@ -11,7 +11,7 @@
 #include <cstring>
 
 #include "rodsea/error.hpp"
-#include "rodsea/io/hdf5.hpp"
+#include "rodsea/io/detail/hdf5.hpp"
 
 namespace rodsea {
 

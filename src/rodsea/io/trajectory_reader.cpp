@@ -1,7 +1,7 @@
 #include "rodsea/io/trajectory_reader.hpp"
 
 #include "rodsea/error.hpp"
-#include "rodsea/io/hdf5.hpp"
+#include "rodsea/io/detail/hdf5.hpp"
 
 namespace rodsea {
 

@@ -22,8 +22,8 @@
 #include "rodsea/io/atomic_file.hpp"
 #include "rodsea/io/output_path.hpp"
 #include "rodsea/io/stored_run.hpp"
-#include "rodsea/view/export_formats.hpp"
-#include "rodsea/view/frame_flags.hpp"
+#include "rodsea/view/detail/export_formats.hpp"
+#include "rodsea/view/detail/frame_flags.hpp"
 
 namespace rodsea {
 

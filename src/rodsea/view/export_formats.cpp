@@ -1,4 +1,4 @@
-#include "rodsea/view/export_formats.hpp"
+#include "rodsea/view/detail/export_formats.hpp"
 
 #include <array>
 #include <charconv>

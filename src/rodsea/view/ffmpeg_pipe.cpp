@@ -1,4 +1,4 @@
-#include "rodsea/view/ffmpeg_pipe.hpp"
+#include "rodsea/view/detail/ffmpeg_pipe.hpp"
 
 #include <fcntl.h>
 #include <poll.h>

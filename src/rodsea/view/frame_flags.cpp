@@ -1,4 +1,4 @@
-#include "rodsea/view/frame_flags.hpp"
+#include "rodsea/view/detail/frame_flags.hpp"
 
 namespace rodsea {
 

@@ -13,9 +13,9 @@
 #include "rodsea/io/atomic_file.hpp"
 #include "rodsea/io/output_path.hpp"
 #include "rodsea/io/stored_run.hpp"
-#include "rodsea/view/ffmpeg_pipe.hpp"
-#include "rodsea/view/frame_flags.hpp"
-#include "rodsea/view/render_flags.hpp"
+#include "rodsea/view/detail/ffmpeg_pipe.hpp"
+#include "rodsea/view/detail/frame_flags.hpp"
+#include "rodsea/view/detail/render_flags.hpp"
 
 namespace rodsea {
 

@@ -7,9 +7,9 @@
 #include "rodsea/error.hpp"
 #include "rodsea/io/output_path.hpp"
 #include "rodsea/io/stored_run.hpp"
-#include "rodsea/view/frame_flags.hpp"
+#include "rodsea/view/detail/frame_flags.hpp"
+#include "rodsea/view/detail/render_flags.hpp"
 #include "rodsea/view/png_file.hpp"
-#include "rodsea/view/render_flags.hpp"
 
 namespace rodsea {
 

@@ -1,4 +1,4 @@
-#include "rodsea/view/render_flags.hpp"
+#include "rodsea/view/detail/render_flags.hpp"
 
 #include "rodsea/error.hpp"
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "rodsea/engine/cpu/parallel.hpp"
+#include "rodsea/engine/cpu/detail/parallel.hpp"
 #include "rodsea/engine/physics/contact_geometry.hpp"
 
 namespace rodsea::cpu {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "rodsea/engine/cpu/parallel.hpp"
+#include "rodsea/engine/cpu/detail/parallel.hpp"
 #include "rodsea/engine/physics/plate_noise.hpp"
 
 namespace rodsea::cpu {

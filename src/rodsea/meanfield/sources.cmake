@@ -1,3 +1,0 @@
-target_sources(rodsea_core PRIVATE
-  src/rodsea/meanfield/mean_field.cpp
-)
