@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <sstream>
+#include <stdexcept>
 #include <variant>
 #include <vector>
 
@@ -14,88 +15,164 @@ namespace rodsea {
 
 namespace {
 
-struct OptionKey {
-    const char* key;
-    std::variant<double AnalysisOptions::*, int AnalysisOptions::*> field;
-    const char* unit;
-    double lo, hi;  // allowed closed range
-    const char* default_text;
-    const char* meaning;
+using config::closed;
+using config::integer;
+using config::KeySpec;
+using config::real;
+
+// Where each key's value lives in AnalysisOptions, in the order of analysis_option_keys().
+using Field = std::variant<double AnalysisOptions::*, int AnalysisOptions::*>;
+const std::vector<Field> kFields{
+    &AnalysisOptions::pair_r_max,
+    &AnalysisOptions::pair_bin,
+    &AnalysisOptions::medium_pair_r_max,
+    &AnalysisOptions::corotating_r_max,
+    &AnalysisOptions::corotating_r_bins,
+    &AnalysisOptions::corotating_theta_bins,
+    &AnalysisOptions::contour_level,
+    &AnalysisOptions::autocorrelation_max_lag,
+    &AnalysisOptions::autocorrelation_fit_floor,
+    &AnalysisOptions::flock_eps,
+    &AnalysisOptions::flock_min_samples,
+    &AnalysisOptions::segregation_cell,
+    &AnalysisOptions::segregation_baseline_samples,
+    &AnalysisOptions::medium_distance,
+    &AnalysisOptions::medium_r_max,
+    &AnalysisOptions::medium_bin,
+    &AnalysisOptions::blocks,
 };
 
-const std::vector<OptionKey>& option_keys() {
-    static const std::vector<OptionKey> keys{
-        {"pair.r_max", &AnalysisOptions::pair_r_max, "mm", 0.01, 1e6, "min(L/2, 10 ℓ_p)",
-         "range of g(r), G(r), G₂(r) between polar rods"},
-        {"pair.bin", &AnalysisOptions::pair_bin, "mm", 1e-3, 1e3, "0.25", "radial bin width"},
-        {"pair.medium_r_max", &AnalysisOptions::medium_pair_r_max, "mm", 0.01, 1e6,
-         "min(L/2, 15 mm)", "range of g(r), G₂(r) between apolar medium rods"},
-        {"corotating.r_max", &AnalysisOptions::corotating_r_max, "mm", 0.01, 1e6, "min(L/2, 5 ℓ_p)",
-         "range of g(r,θ), G(r,θ)"},
-        {"corotating.r_bins", &AnalysisOptions::corotating_r_bins, "", 2, 10000, "60",
-         "radial bins of g(r,θ), G(r,θ)"},
-        {"corotating.theta_bins", &AnalysisOptions::corotating_theta_bins, "", 4, 10000, "72",
-         "angular bins of g(r,θ), G(r,θ)"},
-        {"corotating.contour_level", &AnalysisOptions::contour_level, "", 0.01, 0.99, "0.7",
-         "flock contour at this fraction of max g(r,θ) (paper: 70 %)"},
-        {"autocorrelation.max_lag", &AnalysisOptions::autocorrelation_max_lag, "s", 0.0, 1e9,
-         "half the steady window", "longest lag of C(t), C₂(t)"},
-        {"autocorrelation.fit_floor", &AnalysisOptions::autocorrelation_fit_floor, "", 0.01, 0.99,
-         "0.2", "D_r is fitted to −ln C = D_r t over the lags where C ≥ this"},
-        {"flocks.eps", &AnalysisOptions::flock_eps, "mm", 1e-3, 1e6, "ℓ_p / 2",
-         "DBSCAN neighbourhood radius (MODEL.md CHOICE)"},
-        {"flocks.min_samples", &AnalysisOptions::flock_min_samples, "", 1, 1e6, "3",
-         "DBSCAN core-point count, the point included (MODEL.md CHOICE)"},
-        {"segregation.cell", &AnalysisOptions::segregation_cell, "mm", 0.01, 1e6, "2 ℓ_p",
-         "side a of the square cells of Σ (MODEL.md CHOICE)"},
-        {"segregation.baseline_samples", &AnalysisOptions::segregation_baseline_samples, "", 1, 1e6,
-         "200", "random-mixing realisations averaged for the Σ baseline"},
-        {"medium_velocity.d", &AnalysisOptions::medium_distance, "mm", 0.0, 1e6, "100",
-         "distance at which the medium speed is reported (the paper's d)"},
-        {"medium_velocity.r_max", &AnalysisOptions::medium_r_max, "mm", 0.01, 1e6, "min(L/2, d)",
-         "range of the medium-velocity profile"},
-        {"medium_velocity.bin", &AnalysisOptions::medium_bin, "mm", 1e-3, 1e3, "1",
-         "radial bin width of the medium-velocity profile"},
-        {"blocks", &AnalysisOptions::blocks, "", 2, 1000, "4",
-         "time blocks for the error bars of window averages (D_r, σ_f, N_avg)"},
+std::vector<KeySpec> make_keys() {
+    const AnalysisOptions d;  // the defaults
+    const auto count = [](int v) { return std::int64_t{v}; };
+    return {
+        real("pair", "r_max")
+            .unit("mm")
+            .def_text("min(L/2, 10 ℓ_p)")
+            .range(closed(0.01, 1e6))
+            .doc("range of g(r), G(r), G₂(r) between polar rods"),
+        real("pair", "bin")
+            .unit("mm")
+            .def(d.pair_bin)
+            .range(closed(1e-3, 1e3))
+            .doc("radial bin width"),
+        real("pair", "medium_r_max")
+            .unit("mm")
+            .def_text("min(L/2, 15 mm)")
+            .range(closed(0.01, 1e6))
+            .doc("range of g(r), G₂(r) between apolar medium rods"),
+        real("corotating", "r_max")
+            .unit("mm")
+            .def_text("min(L/2, 5 ℓ_p)")
+            .range(closed(0.01, 1e6))
+            .doc("range of g(r,θ), G(r,θ)"),
+        integer("corotating", "r_bins")
+            .def(count(d.corotating_r_bins))
+            .integers(2, 10000)
+            .doc("radial bins of g(r,θ), G(r,θ)"),
+        integer("corotating", "theta_bins")
+            .def(count(d.corotating_theta_bins))
+            .integers(4, 10000)
+            .doc("angular bins of g(r,θ), G(r,θ)"),
+        real("corotating", "contour_level")
+            .def(d.contour_level)
+            .range(closed(0.01, 0.99))
+            .doc("flock contour at this fraction of max g(r,θ) (paper: 70 %)"),
+        real("autocorrelation", "max_lag")
+            .unit("s")
+            .def_text("half the steady window")
+            .range(closed(0.0, 1e9))
+            .doc("longest lag of C(t), C₂(t)"),
+        real("autocorrelation", "fit_floor")
+            .def(d.autocorrelation_fit_floor)
+            .range(closed(0.01, 0.99))
+            .doc("D_r is fitted to −ln C = D_r t over the lags where C ≥ this"),
+        real("flocks", "eps")
+            .unit("mm")
+            .def_text("ℓ_p / 2")
+            .range(closed(1e-3, 1e6))
+            .choice("the paper gives none; MODEL.md §4")
+            .doc("DBSCAN neighbourhood radius"),
+        integer("flocks", "min_samples")
+            .def(count(d.flock_min_samples))
+            .integers(1, 1'000'000)
+            .choice("the paper gives none; MODEL.md §4")
+            .doc("DBSCAN core-point count, the point included"),
+        real("segregation", "cell")
+            .unit("mm")
+            .def_text("2 ℓ_p")
+            .range(closed(0.01, 1e6))
+            .choice("MODEL.md §4")
+            .doc("side a of the square cells of Σ"),
+        integer("segregation", "baseline_samples")
+            .def(count(d.segregation_baseline_samples))
+            .integers(1, 1'000'000)
+            .doc("random-mixing realisations averaged for the Σ baseline"),
+        real("medium_velocity", "d")
+            .unit("mm")
+            .def(d.medium_distance)
+            .range(closed(0.0, 1e6))
+            .doc("distance at which the medium speed is reported (the paper's d)"),
+        real("medium_velocity", "r_max")
+            .unit("mm")
+            .def_text("min(L/2, d)")
+            .range(closed(0.01, 1e6))
+            .doc("range of the medium-velocity profile"),
+        real("medium_velocity", "bin")
+            .unit("mm")
+            .def(d.medium_bin)
+            .range(closed(1e-3, 1e3))
+            .doc("radial bin width of the medium-velocity profile"),
+        integer("", "blocks")
+            .def(count(d.blocks))
+            .integers(2, 1000)
+            .doc("time blocks for the error bars of window averages (D_r, σ_f, N_avg)"),
     };
-    return keys;
 }
 
-double parse_number(const std::string& key, const std::string& text) {
-    double v = 0.0;
-    const char* end = text.data() + text.size();
-    const auto [ptr, ec] = std::from_chars(text.data(), end, v);
-    if (ec != std::errc() || ptr != end || !std::isfinite(v))
-        throw InvalidParameter(key, "'" + text + "'", "a finite number");
-    return v;
+// Markdown table cells cannot hold a bare '|'.
+std::string cell(const std::string& text) {
+    std::string out;
+    for (const char c : text) {
+        if (c == '|') out += '\\';
+        out += c;
+    }
+    return out;
 }
 
 }  // namespace
 
+const std::vector<KeySpec>& analysis_option_keys() {
+    static const std::vector<KeySpec> keys = [] {
+        std::vector<KeySpec> k = make_keys();
+        if (k.size() != kFields.size())
+            throw std::logic_error("analysis_option_keys: a key without its field or the reverse");
+        return k;
+    }();
+    return keys;
+}
+
 void set_analysis_option(AnalysisOptions& options, const std::string& key,
                          const std::string& value) {
-    const auto& keys = option_keys();
+    const std::vector<KeySpec>& keys = analysis_option_keys();
     const auto it =
-        std::find_if(keys.begin(), keys.end(), [&](const OptionKey& k) { return key == k.key; });
+        std::find_if(keys.begin(), keys.end(), [&](const KeySpec& k) { return key == k.path(); });
     if (it == keys.end()) {
         std::vector<std::string> names;
-        for (const OptionKey& k : keys)
-            names.emplace_back(k.key);
+        for (const KeySpec& k : keys)
+            names.push_back(k.path());
         const auto match = config::closest_match(key, names);
         throw InvalidParameter("--param " + key, "an unknown key",
                                "one of the keys in docs/analysis.md",
                                match ? "did you mean '" + *match + "'?" : "");
     }
-    const double v = parse_number(it->key, value);
-    require_in_closed_range(it->key, v, it->lo, it->hi, it->unit);
-    if (auto* d = std::get_if<double AnalysisOptions::*>(&it->field)) {
-        options.** d = v;
-    } else {
-        const auto i = std::get<int AnalysisOptions::*>(it->field);
-        if (v != std::floor(v)) throw InvalidParameter(it->key, value, "a whole number");
-        options.*i = static_cast<int>(v);
-    }
+    const config::Value v = config::value_from_text(*it, value);
+    const Field& field = kFields[static_cast<std::size_t>(it - keys.begin())];
+    if (const auto* d = std::get_if<double AnalysisOptions::*>(&field))
+        options.** d = std::get<double>(v);
+    else
+        options.*std::get<int AnalysisOptions::*>(field) =
+            static_cast<int>(std::get<std::int64_t>(v));
 }
 
 AnalysisOptions resolve_analysis_options(AnalysisOptions o, const AnalysisSetup& setup) {
@@ -144,10 +221,13 @@ AnalysisOptions resolve_analysis_options(AnalysisOptions o, const AnalysisSetup&
 std::string analysis_options_reference() {
     std::ostringstream out;
     out << "| key | unit | default | allowed | meaning |\n|---|---|---|---|---|\n";
-    for (const OptionKey& k : option_keys())
-        out << "| `" << k.key << "` | " << (*k.unit ? k.unit : "–") << " | " << k.default_text
-            << " | [" << format_number(k.lo) << ", " << format_number(k.hi) << "] | " << k.meaning
+    for (const KeySpec& k : analysis_option_keys()) {
+        std::string meaning = k.doc;
+        if (!k.choice.empty()) meaning += " (MODEL.md CHOICE)";
+        out << "| `" << k.path() << "` | " << (k.unit.empty() ? "–" : k.unit) << " | "
+            << k.default_doc() << " | " << cell(k.allowed_text()) << " | " << cell(meaning)
             << " |\n";
+    }
     return out.str();
 }
 

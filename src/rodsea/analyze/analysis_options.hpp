@@ -1,10 +1,14 @@
 #pragma once
-// Every knob of `rodsea analyze`, set with `--param KEY=VALUE`. A NaN default is resolved per run
-// from the box and the polar rod length (resolve_analysis_options), so one command line serves
-// runs of any size. Units: mm and s, as everywhere in rodsea.
+// Every knob of `rodsea analyze`, set with `--param KEY=VALUE`. The initialisers below are the
+// defaults (the key table and docs/analysis.md read them); a NaN default is resolved per run from
+// the box and the polar rod length (resolve_analysis_options), so one command line serves runs
+// of any size. Units: mm and s, as everywhere in rodsea.
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
+
+#include "rodsea/config/schema.hpp"
 
 namespace rodsea {
 
@@ -31,6 +35,9 @@ struct AnalysisOptions {
     double medium_bin = 1.0;         // mm
     int blocks = 4;                  // time blocks for window-average error bars
 };
+
+// The keys, in the config's key-table form (table "pair", name "r_max", ...), in docs order.
+const std::vector<config::KeySpec>& analysis_option_keys();
 
 // Sets `key` (e.g. "flocks.eps") from text. Throws InvalidParameter naming the key, the value and
 // the allowed range, with a did-you-mean for a misspelt key.

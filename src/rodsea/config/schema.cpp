@@ -1,8 +1,10 @@
 #include "rodsea/config/schema.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <numbers>
 
+#include "rodsea/config/run_plan.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/number_text.hpp"
 #include "rodsea/shape/sphere_chain.hpp"
@@ -11,61 +13,17 @@ namespace rodsea::config {
 
 namespace {
 
-Interval closed(double lo, double hi) {
-    return {lo, hi, false, false};
-}
-Interval left_open(double lo, double hi) {
-    return {lo, hi, true, false};
-}
-
-// Fluent construction keeps each entry of the table readable as one block.
-class Key {
-  public:
-    Key(std::string table, std::string name, ValueType type) {
-        s_.table = std::move(table);
-        s_.name = std::move(name);
-        s_.type = type;
-    }
-    Key& unit(std::string u) { return s_.unit = std::move(u), *this; }
-    Key& def(Value v) { return s_.default_value = std::move(v), *this; }
-    Key& def_text(std::string t) { return s_.default_text = std::move(t), *this; }
-    Key& example(Value v) { return s_.example = std::move(v), *this; }
-    Key& range(Interval r) { return s_.range = r, *this; }
-    Key& integers(std::int64_t lo, std::int64_t hi) {
-        s_.min_integer = lo;
-        s_.max_integer = hi;
-        return *this;
-    }
-    Key& options(std::vector<std::string> o) { return s_.options = std::move(o), *this; }
-    Key& doc(std::string d) { return s_.doc = std::move(d), *this; }
-    Key& choice(std::string why, KindMask kinds = kAllKinds) {
-        s_.choice = std::move(why);
-        s_.choice_kinds = kinds;
-        return *this;
-    }
-    Key& alternative(std::string key) { return s_.alternative = std::move(key), *this; }
-    Key& kinds(KindMask k) { return s_.kinds = k, *this; }
-    Key& required() { return s_.required = true, *this; }
-    operator KeySpec() const { return s_; }
-
-  private:
-    KeySpec s_;
-};
-
-Key real(std::string table, std::string name) {
-    return Key(std::move(table), std::move(name), ValueType::real);
-}
-Key integer(std::string table, std::string name) {
-    return Key(std::move(table), std::move(name), ValueType::integer);
-}
-
 std::vector<KeySpec> make_keys() {
     constexpr auto int64_max = std::numeric_limits<std::int64_t>::max();
+    // Every default comes from the structs the config fills (one source of defaults).
+    const EngineParameters engine = default_engine_parameters();
+    const RunControl control;
+    const BuilderOptions builder;
     std::vector<KeySpec> k;
     // [box]
     k.push_back(real("box", "side")
                     .unit("mm")
-                    .def(252.0)
+                    .def(engine.box.lx)
                     .range(left_open(0.0, 1e5))
                     .alternative("side_in_polar_lengths")
                     .doc("Side L of the square box, periodic in x and y; the paper's 252 mm = "
@@ -79,13 +37,13 @@ std::vector<KeySpec> make_keys() {
                          "paper: 56)."));
     // [drive]
     k.push_back(real("drive", "gamma")
-                    .def(7.0)
+                    .def(engine.drive.gamma)
                     .range(closed(0.0, 1000.0))
                     .doc("Γ = AΩ²/g, the plates' peak acceleration over g; the amplitude is "
                          "A = Γg/Ω² (43.49 µm at the defaults)."));
     k.push_back(real("drive", "frequency")
                     .unit("Hz")
-                    .def(200.0)
+                    .def(engine.drive.angular_frequency / (2.0 * std::numbers::pi))
                     .range(left_open(0.0, 1e5))
                     .alternative("angular_frequency")
                     .doc("Drive frequency f = Ω/2π (the paper: 200 Hz, period 5 ms)."));
@@ -97,7 +55,7 @@ std::vector<KeySpec> make_keys() {
                     .doc("Ω = 2πf."));
     k.push_back(real("drive", "gap")
                     .unit("mm")
-                    .def(1.40)
+                    .def(engine.drive.gap)
                     .range(left_open(0.0, 100.0))
                     .choice("the paper's 1.2 mm cannot hold the 1.375 mm thick end of its polar "
                             "rod; at 1.40 mm a lone polar rod goes thick → thin as in the "
@@ -107,7 +65,7 @@ std::vector<KeySpec> make_keys() {
                          "must fit."));
     k.push_back(real("drive", "gravity")
                     .unit("mm/s²")
-                    .def(9810.0)
+                    .def(engine.drive.gravity)
                     .range(closed(0.0, 1e6))
                     .choice("the paper does not give g: 9.81 m/s²; MODEL.md §1")
                     .doc("g, pulling every body toward the base between collisions."));
@@ -176,11 +134,11 @@ std::vector<KeySpec> make_keys() {
                  "Table S2)."));
     // [collisions]
     k.push_back(real("collisions", "friction")
-                    .def(0.05)
+                    .def(engine.body_body.friction)
                     .range(closed(0.0, 10.0))
                     .doc("μ, Coulomb friction of every body–body collision (paper, Table S2)."));
     k.push_back(real("collisions", "restitution")
-                    .def(0.30)
+                    .def(engine.body_body.restitution)
                     .range(closed(0.0, 1.0))
                     .doc("e, normal restitution of every body–body collision (paper, Table S2)."));
     k.push_back(Key("collisions.pair", "species", ValueType::name_pair)
@@ -201,7 +159,7 @@ std::vector<KeySpec> make_keys() {
     // [noise]
     k.push_back(real("noise", "epsilon")
                     .unit("1/mm")
-                    .def(0.0)
+                    .def(engine.noise_epsilon)
                     .range(closed(0.0, 1000.0))
                     .alternative("rotational_diffusion")
                     .choice("the kick is added to ω_z (not set), scaled by the pre-collision "
@@ -227,7 +185,7 @@ std::vector<KeySpec> make_keys() {
     // [time]
     k.push_back(real("time", "dt")
                     .unit("s")
-                    .def(1.25e-6)
+                    .def(engine.dt)
                     .range(closed(1e-9, 1e-3))
                     .choice("4000 steps per 5 ms drive period: 5 µs makes a lone polar rod 16 % "
                             "too fast; at 1.25 µs D_r agrees with dt/4 and the speed to 3–5 %; "
@@ -235,7 +193,7 @@ std::vector<KeySpec> make_keys() {
                     .doc("The time step."));
     k.push_back(real("time", "duration")
                     .unit("s")
-                    .def(1.0)
+                    .def(control.duration)
                     .range(left_open(0.0, 1e6))
                     .alternative("periods")
                     .doc("Simulated time; the run takes round(duration/dt) steps."));
@@ -248,7 +206,7 @@ std::vector<KeySpec> make_keys() {
     // [output]
     k.push_back(real("output", "interval")
                     .unit("s")
-                    .def(0.05)
+                    .def(control.output_interval)
                     .range(left_open(0.0, 1e6))
                     .alternative("interval_periods")
                     .doc("Simulated time between trajectory frames and observable rows, "
@@ -261,39 +219,41 @@ std::vector<KeySpec> make_keys() {
                     .doc("The same in drive periods."));
     k.push_back(real("output", "checkpoint_interval")
                     .unit("min")
-                    .def(30.0)
+                    .def(control.checkpoint_interval)
                     .range(left_open(0.0, 1e6))
                     .doc("Wall-clock minutes between checkpoints."));
     // [run]
     k.push_back(integer("run", "seed")
-                    .def(std::int64_t{1})
+                    .def(static_cast<std::int64_t>(engine.seed))
                     .integers(0, int64_max)
                     .doc("Seed of every random choice (initial state, noise signs): the same "
                          "seed gives the same run."));
     k.push_back(integer("run", "threads")
-                    .def(std::int64_t{1})
+                    .def(std::int64_t{control.threads})
                     .integers(1, 256)
                     .doc("Threads of the engine's step (OpenMP). The trajectory is the same, bit "
                          "for bit, on any number of threads; more threads than cores only slow "
                          "it down (docs/performance.md)."));
     // [initial]
-    k.push_back(Key("initial", "orientation", ValueType::option)
-                    .def(std::string("isotropic"))
-                    .options({"isotropic", "aligned"})
-                    .doc("isotropic: random in-plane angles; aligned: every rod along +x."));
+    k.push_back(
+        Key("initial", "orientation", ValueType::option)
+            .def(std::string(builder.orientation == InitialOrientation::isotropic ? "isotropic"
+                                                                                  : "aligned"))
+            .options({"isotropic", "aligned"})
+            .doc("isotropic: random in-plane angles; aligned: every rod along +x."));
     k.push_back(integer("initial", "randomisation_sweeps")
-                    .def(std::int64_t{50})
+                    .def(std::int64_t{builder.randomisation_sweeps})
                     .integers(0, 100'000)
                     .doc("Monte Carlo sweeps that randomise the lattice start."));
     // [engine]
     k.push_back(integer("engine", "max_sweeps")
-                    .def(std::int64_t{2000})
+                    .def(std::int64_t{engine.max_sweeps})
                     .integers(1, 1'000'000'000)
                     .doc("Impulse sweeps per step before the contacts left count as "
                          "unresolved."));
     k.push_back(real("engine", "approach_tolerance")
                     .unit("mm/s")
-                    .def(1e-6)
+                    .def(engine.approach_tolerance)
                     .range(closed(0.0, 1000.0))
                     .doc("Normal relative speeds above −tolerance count as not approaching."));
     return k;
@@ -310,6 +270,38 @@ std::string with_unit(const std::string& text, const std::string& unit) {
 }
 
 }  // namespace
+
+Interval closed(double lo, double hi) {
+    return {lo, hi, false, false};
+}
+Interval left_open(double lo, double hi) {
+    return {lo, hi, true, false};
+}
+
+Key real(std::string table, std::string name) {
+    return Key(std::move(table), std::move(name), ValueType::real);
+}
+Key integer(std::string table, std::string name) {
+    return Key(std::move(table), std::move(name), ValueType::integer);
+}
+
+Value value_from_text(const KeySpec& spec, const std::string& text) {
+    double v = 0.0;
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, v);
+    const bool number = ec == std::errc() && ptr == end && !text.empty();
+    if (spec.type == ValueType::integer) {
+        if (!number || v != std::floor(v) || !(v >= static_cast<double>(spec.min_integer)) ||
+            !(v <= static_cast<double>(spec.max_integer)))
+            throw InvalidParameter(spec.path(), toml_literal(Value{text}), spec.allowed_text());
+        return static_cast<std::int64_t>(v);
+    }
+    if (spec.type != ValueType::real)
+        throw InvalidParameter(spec.path(), toml_literal(Value{text}), "a key with a number value");
+    if (!number || !spec.range.contains(v))
+        throw InvalidParameter(spec.path(), toml_literal(Value{text}), spec.allowed_text());
+    return v;
+}
 
 KindMask kind_bit(BodyKind kind) {
     switch (kind) {
@@ -328,6 +320,10 @@ bool Interval::contains(double v) const {
     const bool above = lo_open ? v > lo : v >= lo;
     const bool below = hi_open ? v < hi : v <= hi;
     return above && below && std::isfinite(v);
+}
+
+std::string KeySpec::path() const {
+    return table.empty() ? name : table + "." + name;
 }
 
 std::string KeySpec::type_text() const {
@@ -482,7 +478,7 @@ std::optional<Value> species_default(std::string_view key, BodyKind kind, double
                 return std::int64_t{1};
         }
     }
-    if (key == "mass") return kind == BodyKind::polar_rod ? 1.0 : 0.2;  // MODEL.md: ratio 0.20
+    if (key == "mass") return kind == BodyKind::polar_rod ? kPolarRodMass : kMediumMass;
     if (key == "plate_friction" || key == "plate_restitution") {
         // The engine's species constructors hold Table S2 and the bead CHOICE; build each once.
         static const ContactCoefficients polar = polar_rod_species().plate;

@@ -54,10 +54,10 @@ struct KeySpec {
     KindMask kinds = kAllKinds;         // [[species]] keys: the kinds it applies to
     bool required = false;
 
-    std::string path() const { return table + "." + name; }
-    std::string type_text() const;            // "real", "integer", ...
-    std::string allowed_text() const;         // "(0, 100000] mm", "\"isotropic\" or \"aligned\""
-    std::string default_doc() const;          // the default as the docs show it
+    std::string path() const;          // "table.name", or the name of a key outside any table
+    std::string type_text() const;     // "real", "integer", ...
+    std::string allowed_text() const;  // "(0, 100000] mm", "\"isotropic\" or \"aligned\""
+    std::string default_doc() const;   // the default as the docs show it
     std::string shown(const Value& v) const;  // a value as messages show it: "1.5 mm"
     bool is_choice_for(BodyKind kind) const {
         return !choice.empty() && (choice_kinds & kind_bit(kind));
@@ -69,6 +69,50 @@ struct TableSpec {
     bool array = false;  // an array of tables ([[species]])
     std::string doc;
 };
+
+Interval closed(double lo, double hi);
+Interval left_open(double lo, double hi);
+
+// Fluent construction keeps each entry of a key table readable as one block:
+//   real("drive", "gap").unit("mm").def(1.40).range(left_open(0.0, 100.0)).doc("...")
+class Key {
+  public:
+    Key(std::string table, std::string name, ValueType type) {
+        s_.table = std::move(table);
+        s_.name = std::move(name);
+        s_.type = type;
+    }
+    Key& unit(std::string u) { return s_.unit = std::move(u), *this; }
+    Key& def(Value v) { return s_.default_value = std::move(v), *this; }
+    Key& def_text(std::string t) { return s_.default_text = std::move(t), *this; }
+    Key& example(Value v) { return s_.example = std::move(v), *this; }
+    Key& range(Interval r) { return s_.range = r, *this; }
+    Key& integers(std::int64_t lo, std::int64_t hi) {
+        s_.min_integer = lo;
+        s_.max_integer = hi;
+        return *this;
+    }
+    Key& options(std::vector<std::string> o) { return s_.options = std::move(o), *this; }
+    Key& doc(std::string d) { return s_.doc = std::move(d), *this; }
+    Key& choice(std::string why, KindMask kinds = kAllKinds) {
+        s_.choice = std::move(why);
+        s_.choice_kinds = kinds;
+        return *this;
+    }
+    Key& alternative(std::string key) { return s_.alternative = std::move(key), *this; }
+    Key& kinds(KindMask k) { return s_.kinds = k, *this; }
+    Key& required() { return s_.required = true, *this; }
+    operator KeySpec() const { return s_; }
+
+  private:
+    KeySpec s_;
+};
+Key real(std::string table, std::string name);
+Key integer(std::string table, std::string name);
+
+// A number given as text (a command-line KEY=VALUE) checked against a real or integer key:
+// throws InvalidParameter naming the key, the text and its allowed range.
+Value value_from_text(const KeySpec& spec, const std::string& text);
 
 const std::vector<TableSpec>& config_tables();  // in file order
 const std::vector<KeySpec>& config_keys();      // in file order, grouped by table

@@ -36,14 +36,19 @@ struct Species {
     ContactCoefficients plate;  // body–base and body–lid
 };
 
+// Masses in an arbitrary unit: only ratios matter, and the paper's m_apolar / m_polar = 0.20
+// (MODEL.md CHOICE: kept for every ℓ_a and for beads).
+inline constexpr double kPolarRodMass = 1.0;
+inline constexpr double kMediumMass = 0.2;
+
 // The paper's species with MODEL.md's defaults (Table S2 coefficients, mass ratio 0.20).
-Species polar_rod_species(double mass = 1.0);
-Species apolar_rod_species(double length_mm, double mass = 0.2);
-Species bead_species(double mass = 0.2);
+Species polar_rod_species(double mass = kPolarRodMass);
+Species apolar_rod_species(double length_mm, double mass = kMediumMass);
+Species bead_species(double mass = kMediumMass);
 
 struct Box {
-    double lx = 90.0;  // mm, periodic
-    double ly = 90.0;  // mm, periodic
+    double lx = 252.0;  // mm, periodic: the paper's 56 ℓ_p
+    double ly = 252.0;  // mm, periodic
 };
 
 struct EngineParameters {
@@ -66,6 +71,12 @@ struct EngineParameters {
         return body_body_by_pair.empty() ? body_body : body_body_by_pair[a * species.size() + b];
     }
 };
+
+// Every parameter at its default: the paper's values and MODEL.md's CHOICEs, the ones the config
+// schema documents and fills in (one source of defaults: the initialisers above).
+inline EngineParameters default_engine_parameters() {
+    return {};
+}
 
 // Throws InvalidParameter naming the first bad parameter, its value and the allowed range.
 void validate(const EngineParameters& p);
