@@ -24,7 +24,8 @@ LAYERS = [
     ["analysis", "builder"],
     ["scenes", "config"],
     ["io"],
-    ["run", "calibration", "analyze", "meanfield"],
+    ["calibration", "analyze", "meanfield"],
+    ["run"],
     ["view"],
 ]
 LAYER = {module: level for level, modules in enumerate(LAYERS) for module in modules}

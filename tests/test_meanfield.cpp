@@ -327,7 +327,7 @@ TEST(MeanField, CommandReportsRegimeAndSteadyValue) {
 
     std::ostringstream help;
     EXPECT_EQ(meanfield_command({"--help"}, help), 0);
-    EXPECT_EQ(help.str(), kMeanfieldHelp);
+    EXPECT_EQ(help.str(), help_text(meanfield_command_spec()));
 }
 
 // The CSV holds every sample as the shortest text that reads back as the same double, so it

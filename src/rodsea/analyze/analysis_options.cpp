@@ -231,4 +231,12 @@ std::string analysis_options_reference() {
     return out.str();
 }
 
+std::string analysis_options_help() {
+    std::ostringstream out;
+    for (const KeySpec& k : analysis_option_keys())
+        out << "  " << k.path() << ": " << k.doc << "; default " << k.default_doc() << ", allowed "
+            << k.allowed_text() << (k.choice.empty() ? "" : " (MODEL.md CHOICE)") << "\n";
+    return out.str();
+}
+
 }  // namespace rodsea

@@ -48,7 +48,9 @@ void set_analysis_option(AnalysisOptions& options, const std::string& key,
 // the box, bins that fit). Throws InvalidParameter naming the key.
 AnalysisOptions resolve_analysis_options(AnalysisOptions options, const AnalysisSetup& setup);
 
-// The key reference as a Markdown table (docs/analysis.md, `rodsea analyze --help`).
+// The key reference as a Markdown table (docs/analysis.md), and as lines for `rodsea analyze
+// --help`.
 std::string analysis_options_reference();
+std::string analysis_options_help();
 
 }  // namespace rodsea

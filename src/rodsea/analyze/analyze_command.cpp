@@ -2,48 +2,52 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <ostream>
 
 #include "rodsea/analyze/analyze_run.hpp"
 #include "rodsea/analyze/observable_registry.hpp"
+#include "rodsea/cli/arguments.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
 
 namespace rodsea {
 
-const char* const kAnalyzeHelp =
-    R"(rodsea analyze RUN_DIR [RUN_DIR ...] [--observables NAME,...] [--from T]
-               [--param KEY=VALUE ...] [--out DIR] [--table FILE] [--quiet]
-
-Turns trajectories written by `rodsea run` into the paper's numbers (docs/analysis.md). Each run
-gets RUN_DIR/analysis/ (or --out DIR, one run only):
-  analysis.json   every steady-state scalar with its error bar, the parameters used, the window
-  <table>.csv     curves and time series (order_parameters, pair_correlation_*, flocks, ...)
-  analysis.h5     g(r,θ) and G(r,θ) maps with their bin edges; flock labels per frame
-  summary.csv     one row: the run's parameters and every scalar (also for several runs: --table)
-Everything is checked for every run before any frame is read.
-
-  --observables   comma-separated subset of: order, pair, corotating, autocorrelation, flocks,
-                  segregation, medium_velocity (default: all that the run's species allow)
-  --from T        start of the steady window, s; default: the earliest start that maximises the
-                  number of independent samples of the run's P (Chodera's rule)
-  --param K=V     an analysis parameter (units in docs/analysis.md), e.g. flocks.eps=2.25
-  --out DIR       output directory for a single run (default RUN_DIR/analysis)
-  --table FILE    with several runs: the table with one row per run (default
-                  analysis-summary.csv in the current directory)
-  --quiet         no plan and no progress lines
-)";
+const CommandSpec& analyze_command_spec() {
+    static const CommandSpec spec{
+        "analyze",
+        "RUN_DIR [RUN_DIR ...] [--observables NAME,...] [--from T] [--param KEY=VALUE ...] "
+        "[--out DIR] [--table FILE] [--quiet]",
+        "the paper's observables with error bars",
+        "Turns trajectories written by `rodsea run` into the paper's numbers (docs/analysis.md). "
+        "Each run gets RUN_DIR/analysis/ (or --out DIR, one run only):\n"
+        "analysis.json: every steady-state scalar with its error bar, the parameters used, the "
+        "window\n"
+        "<table>.csv: curves and time series (order_parameters, pair_correlation_*, flocks, ...)\n"
+        "analysis.h5: g(r,θ) and G(r,θ) maps with their bin edges; flock labels per frame\n"
+        "summary.csv: one row: the run's parameters and every scalar (also for several runs: "
+        "--table)\n"
+        "Everything is checked for every run before any frame is read.",
+        {{"--observables", "NAME,...",
+          "comma-separated subset of: order, pair, corotating, autocorrelation, flocks, "
+          "segregation, medium_velocity (default: all that the run's species allow)"},
+         {"--from", "T",
+          "start of the steady window, s; default: the earliest start that maximises the number "
+          "of independent samples of the run's P (Chodera's rule)"},
+         {"--param", "KEY=VALUE",
+          "an analysis parameter, e.g. flocks.eps=2.25 (the keys below); may be repeated", true},
+         {"--out", "DIR", "output directory for a single run (default RUN_DIR/analysis)"},
+         {"--table", "FILE",
+          "with several runs: the table with one row per run (default analysis-summary.csv in the "
+          "current directory)"},
+         {"--quiet", "", "no plan and no progress lines"}},
+        "Parameters (--param KEY=VALUE; units mm and s; automatic defaults follow the box side L "
+        "and the polar rod length ℓ_p):\n" +
+            analysis_options_help()};
+    return spec;
+}
 
 namespace {
-
-double parse_seconds(const std::string& flag, const std::string& text) {
-    double v = 0.0;
-    const char* end = text.data() + text.size();
-    const auto [ptr, ec] = std::from_chars(text.data(), end, v);
-    if (ec != std::errc() || ptr != end || !std::isfinite(v))
-        throw InvalidParameter(flag, "'" + text + "'", "a time in seconds, e.g. 0.5");
-    return v;
-}
 
 std::vector<std::string> split_commas(const std::string& text) {
     std::vector<std::string> parts;
@@ -63,44 +67,31 @@ std::vector<std::string> split_commas(const std::string& text) {
 }  // namespace
 
 int analyze_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& log) {
-    AnalyzeRequest request;
-    std::vector<std::filesystem::path> runs;
-    std::optional<std::filesystem::path> out_dir, table;
-    bool quiet = false;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        const auto next = [&]() -> const std::string& {
-            if (i + 1 >= args.size()) throw InvalidParameter(a, "nothing", "a value after it");
-            return args[++i];
-        };
-        if (a == "--help") {
-            out << kAnalyzeHelp;
-            return 0;
-        } else if (a == "--quiet") {
-            quiet = true;
-        } else if (a == "--observables") {
-            request.observables = split_commas(next());
-            if (request.observables.empty())
-                throw InvalidParameter("--observables", "''", "a comma-separated list of names");
-        } else if (a == "--from") {
-            request.from = parse_seconds(a, next());
-        } else if (a == "--param") {
-            const std::string& kv = next();
-            const auto eq = kv.find('=');
-            if (eq == std::string::npos)
-                throw InvalidParameter("--param", kv, "KEY=VALUE, e.g. flocks.eps=2.25");
-            set_analysis_option(request.options, kv.substr(0, eq), kv.substr(eq + 1));
-        } else if (a == "--out") {
-            out_dir = next();
-        } else if (a == "--table") {
-            table = next();
-        } else if (a.rfind("--", 0) == 0) {
-            throw InvalidParameter(a, "an unknown option of 'analyze'",
-                                   "--observables --from --param --out --table --quiet --help");
-        } else {
-            runs.emplace_back(a);
-        }
+    const Arguments words = parse_arguments(args, analyze_command_spec());
+    if (words.help) {
+        out << help_text(analyze_command_spec());
+        return 0;
     }
+    AnalyzeRequest request;
+    const bool quiet = words.has("--quiet");
+    if (const auto names = words.value("--observables")) {
+        request.observables = split_commas(*names);
+        if (request.observables.empty())
+            throw InvalidParameter("--observables", "''", "a comma-separated list of names");
+    }
+    if (const auto from = words.value("--from"))
+        request.from = parse_number("--from", *from, -std::numeric_limits<double>::infinity(),
+                                    std::numeric_limits<double>::infinity(), "s");
+    for (const std::string& kv : words.values_of("--param")) {
+        const auto eq = kv.find('=');
+        if (eq == std::string::npos)
+            throw InvalidParameter("--param", kv, "KEY=VALUE, e.g. flocks.eps=2.25");
+        set_analysis_option(request.options, kv.substr(0, eq), kv.substr(eq + 1));
+    }
+    std::optional<std::filesystem::path> out_dir, table;
+    if (const auto dir = words.value("--out")) out_dir = *dir;
+    if (const auto file = words.value("--table")) table = *file;
+    const std::vector<std::filesystem::path> runs(words.positional.begin(), words.positional.end());
     if (runs.empty())
         throw InvalidParameter("RUN_DIR", "none given",
                                "one or more run directories (see rodsea analyze --help)");

@@ -5,9 +5,11 @@
 #include <string>
 #include <vector>
 
+#include "rodsea/cli/arguments.hpp"
+
 namespace rodsea {
 
-extern const char* const kAnalyzeHelp;
+const CommandSpec& analyze_command_spec();
 
 // `args` are the words after `rodsea analyze`. Throws InvalidParameter / FileError; returns 0.
 int analyze_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& log);

@@ -25,26 +25,29 @@
 
 namespace rodsea {
 
-const char* const kCalibrateHelp =
-    R"(rodsea calibrate CONFIG [--out DIR] [--threads N] [--quiet]
-
-Single-body experiments (docs/validation.md): for every combination of the ε, gaps and time steps
-in CONFIG's [calibrate] table, `copies` independent bodies of one kind are each shaken alone for
-`warmup` + `duration` seconds. Each point gives the mean speed along the body's axis (+: toward
-body +x, thick → thin for a polar rod) and the fraction of copies going that way, the speed
-distribution (per drive period), and D_r from C(t) = exp(−D_r t) with a jackknife error. The
-points run in parallel. DIR (default out/<CONFIG name>) receives:
-  calibration.csv        one row per point: gap, dt, ε, D_r ± err, speed ± err, ...
-  speed_distribution.csv the per-period axial speeds of each point as a histogram
-  calibrate.toml         CONFIG as given
-
-  --out DIR      output directory (replaced files: calibration.csv, speed_distribution.csv,
-                 calibrate.toml)
-  --threads N    worker threads, [1, 256] (default: the machine's cores)
-  --quiet        no plan and no progress
-
-CONFIG keys (units and ranges):
-)";
+const CommandSpec& calibrate_command_spec() {
+    static const CommandSpec spec{
+        "calibrate",
+        "CONFIG [--out DIR] [--threads N] [--quiet]",
+        "single-body speed and D_r over ε, gap and dt",
+        "Single-body experiments (docs/validation.md): for every combination of the ε, gaps and "
+        "time steps in CONFIG's [calibrate] table, `copies` independent bodies of one kind are "
+        "each shaken alone for `warmup` + `duration` seconds. Each point gives the mean speed "
+        "along the body's axis (+: toward body +x, thick → thin for a polar rod) and the "
+        "fraction of copies going that way, the speed distribution (per drive period), and D_r "
+        "from C(t) = exp(−D_r t) with a jackknife error. The points run in parallel. DIR "
+        "(default out/<CONFIG name>) receives:\n"
+        "calibration.csv: one row per point: gap, dt, ε, D_r ± err, speed ± err, ...\n"
+        "speed_distribution.csv: the per-period axial speeds of each point as a histogram\n"
+        "calibrate.toml: CONFIG as given",
+        {{"--out", "DIR",
+          "output directory (replaced files: calibration.csv, speed_distribution.csv, "
+          "calibrate.toml)"},
+         {"--threads", "N", "worker threads, [1, 256] (default: the machine's cores)"},
+         {"--quiet", "", "no plan and no progress"}},
+        std::string("CONFIG keys (units and ranges):\n") + kCalibrationKeysHelp};
+    return spec;
+}
 
 namespace {
 
@@ -52,11 +55,6 @@ struct PointResult {
     SingleBodyExperiment experiment;
     SingleBodyResult result;
 };
-
-// Non-finite values (no copy went either way) read back as NaN from "nan".
-std::string csv_number(double v) {
-    return std::isfinite(v) ? exact_number(v) : "nan";
-}
 
 double percentile(std::vector<double> v, double q) {
     if (v.empty()) return std::nan("");
@@ -76,16 +74,17 @@ std::string calibration_csv(const std::vector<PointResult>& points) {
     for (const PointResult& p : points) {
         const SingleBodyExperiment& e = p.experiment;
         const SingleBodyResult& r = p.result;
-        out << to_string(e.species.kind) << ',' << csv_number(e.drive.gap) << ','
-            << csv_number(e.dt) << ',' << csv_number(e.epsilon) << ','
-            << csv_number(r.rotational_diffusion.mean) << ','
-            << csv_number(r.rotational_diffusion.error) << ',' << csv_number(r.axial_speed.mean)
-            << ',' << csv_number(r.axial_speed.error) << ',' << csv_number(r.transverse_speed.mean)
-            << ',' << csv_number(r.transverse_speed.error) << ',' << csv_number(r.forward_fraction)
-            << ',' << csv_number(percentile(r.period_speeds, 0.1)) << ','
-            << csv_number(percentile(r.period_speeds, 0.5)) << ','
-            << csv_number(percentile(r.period_speeds, 0.9)) << ',' << e.copies << ','
-            << csv_number(e.duration) << ',' << r.unresolved << '\n';
+        out << to_string(e.species.kind) << ',' << exact_number(e.drive.gap) << ','
+            << exact_number(e.dt) << ',' << exact_number(e.epsilon) << ','
+            << exact_number(r.rotational_diffusion.mean) << ','
+            << exact_number(r.rotational_diffusion.error) << ',' << exact_number(r.axial_speed.mean)
+            << ',' << exact_number(r.axial_speed.error) << ','
+            << exact_number(r.transverse_speed.mean) << ','
+            << exact_number(r.transverse_speed.error) << ',' << exact_number(r.forward_fraction)
+            << ',' << exact_number(percentile(r.period_speeds, 0.1)) << ','
+            << exact_number(percentile(r.period_speeds, 0.5)) << ','
+            << exact_number(percentile(r.period_speeds, 0.9)) << ',' << e.copies << ','
+            << exact_number(e.duration) << ',' << r.unresolved << '\n';
     }
     return out.str();
 }
@@ -115,10 +114,11 @@ std::string distribution_csv(const std::vector<PointResult>& points) {
                 1.0;
         const SingleBodyExperiment& e = points[i].experiment;
         for (int b = 0; b < kBins; ++b)
-            out << i << ',' << csv_number(e.drive.gap) << ',' << csv_number(e.dt) << ','
-                << csv_number(e.epsilon) << ',' << csv_number(lo + b * width) << ','
-                << csv_number(lo + (b + 1) * width) << ','
-                << csv_number(v.empty() ? 0.0 : counts[b] / (static_cast<double>(v.size()) * width))
+            out << i << ',' << exact_number(e.drive.gap) << ',' << exact_number(e.dt) << ','
+                << exact_number(e.epsilon) << ',' << exact_number(lo + b * width) << ','
+                << exact_number(lo + (b + 1) * width) << ','
+                << exact_number(v.empty() ? 0.0
+                                          : counts[b] / (static_cast<double>(v.size()) * width))
                 << '\n';
     }
     return out.str();
@@ -127,10 +127,9 @@ std::string distribution_csv(const std::vector<PointResult>& points) {
 }  // namespace
 
 int calibrate_command(const std::vector<std::string>& words, std::ostream& out, std::ostream&) {
-    const Arguments args =
-        parse_arguments(words, {"--out", "--threads"}, {"--quiet", "--help"}, "calibrate");
-    if (args.has("--help")) {
-        out << kCalibrateHelp << kCalibrationKeysHelp;
+    const Arguments args = parse_arguments(words, calibrate_command_spec());
+    if (args.help) {
+        out << help_text(calibrate_command_spec());
         return 0;
     }
     if (args.positional.size() != 1)

@@ -1,13 +1,15 @@
 #pragma once
 // `rodsea calibrate CONFIG`: single-body experiments over a grid of noise amplitudes ε, gaps w
-// and time steps dt (see kCalibrateHelp), run in parallel, written as one table.
+// and time steps dt (see calibrate_command_spec()), run in parallel, written as one table.
 #include <iosfwd>
 #include <string>
 #include <vector>
 
+#include "rodsea/cli/arguments.hpp"
+
 namespace rodsea {
 
-extern const char* const kCalibrateHelp;
+const CommandSpec& calibrate_command_spec();
 
 // `args` are the words after `rodsea calibrate`. Checks the whole config before any run;
 // throws InvalidParameter (exit 2) or FileError (exit 74); returns the exit code otherwise.

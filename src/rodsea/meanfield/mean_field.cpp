@@ -14,39 +14,12 @@
 #include <string>
 #include <vector>
 
+#include "rodsea/cli/arguments.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
 #include "rodsea/number_text.hpp"
 
 namespace rodsea {
-
-const char* const kMeanfieldHelp =
-    R"(rodsea meanfield [--a A] [--lambda L] [--b B] [--friction G] [--alpha AL] [--rho R]
-                 [--p0 P0] [--angle RAD] [--v0 V0] [--duration T] [--dt DT] [--samples N]
-                 [--csv FILE]
-
-Integrates the paper's mean-field model (End Matter; docs/meanfield.md) with fixed-step RK4:
-  dP/dt     = -a P + lambda v - b |P|^2 P        P: polar order (2-D, dimensionless)
-  rho dv/dt = -Gamma_f v + alpha P               v: medium velocity (2-D, mm/s)
-Prints the parameters, c = alpha lambda/Gamma_f - a and the closed-form steady
-|P| = sqrt((alpha lambda - a Gamma_f)/(b Gamma_f)) (0 when c <= 0), then the trajectory, then the
-steady |P| reached numerically against the closed form. M below is any mass unit.
-
-  --a A          relaxation rate of P, 1/s (about D_r at large noise; < 0 allowed)    [0.1]
-  --lambda L     flow-induced ordering, 1/mm, >= 0                                    [0.15]
-  --b B          saturation, 1/s, >= 0                                                [1]
-  --friction G   Gamma_f, plate friction, M mm^-2 s^-1, > 0                           [1]
-  --alpha AL     active forcing of the medium, M mm^-1 s^-2, >= 0                     [4]
-  --rho R        mass per area, M mm^-2, > 0                                          [0.1]
-  --p0 P0        initial |P|, >= 0                                                    [0.01]
-  --angle RAD    direction of P0 and v0, rad                                          [0]
-  --v0 V0        initial v along that direction, mm/s                                 [0]
-  --duration T   simulated time, s, > 0                                               [30]
-  --dt DT        time step, s, > 0 and below the RK4 stability limit (printed)        [0.001]
-  --samples N    number of output intervals, 1 .. steps                               [30]
-  --csv FILE     write the trajectory as CSV (t,Px,Py,vx,vy,P,P_adiabatic) instead of a table;
-                 the file appears complete or not at all
-)";
 
 namespace {
 
@@ -231,81 +204,87 @@ struct MeanfieldOptions {
     bool help = false;
 };
 
-const std::vector<std::string> kValuedOptions = {
-    "--a",     "--lambda", "--b",        "--friction", "--alpha",   "--rho", "--p0",
-    "--angle", "--v0",     "--duration", "--dt",       "--samples", "--csv"};
+}  // namespace
 
-std::string allowed_options() {
-    std::string all;
-    for (const std::string& o : kValuedOptions)
-        all += o + " ";
-    return all + "--help";
+const CommandSpec& meanfield_command_spec() {
+    static const CommandSpec spec = [] {
+        const MeanfieldOptions d;  // the defaults, shown in the help
+        const MeanFieldParameters& m = d.model;
+        const auto def = [](double v) { return "; default " + format_number(v); };
+        return CommandSpec{
+            "meanfield",
+            "[--a A] [--lambda L] [--b B] [--friction G] [--alpha AL] [--rho R] [--p0 P0] "
+            "[--angle RAD] [--v0 V0] [--duration T] [--dt DT] [--samples N] [--csv FILE]",
+            "the paper's mean-field model",
+            "Integrates the paper's mean-field model (End Matter; docs/meanfield.md) with "
+            "fixed-step RK4:\n"
+            "dP/dt = -a P + lambda v - b |P|^2 P  (P: polar order, 2-D, dimensionless)\n"
+            "rho dv/dt = -Gamma_f v + alpha P  (v: medium velocity, 2-D, mm/s)\n"
+            "Prints the parameters, c = alpha lambda/Gamma_f - a and the closed-form steady "
+            "|P| = sqrt((alpha lambda - a Gamma_f)/(b Gamma_f)) (0 when c <= 0), then the "
+            "trajectory, then the steady |P| reached numerically against the closed form. M "
+            "below is any mass unit.",
+            {{"--a", "A",
+              "relaxation rate of P, 1/s (about D_r at large noise; < 0 allowed)" + def(m.a)},
+             {"--lambda", "L", "flow-induced ordering, 1/mm, >= 0" + def(m.lambda)},
+             {"--b", "B", "saturation, 1/s, >= 0" + def(m.b)},
+             {"--friction", "G", "Gamma_f, plate friction, M mm^-2 s^-1, > 0" + def(m.friction)},
+             {"--alpha", "AL", "active forcing of the medium, M mm^-1 s^-2, >= 0" + def(m.alpha)},
+             {"--rho", "R", "mass per area, M mm^-2, > 0" + def(m.rho)},
+             {"--p0", "P0", "initial |P|, >= 0" + def(d.p0)},
+             {"--angle", "RAD", "direction of P0 and v0, rad" + def(d.angle)},
+             {"--v0", "V0", "initial v along that direction, mm/s" + def(d.v0)},
+             {"--duration", "T", "simulated time, s, > 0" + def(d.duration)},
+             {"--dt", "DT",
+              "time step, s, > 0 and below the RK4 stability limit (printed)" + def(d.dt)},
+             {"--samples", "N",
+              "number of output intervals, 1 .. steps" + def(static_cast<double>(d.samples))},
+             {"--csv", "FILE",
+              "write the trajectory as CSV (t,Px,Py,vx,vy,P,P_adiabatic) instead of a table; the "
+              "file appears complete or not at all"}},
+            ""};
+    }();
+    return spec;
 }
 
-double parse_number(const std::string& name, const std::string& text, const std::string& unit) {
-    const char* begin = text.c_str();
-    char* end = nullptr;
-    const double v = text.empty() || std::isspace(static_cast<unsigned char>(text[0]))
-                         ? 0.0
-                         : std::strtod(begin, &end);
-    if (end == nullptr || end == begin || *end != '\0')
-        throw InvalidParameter(name, "'" + text + "'",
-                               "a number" + (unit.empty() ? "" : " in " + unit));
-    require_finite(name, v, unit);
-    return v;
-}
+namespace {
 
-long long parse_count(const std::string& name, const std::string& text) {
-    long long v = 0;
-    const char* end = text.data() + text.size();
-    const auto [ptr, ec] = std::from_chars(text.data(), end, v);
-    if (ec != std::errc() || ptr != end || text.empty())
-        throw InvalidParameter(name, "'" + text + "'", "an integer >= 1");
-    require_positive_count(name, v);
-    return v;
+// A finite number (its range is the model's to check, with the model's words).
+double finite_number(const Arguments& a, const char* flag, double fallback,
+                     const std::string& unit) {
+    const auto text = a.value(flag);
+    return text ? parse_number(flag, *text, -std::numeric_limits<double>::infinity(),
+                               std::numeric_limits<double>::infinity(), unit)
+                : fallback;
 }
 
 MeanfieldOptions parse_options(const std::vector<std::string>& args) {
     MeanfieldOptions o;
-    std::map<std::string, std::string> given;
-    for (size_t i = 0; i < args.size(); ++i) {
-        const std::string& arg = args[i];
-        if (arg == "--help" || arg == "-h") {
-            o.help = true;
-            continue;
-        }
-        if (std::find(kValuedOptions.begin(), kValuedOptions.end(), arg) == kValuedOptions.end()) {
-            const bool option = arg.rfind("-", 0) == 0;
-            throw InvalidParameter(
-                arg, option ? "an unknown option of 'meanfield'" : "an unexpected argument",
-                allowed_options());
-        }
-        if (i + 1 >= args.size()) throw InvalidParameter(arg, "nothing", "a value after it");
-        if (given.count(arg) != 0)
-            throw InvalidParameter(arg, "given twice ('" + given[arg] + "', '" + args[i + 1] + "')",
-                                   "at most once");
-        given[arg] = args[++i];
+    const Arguments a = parse_arguments(args, meanfield_command_spec());
+    if (a.help) {
+        o.help = true;
+        return o;
     }
-    const auto number = [&](const std::string& name, double& field, const std::string& unit) {
-        if (const auto it = given.find(name); it != given.end())
-            field = parse_number(name, it->second, unit);
-    };
-    number("--a", o.model.a, "1/s");
-    number("--lambda", o.model.lambda, "1/mm");
-    number("--b", o.model.b, "1/s");
-    number("--friction", o.model.friction, "M mm^-2 s^-1");
-    number("--alpha", o.model.alpha, "M mm^-1 s^-2");
-    number("--rho", o.model.rho, "M mm^-2");
-    number("--p0", o.p0, "");
-    number("--angle", o.angle, "rad");
-    number("--v0", o.v0, "mm/s");
-    number("--duration", o.duration, "s");
-    number("--dt", o.dt, "s");
-    if (const auto it = given.find("--samples"); it != given.end())
-        o.samples = parse_count("--samples", it->second);
-    if (const auto it = given.find("--csv"); it != given.end()) {
-        if (it->second.empty()) throw InvalidParameter("--csv", "''", "a file name");
-        o.csv = std::filesystem::path(it->second);
+    if (!a.positional.empty())
+        throw InvalidParameter(a.positional[0], "an unexpected argument",
+                               "only options (see rodsea meanfield --help)");
+    MeanFieldParameters& m = o.model;
+    m.a = finite_number(a, "--a", m.a, "1/s");
+    m.lambda = finite_number(a, "--lambda", m.lambda, "1/mm");
+    m.b = finite_number(a, "--b", m.b, "1/s");
+    m.friction = finite_number(a, "--friction", m.friction, "M mm^-2 s^-1");
+    m.alpha = finite_number(a, "--alpha", m.alpha, "M mm^-1 s^-2");
+    m.rho = finite_number(a, "--rho", m.rho, "M mm^-2");
+    o.p0 = finite_number(a, "--p0", o.p0, "");
+    o.angle = finite_number(a, "--angle", o.angle, "rad");
+    o.v0 = finite_number(a, "--v0", o.v0, "mm/s");
+    o.duration = finite_number(a, "--duration", o.duration, "s");
+    o.dt = finite_number(a, "--dt", o.dt, "s");
+    if (const auto text = a.value("--samples"))
+        o.samples = parse_count("--samples", *text, 1, std::numeric_limits<long long>::max());
+    if (const auto text = a.value("--csv")) {
+        if (text->empty()) throw InvalidParameter("--csv", "''", "a file name");
+        o.csv = std::filesystem::path(*text);
     }
     return o;
 }
@@ -490,7 +469,7 @@ void report_result(const MeanfieldPlan& plan, const std::vector<MeanFieldSample>
 int meanfield_command(const std::vector<std::string>& args, std::ostream& out) {
     const MeanfieldOptions options = parse_options(args);
     if (options.help) {
-        out << kMeanfieldHelp;
+        out << help_text(meanfield_command_spec());
         return 0;
     }
     const MeanfieldPlan plan = make_plan(options);

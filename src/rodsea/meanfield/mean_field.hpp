@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "rodsea/cli/arguments.hpp"
+
 namespace rodsea {
 
 // Units: time in s, P dimensionless, v in mm/s, M any mass unit (the simulator's masses are in
@@ -103,6 +105,6 @@ std::vector<MeanFieldSample> integrate_mean_field(const MeanFieldParameters& p,
 // FileError when the CSV cannot be written. Returns 0.
 int meanfield_command(const std::vector<std::string>& args, std::ostream& out);
 
-extern const char* const kMeanfieldHelp;
+const CommandSpec& meanfield_command_spec();
 
 }  // namespace rodsea

@@ -54,11 +54,4 @@ Rgb label_colour(int label) {
     return hsv(static_cast<double>(label) * golden, 0.85, label % 2 == 0 ? 0.95 : 0.70);
 }
 
-std::uint32_t to_argb32(const Rgb& c) {
-    const auto channel = [](double v) {
-        return static_cast<std::uint32_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
-    };
-    return 0xff000000u | channel(c.r) << 16 | channel(c.g) << 8 | channel(c.b);
-}
-
 }  // namespace rodsea

@@ -19,7 +19,4 @@ Rgb nematic_colour(double theta);
 // grey.
 Rgb label_colour(int label);
 
-// 8-bit channels, as they land in an opaque ARGB32 pixel.
-std::uint32_t to_argb32(const Rgb& c);
-
 }  // namespace rodsea

@@ -27,31 +27,35 @@
 
 namespace rodsea {
 
-const char* const kExportHelp =
-    R"(rodsea export RUN_DIR --format lammps-dump|xyz -o FILE [--frame N | --time T]
-              [--every K] [--from T] [--to T] [--velocities] [--quiet]
-
-Writes the run's frames as one particle per sphere, for VMD, OVITO and MDAnalysis
-(docs/export.md: the columns and the exact steps to open the file in each). Each sphere has an
-id, its body's id (molecule), its species (type, 1-based; the XYZ file names it), its radius and
-its body's orientation quaternion. Bodies are kept whole: the centre is wrapped into the box,
-spheres may stick out of [0, L) by less than a body length. Units: mm and s (times, and the
-velocities in mm/s); the box is [0, Lx] x [0, Ly] x [-A, w + A], the plates' whole travel.
-Everything is checked before anything is written; the file appears complete or not at all
-(also on a full disk or Ctrl-C).
-
-  --format F      lammps-dump: a LAMMPS custom dump (.lammpstrj; VMD, OVITO, MDAnalysis)
-                  xyz: extended XYZ (OVITO; MDAnalysis and other plain XYZ readers
-                  take the first four columns: species name, x, y, z)
-  -o, --output F  the file to write (replaced if it exists)
-  --frame N       one frame: 0-based, negative counts from the end (-1: the last)
-  --time T        one frame: the one nearest T, s
-  --every K       every K-th frame of the window (default 1: all)
-  --from T        the window's start, s (default: the first frame)
-  --to T          the window's end, s (default: the last frame)
-  --velocities    also the body centre's velocity (vx vy vz, mm/s)
-  --quiet         no plan and no progress lines
-)";
+const CommandSpec& export_command_spec() {
+    static const CommandSpec spec{
+        "export",
+        "RUN_DIR --format lammps-dump|xyz -o FILE [--frame N | --time T] [--every K] [--from T] "
+        "[--to T] [--velocities] [--quiet]",
+        "one particle per sphere, for VMD and OVITO",
+        "Writes the run's frames as one particle per sphere, for VMD, OVITO and MDAnalysis "
+        "(docs/export.md: the columns and the exact steps to open the file in each). Each sphere "
+        "has an id, its body's id (molecule), its species (type, 1-based; the XYZ file names it), "
+        "its radius and its body's orientation quaternion. Bodies are kept whole: the centre is "
+        "wrapped into the box, spheres may stick out of [0, L) by less than a body length. Units: "
+        "mm and s (times, and the velocities in mm/s); the box is [0, Lx] x [0, Ly] x "
+        "[-A, w + A], the plates' whole travel. Everything is checked before anything is "
+        "written; the file appears complete or not at all (also on a full disk or Ctrl-C).",
+        {{"--format", "F",
+          "lammps-dump: a LAMMPS custom dump (.lammpstrj; VMD, OVITO, MDAnalysis); xyz: extended "
+          "XYZ (OVITO; MDAnalysis and other plain XYZ readers take the first four columns: "
+          "species name, x, y, z)"},
+         {"-o,--output", "FILE", "the file to write (replaced if it exists)"},
+         {"--frame", "N", "one frame: 0-based, negative counts from the end (-1: the last)"},
+         {"--time", "T", "one frame: the one nearest T, s"},
+         {"--every", "K", "every K-th frame of the window (default 1: all)"},
+         {"--from", "T", "the window's start, s (default: the first frame)"},
+         {"--to", "T", "the window's end, s (default: the last frame)"},
+         {"--velocities", "", "also the body centre's velocity (vx vy vz, mm/s)"},
+         {"--quiet", "", "no plan and no progress lines"}},
+        ""};
+    return spec;
+}
 
 namespace {
 
@@ -129,11 +133,9 @@ bool extension_fits(const fs::path& path, ExportFormat format) {
 }  // namespace
 
 int export_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-    const Arguments a = parse_arguments(
-        args, {"--format", "--output", "--frame", "--time", "--every", "--from", "--to"},
-        {"--velocities", "--quiet", "--help"}, "export");
-    if (a.has("--help")) {
-        out << kExportHelp;
+    const Arguments a = parse_arguments(args, export_command_spec());
+    if (a.help) {
+        out << help_text(export_command_spec());
         return 0;
     }
     if (a.positional.empty())

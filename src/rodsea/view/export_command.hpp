@@ -1,12 +1,14 @@
 #pragma once
-// `rodsea export`: see kExportHelp and docs/export.md.
+// `rodsea export`: see export_command_spec() and docs/export.md.
 #include <iosfwd>
 #include <string>
 #include <vector>
 
+#include "rodsea/cli/arguments.hpp"
+
 namespace rodsea {
 
-extern const char* const kExportHelp;
+const CommandSpec& export_command_spec();
 
 // `args` are the words after `rodsea export`. Checks all input before writing anything; throws
 // InvalidParameter (exit 2) or FileError (exit 74); returns the exit code otherwise.

@@ -15,7 +15,6 @@ std::optional<double> time_flag(const Arguments& args, const char* flag) {
 
 }  // namespace
 
-const std::vector<std::string> kSingleFrameFlags{"--frame", "--time"};
 const std::vector<std::string> kFrameWindowFlags{"--from", "--to", "--every"};
 
 std::optional<std::size_t> single_frame_from(const Arguments& args, const StoredRun& run) {

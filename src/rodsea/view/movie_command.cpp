@@ -19,29 +19,39 @@
 
 namespace rodsea {
 
-const char* const kMovieHelp =
-    R"(rodsea movie RUN_DIR [-o FILE.mp4] [--fps F] [--every K] [--from T] [--to T] [options]
-
-A movie of a run (docs/visualisation.md): the frames drawn as by `rodsea render` and piped to
-ffmpeg (Debian's package), encoded as H.264 in an MP4 that browsers play. The file appears only
-when it is complete; Ctrl-C stops cleanly and leaves no partial movie.
-
-  -o, --output F   the MP4 to write (default RUN_DIR/movie.mp4)
-  --fps F          frames per second of the movie, [0.001, 120] (default 20)
-  --every K        use every K-th trajectory frame (default 1)
-  --from T, --to T the part of the run to show, s (default: all of it)
-  --crf Q          H.264 quality, 0 (lossless) … 51 (worst) (default 20)
-  --quiet          no plan and no progress bar
-Movies need even pixel sizes: --size must be even (default 800), and at most 4096 px wide and
-high so that browsers' H.264 decoders play them. Without ffmpeg the command exits with 1 and says
-how to install it.
-)";
+const CommandSpec& movie_command_spec() {
+    static const CommandSpec spec = [] {
+        CommandSpec c{
+            "movie",
+            "RUN_DIR [-o FILE.mp4] [--fps F] [--every K] [--from T] [--to T] [options]",
+            "an H.264 movie of a run (ffmpeg)",
+            "A movie of a run (docs/visualisation.md): the frames drawn as by `rodsea render` and "
+            "piped to ffmpeg (Debian's package), encoded as H.264 in an MP4 that browsers play. "
+            "The file appears only when it is complete; Ctrl-C stops cleanly and leaves no "
+            "partial movie.",
+            {{"-o,--output", "FILE", "the MP4 to write (default RUN_DIR/movie.mp4)"},
+             {"--fps", "F", "frames per second of the movie, [0.001, 120] (default 20)"},
+             {"--every", "K", "use every K-th trajectory frame (default 1)"},
+             {"--from", "T",
+              "the start of the part of the run to show, s (default: the first frame)"},
+             {"--to", "T", "its end, s (default: the last frame)"},
+             {"--crf", "Q", "H.264 quality, 0 (lossless) … 51 (worst) (default 20)"},
+             {"--quiet", "", "no plan and no progress bar"}},
+            "Movies need even pixel sizes: --size must be even, and at most 4096 px wide and high "
+            "so that browsers' H.264 decoders play them. Without ffmpeg the command exits with 1 "
+            "and says how to install it."};
+        for (OptionSpec& o : picture_options("image width in pixels, even, [64, 16384] (default "
+                                             "800); the height follows the view"))
+            c.options.push_back(std::move(o));
+        return c;
+    }();
+    return spec;
+}
 
 int movie_command(const std::vector<std::string>& words, std::ostream& out, std::ostream&) {
-    const Arguments args = parse_picture_arguments(
-        words, {"--output", "--fps", "--every", "--from", "--to", "--crf"}, "movie");
-    if (args.has("--help")) {
-        out << kMovieHelp << kRenderFlagsHelp;
+    const Arguments args = parse_arguments(words, movie_command_spec());
+    if (args.help) {
+        out << help_text(movie_command_spec());
         return 0;
     }
     if (args.positional.size() != 1)

@@ -16,34 +16,38 @@
 
 namespace rodsea {
 
-const char* const kPlotHelp = R"(rodsea plot INPUT -o DIR [--dpi D] [--only F,..] [--quiet]
-
-Draws the paper's figure types as PNG files in DIR (created if needed) with matplotlib, from
-  one run's analysis  RUN_DIR, RUN_DIR/analysis or its analysis.json (`rodsea analyze RUN_DIR`):
-                      order_parameters, autocorrelation (C(t), C2(t) and their D_r fits),
-                      flocks_time, flock_sizes, g_r_theta and G_r_theta (polar heat maps in the
-                      corotating frame with the 70 % contour), pair_correlation, segregation,
-                      medium_velocity
-  a table of runs     T.csv from `rodsea analyze RUN1 RUN2 ... --table T.csv` (or a run's
-                      summary.csv): P and Sigma vs phi_a and vs D_r with error bars, the phase
-                      diagram (ordered P > 0.5 vs disordered in the (phi_a, D_r) plane), and
-                      S, sigma_f, N_m, N_avg, D_r vs phi_a
-What the input cannot give (a run without polar rods has no g(r,theta)) is skipped with a note.
-Every input is checked before the first figure is drawn; each PNG is written under a temporary
-name and renamed, so none is ever half-written. Prints the PNG files, one per line. Figures and
-what they mirror in the paper: docs/plots.md.
-
-  -o, --output DIR  where the PNG files go
-  --dpi D           pixels per inch, 20 to 600 (default 150: a 6.5 x 4.5 in figure is 975 x 675)
-  --only F,..       only these figures, by file name (.png optional): --only g_r_theta,G_r_theta
-  --quiet           no notes on what was skipped
-
-Runs /usr/bin/python3 (env RODSEA_PYTHON overrides) on rodsea_plot.py in the source tree's
-scripts/ (env RODSEA_SCRIPTS_DIR overrides the folder); needs Debian's python3-matplotlib,
-python3-numpy and python3-h5py: ./scripts/install-deps.sh installs them.
-Exit codes: 0 done; 1 Python or one of its modules missing; 2 bad input (nothing written);
-74 a file could not be read or written.
-)";
+const CommandSpec& plot_command_spec() {
+    static const CommandSpec spec{
+        "plot",
+        "INPUT -o DIR [--dpi D] [--only F,..] [--quiet]",
+        "the paper's figure types, drawn with matplotlib",
+        "Draws the paper's figure types as PNG files in DIR (created if needed) with matplotlib, "
+        "from\n"
+        "  one run's analysis  RUN_DIR, RUN_DIR/analysis or its analysis.json (`rodsea analyze "
+        "RUN_DIR`): order_parameters, autocorrelation (C(t), C2(t) and their D_r fits), "
+        "flocks_time, flock_sizes, g_r_theta and G_r_theta (polar heat maps in the corotating "
+        "frame with the 70 % contour), pair_correlation, segregation, medium_velocity\n"
+        "  a table of runs     T.csv from `rodsea analyze RUN1 RUN2 ... --table T.csv` (or a "
+        "run's summary.csv): P and Sigma vs phi_a and vs D_r with error bars, the phase diagram "
+        "(ordered P > 0.5 vs disordered in the (phi_a, D_r) plane), and S, sigma_f, N_m, N_avg, "
+        "D_r vs phi_a\n"
+        "What the input cannot give (a run without polar rods has no g(r,theta)) is skipped with "
+        "a note. Every input is checked before the first figure is drawn; each PNG is written "
+        "under a temporary name and renamed, so none is ever half-written. Prints the PNG files, "
+        "one per line. Figures and what they mirror in the paper: docs/plots.md.",
+        {{"-o,--output", "DIR", "where the PNG files go"},
+         {"--dpi", "D",
+          "pixels per inch, 20 to 600 (default 150: a 6.5 x 4.5 in figure is 975 x 675)"},
+         {"--only", "F,..",
+          "only these figures, by file name (.png optional): --only g_r_theta,G_r_theta"},
+         {"--quiet", "", "no notes on what was skipped"}},
+        "Runs /usr/bin/python3 (env RODSEA_PYTHON overrides) on rodsea_plot.py in the source "
+        "tree's scripts/ (env RODSEA_SCRIPTS_DIR overrides the folder); needs Debian's "
+        "python3-matplotlib, python3-numpy and python3-h5py: ./scripts/install-deps.sh installs "
+        "them.\nExit codes: 0 done; 1 Python or one of its modules missing; 2 bad input (nothing "
+        "written); 74 a file could not be read or written."};
+    return spec;
+}
 
 namespace {
 
@@ -127,10 +131,9 @@ int run_child(std::vector<std::string> argv_words, std::ostream& out, std::ostre
 }  // namespace
 
 int plot_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-    const Arguments a =
-        parse_arguments(args, {"--output", "--dpi", "--only"}, {"--quiet", "--help"}, "plot");
-    if (a.has("--help")) {
-        out << kPlotHelp;
+    const Arguments a = parse_arguments(args, plot_command_spec());
+    if (a.help) {
+        out << help_text(plot_command_spec());
         return kExitOk;
     }
     if (a.positional.size() != 1)

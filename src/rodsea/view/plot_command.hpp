@@ -1,13 +1,15 @@
 #pragma once
 // `rodsea plot`: the paper's figure types from `rodsea analyze` output, drawn by the matplotlib
-// scripts in scripts/ (rodsea_plot.py); see kPlotHelp and docs/plots.md.
+// scripts in scripts/ (rodsea_plot.py); see plot_command_spec() and docs/plots.md.
 #include <iosfwd>
 #include <string>
 #include <vector>
 
+#include "rodsea/cli/arguments.hpp"
+
 namespace rodsea {
 
-extern const char* const kPlotHelp;
+const CommandSpec& plot_command_spec();
 
 // `args` are the words after `rodsea plot`. Checks the arguments and that INPUT exists (throws
 // InvalidParameter, exit 2, or FileError, exit 74), then runs the Python script, which checks the

@@ -13,19 +13,31 @@
 
 namespace rodsea {
 
-const char* const kRenderHelp =
-    R"(rodsea render RUN_DIR [--frame N | --time T] [-o FILE.png] [options]
-
-A top view of one frame of a run (docs/visualisation.md): every body drawn as its true outline
-(the union of its spheres), polar rods coloured by the direction of their axis, the medium in
-grey, the time, area fractions and order parameters in a corner, a scale bar in mm and a colour
-legend. Bodies that cross the box edge appear on both sides (the box is periodic).
-
-  --frame N        frame index, 0-based; negative counts from the end (default -1, the last)
-  --time T         the frame nearest T, s
-  -o, --output F   the PNG to write (default RUN_DIR/frame_<N>.png)
-  --quiet          no plan line and no timing
-)";
+const CommandSpec& render_command_spec() {
+    static const CommandSpec spec = [] {
+        CommandSpec c{
+            "render",
+            "RUN_DIR [--frame N | --time T] [-o FILE.png] [options]",
+            "a top view of one frame",
+            "A top view of one frame of a run (docs/visualisation.md): every body drawn as "
+            "its true outline (the union of its spheres), polar rods coloured by the "
+            "direction of their axis, the medium in grey, the time, area fractions and "
+            "order parameters in a corner, a scale bar in mm and a colour legend. Bodies "
+            "that cross the box edge appear on both sides (the box is periodic).",
+            {{"--frame", "N",
+              "frame index, 0-based; negative counts from the end (default -1, the "
+              "last)"},
+             {"--time", "T", "the frame nearest T, s"},
+             {"-o,--output", "FILE", "the PNG to write (default RUN_DIR/frame_<N>.png)"},
+             {"--quiet", "", "no plan line and no timing"}},
+            ""};
+        for (OptionSpec& o : picture_options("image width in pixels, [64, 16384] (default 1200); "
+                                             "the height follows the view"))
+            c.options.push_back(std::move(o));
+        return c;
+    }();
+    return spec;
+}
 
 namespace {
 
@@ -37,10 +49,9 @@ std::string frame_name(std::size_t frame) {
 }  // namespace
 
 int render_command(const std::vector<std::string>& words, std::ostream& out, std::ostream&) {
-    const Arguments args =
-        parse_picture_arguments(words, {"--frame", "--time", "--output"}, "render");
-    if (args.has("--help")) {
-        out << kRenderHelp << kRenderFlagsHelp;
+    const Arguments args = parse_arguments(words, render_command_spec());
+    if (args.help) {
+        out << help_text(render_command_spec());
         return 0;
     }
     if (args.positional.size() != 1)

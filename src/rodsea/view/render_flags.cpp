@@ -4,20 +4,19 @@
 
 namespace rodsea {
 
-const std::vector<std::string> kRenderValuedFlags{"--size", "--region", "--colour", "--medium",
-                                                  "--flock-eps"};
-const std::vector<std::string> kRenderSwitches{"--no-annotations"};
-
-const char* const kRenderFlagsHelp =
-    R"(  --size W         image width in pixels, [64, 16384]; the height follows the view
-  --region X0,X1,Y0,Y1
-                   show only this part of the box, mm (default: the whole box)
-  --colour C       polar rods: direction (cyclic colour wheel of the axis θ, thick → thin;
-                   default), flock (DBSCAN label, as `rodsea analyze`), uniform
-  --medium M       apolar rods: neutral (default) or nematic (wheel of 2θ: θ and θ+π alike)
-  --flock-eps E    DBSCAN radius for --colour flock, mm (default ℓ_p / 2)
-  --no-annotations no text, scale bar or legend
-)";
+std::vector<OptionSpec> picture_options(const std::string& size_help) {
+    return {
+        {"--size", "W", size_help},
+        {"--region", "X0,X1,Y0,Y1", "show only this part of the box, mm (default: the whole box)"},
+        {"--colour", "C",
+         "polar rods: direction (cyclic colour wheel of the axis θ, thick → thin; default), "
+         "flock (DBSCAN label, as `rodsea analyze`), uniform"},
+        {"--medium", "M",
+         "apolar rods: neutral (default) or nematic (wheel of 2θ: θ and θ+π alike)"},
+        {"--flock-eps", "E", "DBSCAN radius for --colour flock, mm (default ℓ_p / 2)"},
+        {"--no-annotations", "", "no text, scale bar or legend"},
+    };
+}
 
 namespace {
 
@@ -33,14 +32,6 @@ std::vector<double> split_numbers(const std::string& flag, const std::string& te
 }
 
 }  // namespace
-
-Arguments parse_picture_arguments(const std::vector<std::string>& words,
-                                  std::vector<std::string> valued, std::string_view command) {
-    valued.insert(valued.end(), kRenderValuedFlags.begin(), kRenderValuedFlags.end());
-    std::vector<std::string> switches = kRenderSwitches;
-    switches.insert(switches.end(), {"--quiet", "--help"});
-    return parse_arguments(words, valued, switches, command);
-}
 
 RenderOptions render_options_from(const Arguments& args, int default_width) {
     RenderOptions o;

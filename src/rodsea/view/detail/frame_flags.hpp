@@ -9,7 +9,6 @@
 
 namespace rodsea {
 
-extern const std::vector<std::string> kSingleFrameFlags;  // --frame --time
 extern const std::vector<std::string> kFrameWindowFlags;  // --from --to --every
 
 // The frame --frame or --time names, or none when neither is given. Throws InvalidParameter

@@ -12,16 +12,9 @@
 
 namespace rodsea {
 
-// Valued flags and switches that render_options_from() reads.
-extern const std::vector<std::string> kRenderValuedFlags;
-extern const std::vector<std::string> kRenderSwitches;
-// Their help text, for both commands' --help.
-extern const char* const kRenderFlagsHelp;
-
-// The words of a picture command: the picture flags, the command's own `valued` flags, --quiet
-// and --help.
-Arguments parse_picture_arguments(const std::vector<std::string>& words,
-                                  std::vector<std::string> valued, std::string_view command);
+// The picture flags that render_options_from() reads, shared by render and movie; `size_help`
+// says each command's default width.
+std::vector<OptionSpec> picture_options(const std::string& size_help);
 
 // Throws InvalidParameter naming the flag for an unknown colouring or a malformed number;
 // ranges that depend on the run are checked by FrameRenderer.

@@ -1,0 +1,105 @@
+#include "rodsea/run/run_command.hpp"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <ostream>
+
+#include "rodsea/calibration/calibration_table.hpp"
+#include "rodsea/config/config_file.hpp"
+#include "rodsea/error.hpp"
+#include "rodsea/run/plan_report.hpp"
+#include "rodsea/run/run_driver.hpp"
+
+namespace rodsea {
+
+const CommandSpec& run_command_spec() {
+    static const CommandSpec spec{
+        "run",
+        "CONFIG [--out DIR] [--overwrite] [--quiet]  |  rodsea run --resume DIR [--quiet]",
+        "start a simulation, or continue one from its checkpoint",
+        "Reads CONFIG (TOML; every key in docs/config.md), checks all of it and the packing, "
+        "prints the plan, builds the initial state (every body flat on the base, no overlaps) "
+        "and runs it, writing into DIR (default: out/<config name>):\n"
+        "  config.toml      the full resolved config        trajectory.h5   H5MD trajectory + "
+        "time series\n"
+        "  timeseries.csv   the time series as CSV          checkpoint.h5   the latest "
+        "checkpoint\n"
+        "On a terminal a progress bar shows simulated time, ETA, steps/s and P; otherwise a log "
+        "line every 5 %. Checkpoints are written every output.checkpoint_interval minutes of wall "
+        "time and on SIGINT/SIGTERM (Ctrl-C stops cleanly); --resume continues bit for bit where "
+        "it stopped.",
+        {{"--out", "DIR", "output directory; refused if it exists and is not empty"},
+         {"--overwrite", "", "replace the run files in an existing DIR"},
+         {"--resume", "DIR", "continue the run in DIR from its checkpoint.h5"},
+         {"--quiet", "", "no plan and no progress (errors are still printed)"}},
+        ""};
+    return spec;
+}
+
+const CommandSpec& info_command_spec() {
+    static const CommandSpec spec{
+        "info",
+        "CONFIG",
+        "what CONFIG would simulate",
+        "Prints what CONFIG would simulate, without running it: the box and drive (amplitude A, "
+        "peak plate speed), counts per species with spheres, projected areas and actual area "
+        "fractions, the number of steps, the expected memory and output size, whether the "
+        "packing is possible, and every MODEL.md CHOICE in force.",
+        {},
+        ""};
+    return spec;
+}
+
+namespace {
+
+bool stdout_is_terminal() {
+    return ::isatty(STDOUT_FILENO) == 1;
+}
+
+// The one config a command names, with D_r turned into ε through its calibration table.
+RunPlan config_named_by(const Arguments& a, const CommandSpec& spec) {
+    if (a.positional.size() != 1)
+        throw InvalidParameter("CONFIG", std::to_string(a.positional.size()) + " given",
+                               "exactly one config file (see rodsea " + spec.name + " --help)");
+    return load_config_file(a.positional[0], calibration_table_lookup());
+}
+
+}  // namespace
+
+int run_command(const std::vector<std::string>& words, std::ostream& out, std::ostream& err) {
+    const Arguments a = parse_arguments(words, run_command_spec());
+    if (a.help) {
+        out << help_text(run_command_spec());
+        return kExitOk;
+    }
+    RunOptions options;
+    options.quiet = a.has("--quiet");
+    options.overwrite = a.has("--overwrite");
+    if (const auto dir = a.value("--resume")) {
+        if (!a.positional.empty() || a.value("--out") || options.overwrite)
+            throw InvalidParameter("--resume", *dir, "alone (with --quiet at most)",
+                                   "the config and output directory come from DIR");
+        options.out_dir = *dir;
+        return resume_run(*dir, options, out, err, stdout_is_terminal());
+    }
+    const RunPlan plan = config_named_by(a, run_command_spec());
+    const std::filesystem::path config = a.positional[0];
+    options.out_dir =
+        a.value("--out").value_or((std::filesystem::path("out") / config.stem()).string());
+    return start_run(plan, options, out, err, stdout_is_terminal());
+}
+
+int info_command(const std::vector<std::string>& words, std::ostream& out, std::ostream&) {
+    const Arguments a = parse_arguments(words, info_command_spec());
+    if (a.help) {
+        out << help_text(info_command_spec());
+        return kExitOk;
+    }
+    const RunPlan plan = config_named_by(a, info_command_spec());
+    out << "rodsea info " << a.positional[0] << "\n";
+    describe_plan(plan, out);
+    return kExitOk;
+}
+
+}  // namespace rodsea
