@@ -86,7 +86,7 @@ TEST(Physics, RotateFreeKeepsAngularMomentumAndEnergy) {
 }
 
 // One step of free flight is the exact parabola: x + v dt − ½ g dt² ẑ, v − g dt ẑ; x and y
-// wrapped into the box; the bounds are raised to the in-plane speed² and |ω|² reach².
+// wrapped into the box; its speeds in the plane are v_x² + v_y² and |ω|² reach².
 TEST(Physics, FreeFlightIsTheParabolaWrappedIntoTheBox) {
     StepContext step;
     step.dt = 1e-3;
@@ -95,14 +95,14 @@ TEST(Physics, FreeFlightIsTheParabolaWrappedIntoTheBox) {
     Vec3 x{9.99, 0.005, 1.0}, v{30.0, -20.0, 5.0}, w{0.0, 0.0, 2.0};
     Quat q;
     const Rotor rotor = make_rotor({0.1, 1.0, 1.0});
-    double drift2 = 0.0, turn2 = 0.0;
-    fly_freely(x, v, q, w, rotor, 4.0, step, step.drop(), drift2, turn2);
+    const PlanarSpeed2 speed = planar_speed2(v, q, w, rotor, 4.0);
+    fly_freely(x, v, q, w, rotor, step.dt, step.gravity, step.drop(), step.box);
     EXPECT_NEAR(x.x, 9.99 + 0.03 - 10.0, 1e-14);
     EXPECT_NEAR(x.y, 0.005 - 0.02 + 10.0, 1e-14);
     EXPECT_NEAR(x.z, 1.0 + 5e-3 - 0.5 * 9810.0 * 1e-6, 1e-14);
     EXPECT_NEAR(v.z, 5.0 - 9.81, 1e-13);
-    EXPECT_EQ(drift2, 30.0 * 30.0 + 20.0 * 20.0);
-    EXPECT_EQ(turn2, 4.0 * 4.0);
+    EXPECT_EQ(speed.drift2, 30.0 * 30.0 + 20.0 * 20.0);
+    EXPECT_EQ(speed.turn2, 4.0 * 4.0);
     // A turn about z by ω dt.
     EXPECT_NEAR(std::atan2(rotated_axis(q, 0).y, rotated_axis(q, 0).x), 2e-3, 1e-15);
 }
@@ -128,7 +128,7 @@ TEST(Physics, SphereContactSitsInTheMiddleOfTheOverlap) {
     const Vec3 pa{1.0, 0.0, 0.5}, pb{0.3, 0.0, 0.5};  // radii 0.4 + 0.4 at 0.7: δ = 0.1
     const Vec3 xa{1.5, 0.2, 0.5}, xb{0.0, -0.1, 0.5};
     Contact c;
-    ASSERT_TRUE(sphere_sphere_contact(pa - pb, 3, pa, 0.4, xa, 8, pb, 0.4, xb, {0.05, 0.3}, c));
+    ASSERT_TRUE(sphere_sphere_contact(pa - pb, 3, pa, 0.4, xa, 8, pb, 0.4, xb, c));
     EXPECT_EQ(c.a, 3u);
     EXPECT_EQ(c.b, 8u);
     EXPECT_NEAR(norm(c.normal - Vec3{1, 0, 0}), 0.0, 1e-15);
@@ -136,9 +136,8 @@ TEST(Physics, SphereContactSitsInTheMiddleOfTheOverlap) {
     const Vec3 middle{0.65, 0.0, 0.5};
     EXPECT_NEAR(norm(xa + c.arm_a - middle), 0.0, 1e-15);
     EXPECT_NEAR(norm(xb + c.arm_b - middle), 0.0, 1e-15);
-    EXPECT_EQ(c.friction, 0.05);
-    EXPECT_FALSE(sphere_sphere_contact({0.81, 0, 0}, 3, pa, 0.4, xa, 8, pb, 0.4, xb, {}, c));
-    EXPECT_FALSE(sphere_sphere_contact({0, 0, 0}, 3, pa, 0.4, xa, 8, pb, 0.4, xb, {}, c));
+    EXPECT_FALSE(sphere_sphere_contact({0.81, 0, 0}, 3, pa, 0.4, xa, 8, pb, 0.4, xb, c));
+    EXPECT_FALSE(sphere_sphere_contact({0, 0, 0}, 3, pa, 0.4, xa, 8, pb, 0.4, xb, c));
 }
 
 // A sphere 0.01 mm into the base: overlap 0.01 with the base, none with the lid, normal +z, and

@@ -24,11 +24,14 @@ ContactSearchStats ContactFinder::find(const SphereTable& spheres, BodyView bodi
             [&](std::uint32_t i, std::uint32_t j, const Vec3& d) {
                 const std::uint32_t bi = spheres.body[i], bj = spheres.body[j];
                 Contact c;
-                if (!physics::sphere_sphere_contact(
-                        d, bi, spheres.position[i], spheres.radius[i], bodies.position[bi], bj,
-                        spheres.position[j], spheres.radius[j], bodies.position[bj],
-                        species.pair_coefficients(bodies.species[bi], bodies.species[bj]), c))
+                if (!physics::sphere_sphere_contact(d, bi, spheres.position[i], spheres.radius[i],
+                                                    bodies.position[bi], bj, spheres.position[j],
+                                                    spheres.radius[j], bodies.position[bj], c))
                     return;
+                const ContactCoefficients& k =
+                    species.pair_coefficients(bodies.species[bi], bodies.species[bj]);
+                c.friction = k.friction;
+                c.restitution = k.restitution;
                 deepest =
                     std::max(deepest, c.overlap / std::min(spheres.radius[i], spheres.radius[j]));
                 found.push_back(c);

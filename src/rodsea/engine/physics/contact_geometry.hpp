@@ -10,11 +10,12 @@
 namespace rodsea::physics {
 
 // Sphere i of body a at p_i (centre of mass x_a) and sphere j of body b at p_j, d = p_i − p_j
-// (minimum image): fills `c` and returns true when the spheres overlap.
+// (minimum image): fills `c` but for its coefficients and returns true when the spheres overlap.
+// (Most listed pairs do not touch: the caller looks the coefficients up only for those that do.)
 RODSEA_HD inline bool sphere_sphere_contact(const Vec3& d, std::uint32_t a, const Vec3& p_i,
                                             double r_i, const Vec3& x_a, std::uint32_t b,
                                             const Vec3& p_j, double r_j, const Vec3& x_b,
-                                            const ContactCoefficients& k, Contact& c) {
+                                            Contact& c) {
     const double reach = r_i + r_j;
     const double d2 = norm2(d);
     if (d2 >= reach * reach || d2 == 0.0) return false;
@@ -25,8 +26,6 @@ RODSEA_HD inline bool sphere_sphere_contact(const Vec3& d, std::uint32_t a, cons
     c.overlap = reach - dist;
     c.arm_a = (p_i - x_a) - (r_i - 0.5 * c.overlap) * c.normal;
     c.arm_b = (p_j - x_b) + (r_j - 0.5 * c.overlap) * c.normal;
-    c.friction = k.friction;
-    c.restitution = k.restitution;
     return true;
 }
 

@@ -6,25 +6,31 @@
 
 namespace rodsea::physics {
 
-// Moves a body by one step, x and y wrapped into the box. Before moving, raises `drift2` to the
-// body's squared speed in the plane and `turn2` to a bound on the squared speed of its spheres
-// about its centre (`reach2`: its farthest sphere centre's squared distance): the sum of the
-// roots of the largest over all bodies bounds how far any sphere moves in the plane this step,
-// which tells the Verlet list when to look. Gravity does not act in the plane. `drop` is
-// step.drop(), worked out once for all bodies.
-RODSEA_HD inline void fly_freely(Vec3& x, Vec3& v, Quat& q, Vec3& w, const Rotor& rotor,
-                                 double reach2, const StepContext& step, double drop,
-                                 double& drift2, double& turn2) {
-    const double planar2 = v.x * v.x + v.y * v.y;
-    const double spin2 = spin_bound2(rotor, q, w) * reach2;
-    drift2 = drift2 < planar2 ? planar2 : drift2;  // std::max, which device code lacks
-    turn2 = turn2 < spin2 ? spin2 : turn2;
-    x += step.dt * v;
+// Squared speeds in the plane during one step of free flight (mm²/s²): of the centre of mass,
+// and a bound for the spheres about it (`reach2`: the farthest sphere centre's squared distance
+// from the centre). The sum of the roots of the largest over all bodies bounds how far any sphere
+// moves in the plane in the step, which tells the Verlet list when to look. Gravity does not act
+// in the plane, so they hold for the whole step.
+struct PlanarSpeed2 {
+    double drift2 = 0.0;
+    double turn2 = 0.0;
+};
+RODSEA_HD inline PlanarSpeed2 planar_speed2(const Vec3& v, const Quat& q, const Vec3& w,
+                                            const Rotor& rotor, double reach2) {
+    return {v.x * v.x + v.y * v.y, spin_bound2(rotor, q, w) * reach2};
+}
+
+// Moves a body by one step, x and y wrapped into the box. The step's numbers come by value
+// (`drop` is StepContext::drop()): stores to the bodies cannot alias them, so a loop over bodies
+// keeps them in registers.
+RODSEA_HD inline void fly_freely(Vec3& x, Vec3& v, Quat& q, Vec3& w, const Rotor& rotor, double dt,
+                                 double gravity, double drop, PeriodicBox2D box) {
+    x += dt * v;
     x.z -= drop;
-    v.z -= step.gravity * step.dt;
-    x.x = PeriodicBox2D::wrap(x.x, step.box.lx);
-    x.y = PeriodicBox2D::wrap(x.y, step.box.ly);
-    rotate_free(q, w, rotor, step.dt);
+    v.z -= gravity * dt;
+    x.x = PeriodicBox2D::wrap(x.x, box.lx);
+    x.y = PeriodicBox2D::wrap(x.y, box.ly);
+    rotate_free(q, w, rotor, dt);
 }
 
 }  // namespace rodsea::physics

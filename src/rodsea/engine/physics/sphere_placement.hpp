@@ -11,8 +11,7 @@ namespace rodsea::physics {
 // the axis in the world (a column of the rotation). r · (s e_K) is s times that column to the
 // last bit (the other terms add ±0), and costs a third of the matrix product.
 template <int K>
-RODSEA_HD void place_along(Vec3* out, const Vec3* offsets, std::uint32_t count, const Vec3& x,
-                           const Vec3& u) {
+RODSEA_HD void place_along(Vec3* out, const Vec3* offsets, std::uint32_t count, Vec3 x, Vec3 u) {
     for (std::uint32_t s = 0; s < count; ++s) {
         const double along = K == 0 ? offsets[s].x : (K == 1 ? offsets[s].y : offsets[s].z);
         out[s] = {x.x + along * u.x, x.y + along * u.y, x.z + along * u.z};
@@ -20,9 +19,9 @@ RODSEA_HD void place_along(Vec3* out, const Vec3* offsets, std::uint32_t count, 
 }
 
 // Every body: `axis` is the body axis all its sphere centres lie on (every rod and bead), or
-// -1 for any other shape.
-RODSEA_HD inline void place_spheres(Vec3* out, const Vec3* offsets, std::uint32_t count,
-                                    const Vec3& x, const Quat& q, int axis) {
+// -1 for any other shape. x comes by value: the stores to `out` cannot alias it.
+RODSEA_HD inline void place_spheres(Vec3* out, const Vec3* offsets, std::uint32_t count, Vec3 x,
+                                    const Quat& q, int axis) {
     switch (axis) {
         case 0:
             place_along<0>(out, offsets, count, x, rotated_axis(q, 0));
