@@ -15,7 +15,7 @@ TEST(DenseMonolayer, StaysInTheGapWithSmallOverlapsForOneHundredPeriods) {
     const Box box{15.3, 15.3};  // 6 rods of 2.5 mm per row, 2× the rod length
     const Species rods = apolar_rod_species(2.5);
     const long long n = count_for_area_fraction(0.6, box, rods.shape);
-    Scene scene = row_packed_monolayer({{rods, n}}, box, 17);
+    Scene scene = monolayer({{rods, n}}, box, 17);
     Simulation sim(scene.params, scene.bodies);
     const double period = 2 * std::numbers::pi / scene.params.drive.angular_frequency;
     const auto steps_per_period =

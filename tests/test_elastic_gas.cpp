@@ -12,7 +12,7 @@ namespace {
 
 TEST(ElasticGas, KeepsKineticEnergyOverTenThousandSteps) {
     const Box box{20.0, 20.0};
-    Scene scene = row_packed_monolayer(
+    Scene scene = monolayer(
         {{polar_rod_species(), 20}, {apolar_rod_species(2.5), 80}, {bead_species(), 40}}, box, 5);
     scene.params.drive.gamma = 0.0;
     scene.params.drive.gravity = 0.0;

@@ -24,13 +24,11 @@ struct Population {
     long long count = 0;
 };
 
-// Bodies flat on the base in rows along x (each row one species, rows of the species
-// interleaved), spread evenly over the box, each pointing along +x or −x at random. A lattice
-// start: dense packings that random insertion cannot reach, with no overlap by construction.
-// Each body gets a small random velocity and spin (builder/placement.hpp). Throws
-// InvalidParameter when the rows do not fit in the box.
-Scene row_packed_monolayer(const std::vector<Population>& populations, const Box& box,
-                           std::uint64_t seed);
+// The bodies of each population flat on the base as `rodsea run` starts them
+// (builder/initial_state.hpp, default options): random insertion when dilute, else the lattice,
+// randomised by Monte Carlo; small random velocities and spins. Throws InvalidParameter when they
+// do not fit in the box.
+Scene monolayer(const std::vector<Population>& populations, const Box& box, std::uint64_t seed);
 
 // The benchmark and demo mixture: polar rods at φ_p in apolar rods of length ℓ_a at φ_a, in a
 // square box of `box_side` mm, with MODEL.md defaults for everything else.
