@@ -10,65 +10,50 @@
 
 namespace rodsea {
 
-std::vector<int> dbscan(std::span<const Vec3> points, const PeriodicBox2D& box,
-                        const DbscanParameters& parameters) {
-    require_positive("dbscan.eps", parameters.eps, "mm");
-    require_positive_count("dbscan.min_samples", parameters.min_samples);
-    require_positive("box.lx", box.lx, "mm");
-    require_positive("box.ly", box.ly, "mm");
-    const std::size_t n = points.size();
-    if (n == 0) return {};
+namespace {
 
-    // The cell list keeps pairs with d² < cutoff², sklearn keeps d <= eps: a cutoff a few ulps
-    // above eps makes every pair at exactly eps survive the cell list (one ulp of eps can vanish
-    // when squared near a binade edge), and the test below restores the <= eps boundary.
-    const double eps = parameters.eps;
-    const double eps2 = eps * eps;
-    // Any wider cutoff is also correct (the test below decides), so it is kept at least 1/1024
-    // of the box: a tiny eps would otherwise ask for billions of cells.
-    const double cutoff = std::max(eps * (1.0 + 8.0 * std::numeric_limits<double>::epsilon()),
-                                   std::max(box.lx, box.ly) / 1024.0);
+// Who is within eps of whom, in slot numbering, as compressed rows (CSR): one flat array
+// instead of a vector per point, since 10^5-rod snapshots would otherwise spend most of their
+// time in the allocator.
+struct Neighbours {
+    std::vector<std::uint32_t> start;  // point i's neighbours are index[start[i] .. start[i+1])
+    std::vector<std::uint32_t> index;
+};
 
-    // The grid keeps the points in cell order: the neighbour lists and the cluster growth below
-    // work on those slots, so they touch nearby memory instead of jumping across 10^5 points (a
-    // third faster at 10^5). Seeds are still taken in the original order, so the numbering is
-    // sklearn's.
-    PeriodicGrid2D grid;
-    grid.build(points, box, cutoff);
+Neighbours neighbours_within(const PeriodicGrid2D& grid, double cutoff, double eps2) {
+    const std::size_t n = grid.size();
     const std::span<const std::uint32_t> rank = grid.slot_of();
-
-    // Neighbour lists in CSR form: one flat array instead of a vector per point, since the
-    // 10^5-rod snapshots would otherwise spend most of their time in the allocator.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
     pairs.reserve(8 * n);
-    std::vector<std::uint32_t> start(n + 1, 0);
+    Neighbours nb{std::vector<std::uint32_t>(n + 1, 0), {}};
     grid.for_each_pair_within(cutoff, [&](std::uint32_t i, std::uint32_t j, const Vec3& d) {
         if (d.x * d.x + d.y * d.y > eps2) return;
         pairs.emplace_back(rank[i], rank[j]);
-        ++start[rank[i] + 1];
-        ++start[rank[j] + 1];
+        ++nb.start[rank[i] + 1];
+        ++nb.start[rank[j] + 1];
     });
     for (std::size_t i = 0; i < n; ++i)
-        start[i + 1] += start[i];
-    std::vector<std::uint32_t> neighbour(start[n]);
-    {
-        std::vector<std::uint32_t> cursor(start.begin(), start.end() - 1);
-        for (const auto& [i, j] : pairs) {
-            neighbour[cursor[i]++] = j;
-            neighbour[cursor[j]++] = i;
-        }
+        nb.start[i + 1] += nb.start[i];
+    nb.index.resize(nb.start[n]);
+    std::vector<std::uint32_t> cursor(nb.start.begin(), nb.start.end() - 1);
+    for (const auto& [i, j] : pairs) {
+        nb.index[cursor[i]++] = j;
+        nb.index[cursor[j]++] = i;
     }
-    pairs = {};
+    return nb;
+}
 
+// sklearn's dbscan_inner over slots: seeds in the original index order (`rank` maps an original
+// index to its slot), depth-first growth, only core points spread. Labelling on push rather than
+// on pop (as sklearn does) gives the same labels, since a cluster is grown to completion before
+// the next seed is taken, and it bounds the stack by n.
+std::vector<int> grow_clusters(const Neighbours& nb, std::span<const std::uint32_t> rank,
+                               int min_samples) {
+    const std::size_t n = rank.size();
     // sklearn counts the point itself among its neighbours (its distance 0 is <= eps).
     const auto is_core = [&](std::uint32_t i) {
-        return static_cast<long long>(start[i + 1] - start[i]) + 1 >= parameters.min_samples;
+        return static_cast<long long>(nb.start[i + 1] - nb.start[i]) + 1 >= min_samples;
     };
-
-    // sklearn's dbscan_inner: seeds in index order, depth-first growth, only core points
-    // spread. Labelling on push rather than on pop (as sklearn does) gives the same labels,
-    // since a cluster is grown to completion before the next seed is taken, and it bounds the
-    // stack by n.
     std::vector<int> label(n, -1);
     std::vector<std::uint32_t> stack;
     int cluster = 0;
@@ -81,8 +66,8 @@ std::vector<int> dbscan(std::span<const Vec3> points, const PeriodicBox2D& box,
             const std::uint32_t i = stack.back();
             stack.pop_back();
             if (!is_core(i)) continue;
-            for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) {
-                const std::uint32_t j = neighbour[k];
+            for (std::uint32_t k = nb.start[i]; k < nb.start[i + 1]; ++k) {
+                const std::uint32_t j = nb.index[k];
                 if (label[j] != -1) continue;
                 label[j] = cluster;
                 stack.push_back(j);
@@ -90,9 +75,38 @@ std::vector<int> dbscan(std::span<const Vec3> points, const PeriodicBox2D& box,
         }
         ++cluster;
     }
+    return label;
+}
+
+}  // namespace
+
+std::vector<int> dbscan(std::span<const Vec3> points, const PeriodicBox2D& box,
+                        const DbscanParameters& parameters) {
+    require_positive("dbscan.eps", parameters.eps, "mm");
+    require_positive_count("dbscan.min_samples", parameters.min_samples);
+    require_positive("box.lx", box.lx, "mm");
+    require_positive("box.ly", box.ly, "mm");
+    const std::size_t n = points.size();
+    if (n == 0) return {};
+
+    // The grid keeps pairs with d² < cutoff², sklearn keeps d <= eps: a cutoff a few ulps above
+    // eps makes every pair at exactly eps survive the grid (one ulp of eps can vanish when
+    // squared near a binade edge), and neighbours_within restores the <= eps boundary. Any
+    // wider cutoff is also correct, so it is kept at least 1/1024 of the box: a tiny eps would
+    // otherwise ask for billions of cells.
+    const double eps = parameters.eps;
+    const double cutoff = std::max(eps * (1.0 + 8.0 * std::numeric_limits<double>::epsilon()),
+                                   std::max(box.lx, box.ly) / 1024.0);
+    // The grid keeps the points in cell order: the neighbour lists and the cluster growth work
+    // on those slots, so they touch nearby memory instead of jumping across 10^5 points (a
+    // third faster at 10^5).
+    PeriodicGrid2D grid;
+    grid.build(points, box, cutoff);
+    const std::vector<int> by_slot = grow_clusters(neighbours_within(grid, cutoff, eps * eps),
+                                                   grid.slot_of(), parameters.min_samples);
     std::vector<int> result(n);
     for (std::size_t i = 0; i < n; ++i)
-        result[i] = label[rank[i]];
+        result[i] = by_slot[grid.slot_of()[i]];
     return result;
 }
 

@@ -56,38 +56,38 @@ std::string describe(const std::vector<Species>& species, const std::vector<long
 
 }  // namespace
 
-LatticePlan plan_lattice(const std::vector<Species>& species, const std::vector<Footprint>& feet,
-                         const std::vector<long long>& counts, const Box& box, double clearance,
-                         double pitch_scale) {
-    LatticePlan plan;
-    plan.pitch_scale = pitch_scale;
-    plan.species.resize(species.size());
-    struct Keyed {
-        double order;  // where the row goes among all rows, in (0, 1)
-        std::uint32_t species;
-        long long count;
-    };
-    std::vector<Keyed> keyed;
+namespace {
+
+// One row of the lattice before the rows are laid out: where it goes among all rows, in (0, 1).
+struct KeyedRow {
+    double order;
+    std::uint32_t species;
+    long long count;
+};
+
+// Each species' rows: sites per row, pitch and spacing into plan.species, its rows (bodies spread
+// evenly over them) appended to `keyed`. False, with plan.message, when a body does not fit.
+bool plan_species_rows(const std::vector<Species>& species, const std::vector<Footprint>& feet,
+                       const std::vector<long long>& counts, const Box& box, double clearance,
+                       LatticePlan& plan, std::vector<KeyedRow>& keyed) {
     for (size_t s = 0; s < species.size(); ++s) {
         SpeciesRows& r = plan.species[s];
         r.count = counts[s];
         if (counts[s] < 0) {
-            plan.fits = false;
             plan.message =
                 species[s].name + ": a negative count (" + std::to_string(counts[s]) + " bodies)";
-            return plan;
+            return false;
         }
         if (counts[s] == 0) continue;
         const double pitch_min = species[s].shape.extent + clearance;
-        const double scale = feet[s].rotatable ? 1.0 : pitch_scale;
+        const double scale = feet[s].rotatable ? 1.0 : plan.pitch_scale;
         r.sites_per_row = static_cast<long long>(std::floor(box.lx / (scale * pitch_min)));
         if (r.sites_per_row < 1) {
-            plan.fits = false;
             plan.message = species[s].name + ": one body is " +
                            format_number(species[s].shape.extent) + " mm long and needs " +
                            format_number(pitch_min) +
                            " mm with the clearance, but box.lx = " + format_number(box.lx) + " mm";
-            return plan;
+            return false;
         }
         r.pitch = box.lx / static_cast<double>(r.sites_per_row);
         r.rows = (counts[s] + r.sites_per_row - 1) / r.sites_per_row;
@@ -103,11 +103,15 @@ LatticePlan plan_lattice(const std::vector<Species>& species, const std::vector<
                              static_cast<std::uint32_t>(s), count});
         }
     }
-    if (keyed.empty()) return plan;
+    return true;
+}
+
+// The rows of all species interleaved by their order, starting at a change of species, so that
+// the periodic seam between the last and the first row never splits a run of one species (whose
+// rows must alternate their half-pitch shift).
+void interleave(std::vector<KeyedRow>& keyed) {
     std::stable_sort(keyed.begin(), keyed.end(),
-                     [](const Keyed& a, const Keyed& b) { return a.order < b.order; });
-    // Start at a change of species, so that the periodic seam between the last and the first
-    // row never splits a run of one species (whose rows must alternate their half-pitch shift).
+                     [](const KeyedRow& a, const KeyedRow& b) { return a.order < b.order; });
     size_t start = 0;
     for (size_t i = 0; i < keyed.size(); ++i) {
         if (keyed[i].species != keyed[(i + keyed.size() - 1) % keyed.size()].species) {
@@ -116,7 +120,11 @@ LatticePlan plan_lattice(const std::vector<Species>& species, const std::vector<
         }
     }
     std::rotate(keyed.begin(), keyed.begin() + static_cast<std::ptrdiff_t>(start), keyed.end());
+}
 
+// The rows bottom to top with the gap each needs to the next, and the height they take.
+void lay_out_rows(const std::vector<KeyedRow>& keyed, const std::vector<Footprint>& feet,
+                  double clearance, LatticePlan& plan) {
     const size_t n = keyed.size();
     for (size_t i = 0; i < n; ++i) {
         LatticeRow row;
@@ -145,6 +153,24 @@ LatticePlan plan_lattice(const std::vector<Species>& species, const std::vector<
         plan.height += row.gap_after;
         plan.rows.push_back(row);
     }
+}
+
+}  // namespace
+
+LatticePlan plan_lattice(const std::vector<Species>& species, const std::vector<Footprint>& feet,
+                         const std::vector<long long>& counts, const Box& box, double clearance,
+                         double pitch_scale) {
+    LatticePlan plan;
+    plan.pitch_scale = pitch_scale;
+    plan.species.resize(species.size());
+    std::vector<KeyedRow> keyed;
+    if (!plan_species_rows(species, feet, counts, box, clearance, plan, keyed)) {
+        plan.fits = false;
+        return plan;
+    }
+    if (keyed.empty()) return plan;
+    interleave(keyed);
+    lay_out_rows(keyed, feet, clearance, plan);
     if (plan.height > box.ly) {
         plan.fits = false;
         plan.message = describe(species, counts, plan, box);

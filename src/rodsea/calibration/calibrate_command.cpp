@@ -11,6 +11,7 @@
 #include <fstream>
 #include <mutex>
 #include <numbers>
+#include <optional>
 #include <ostream>
 #include <sstream>
 #include <thread>
@@ -124,6 +125,71 @@ std::string distribution_csv(const std::vector<PointResult>& points) {
     return out.str();
 }
 
+// Runs every copy of every point on `threads` worker threads, with a progress bar. Every copy
+// is a task; results land in fixed slots, so the table does not depend on the thread count or on
+// which thread ran what. Returns none when a stop signal came first; rethrows a copy's failure.
+std::optional<std::vector<std::vector<SingleBodyTrace>>> run_copies(
+    const std::vector<SingleBodyExperiment>& experiments, int copies, int threads,
+    CountProgress& progress) {
+    const std::size_t tasks = experiments.size() * static_cast<std::size_t>(copies);
+    std::vector<std::vector<SingleBodyTrace>> traces(experiments.size(),
+                                                     std::vector<SingleBodyTrace>(copies));
+    std::atomic<std::size_t> next{0}, done{0};
+    std::atomic<bool> failed{false};
+    std::exception_ptr failure;  // written once, before `failed` is set
+    std::mutex failure_lock;
+    const auto worker = [&] {
+        for (std::size_t task = next++; task < tasks; task = next++) {
+            if (failed || stop_signal_received()) return;
+            try {
+                const std::size_t point = task / static_cast<std::size_t>(copies);
+                const int copy = static_cast<int>(task % static_cast<std::size_t>(copies));
+                traces[point][static_cast<std::size_t>(copy)] =
+                    run_single_body_copy(experiments[point], copy);
+                ++done;
+            } catch (...) {
+                const std::lock_guard lock(failure_lock);
+                if (!failure) failure = std::current_exception();
+                failed = true;
+                return;
+            }
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 0; t < threads; ++t)
+        pool.emplace_back(worker);
+    while (done < tasks && !failed && !stop_signal_received()) {
+        progress.update(done);
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    for (std::thread& t : pool)
+        t.join();
+    if (failure) std::rethrow_exception(failure);
+    if (stop_signal_received()) return std::nullopt;
+    return traces;
+}
+
+void print_points(const std::vector<PointResult>& points, std::ostream& out) {
+    out << "  gap/mm  dt/s      ε/(1/mm)  D_r/(rad²/s)        speed/(mm/s)\n";
+    for (const PointResult& p : points) {
+        char line[160];
+        std::snprintf(line, sizeof line,
+                      "  %-6.3g  %-8.3g  %-8.4g  %8.4g ± %-8.2g  %+7.3f ± %.3f\n",
+                      p.experiment.drive.gap, p.experiment.dt, p.experiment.epsilon,
+                      p.result.rotational_diffusion.mean, p.result.rotational_diffusion.error,
+                      p.result.axial_speed.mean, p.result.axial_speed.error);
+        out << line;
+    }
+}
+
+std::string read_config(const std::filesystem::path& config) {
+    std::ifstream in(config);
+    if (!in) throw FileError(config.string(), "cannot be read");
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
 }  // namespace
 
 int calibrate_command(const std::vector<std::string>& words, std::ostream& out, std::ostream&) {
@@ -136,11 +202,8 @@ int calibrate_command(const std::vector<std::string>& words, std::ostream& out, 
         throw InvalidParameter("CONFIG", std::to_string(args.positional.size()) + " given",
                                "exactly one config file (see rodsea calibrate --help)");
     const std::filesystem::path config = args.positional[0];
-    std::ifstream in(config);
-    if (!in) throw FileError(config.string(), "cannot be read");
-    std::stringstream text;
-    text << in.rdbuf();
-    const CalibrationGrid grid = parse_calibration_grid(text.str(), config.string());
+    const std::string text = read_config(config);
+    const CalibrationGrid grid = parse_calibration_grid(text, config.string());
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
     const int threads = static_cast<int>(
         parse_count("--threads", args.value("--threads").value_or(std::to_string(cores)), 1, 256));
@@ -151,7 +214,6 @@ int calibrate_command(const std::vector<std::string>& words, std::ostream& out, 
     std::filesystem::create_directories(dir);
 
     const std::vector<SingleBodyExperiment> experiments = grid.experiments();
-    const std::size_t tasks = experiments.size() * static_cast<std::size_t>(grid.copies);
     const bool quiet = args.has("--quiet");
     if (!quiet)
         out << "rodsea calibrate " << config.string() << ": " << experiments.size() << " points ("
@@ -160,45 +222,12 @@ int calibrate_command(const std::vector<std::string>& words, std::ostream& out, 
             << format_number(grid.warmup) << " + " << format_number(grid.duration) << " s each, on "
             << threads << " threads → " << dir.string() << "\n";
 
-    // Every copy is a task; results land in fixed slots, so the table does not depend on the
-    // thread count or on which thread ran what.
-    std::vector<std::vector<SingleBodyTrace>> traces(experiments.size(),
-                                                     std::vector<SingleBodyTrace>(grid.copies));
-    std::atomic<std::size_t> next{0}, done{0};
-    std::atomic<bool> failed{false};
-    std::exception_ptr failure;  // written once, before `failed` is set
-    std::mutex failure_lock;
     const StopSignalGuard stop_guard;
-    const auto worker = [&] {
-        for (std::size_t task = next++; task < tasks; task = next++) {
-            if (failed || stop_signal_received()) return;
-            try {
-                const std::size_t point = task / static_cast<std::size_t>(grid.copies);
-                const int copy = static_cast<int>(task % static_cast<std::size_t>(grid.copies));
-                traces[point][static_cast<std::size_t>(copy)] =
-                    run_single_body_copy(experiments[point], copy);
-                ++done;
-            } catch (...) {
-                const std::lock_guard lock(failure_lock);
-                if (!failure) failure = std::current_exception();
-                failed = true;
-                return;
-            }
-        }
-    };
-    CountProgress progress(out, choose_progress_style(quiet, ::isatty(STDOUT_FILENO) == 1), tasks,
-                           "copies");
-    std::vector<std::thread> pool;
-    for (int t = 0; t < threads; ++t)
-        pool.emplace_back(worker);
-    while (done < tasks && !failed && !stop_signal_received()) {
-        progress.update(done);
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    }
-    for (std::thread& t : pool)
-        t.join();
-    if (failure) std::rethrow_exception(failure);
-    if (const int signal = stop_signal_received()) {
+    CountProgress progress(out, choose_progress_style(quiet, ::isatty(STDOUT_FILENO) == 1),
+                           experiments.size() * static_cast<std::size_t>(grid.copies), "copies");
+    const auto traces = run_copies(experiments, grid.copies, threads, progress);
+    if (!traces) {
+        const int signal = stop_signal_received();
         out << "\nrodsea calibrate: stopped by signal " << signal << "; nothing written\n";
         return StopRequested{signal}.exit_code();
     }
@@ -207,22 +236,13 @@ int calibrate_command(const std::vector<std::string>& words, std::ostream& out, 
     std::vector<PointResult> points;
     for (std::size_t i = 0; i < experiments.size(); ++i) {
         const double period = 2.0 * std::numbers::pi / experiments[i].drive.angular_frequency;
-        points.push_back({experiments[i], combine_single_body_traces(traces[i], period)});
+        points.push_back({experiments[i], combine_single_body_traces((*traces)[i], period)});
     }
     write_file_atomically(dir / "calibration.csv", calibration_csv(points));
     write_file_atomically(dir / "speed_distribution.csv", distribution_csv(points));
-    write_file_atomically(dir / "calibrate.toml", text.str());
+    write_file_atomically(dir / "calibrate.toml", text);
     if (!quiet) {
-        out << "  gap/mm  dt/s      ε/(1/mm)  D_r/(rad²/s)        speed/(mm/s)\n";
-        for (const PointResult& p : points) {
-            char line[160];
-            std::snprintf(line, sizeof line,
-                          "  %-6.3g  %-8.3g  %-8.4g  %8.4g ± %-8.2g  %+7.3f ± %.3f\n",
-                          p.experiment.drive.gap, p.experiment.dt, p.experiment.epsilon,
-                          p.result.rotational_diffusion.mean, p.result.rotational_diffusion.error,
-                          p.result.axial_speed.mean, p.result.axial_speed.error);
-            out << line;
-        }
+        print_points(points, out);
         out << "wrote " << (dir / "calibration.csv").string() << ", speed_distribution.csv, "
             << "calibrate.toml\n";
     }

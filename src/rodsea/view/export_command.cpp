@@ -130,6 +130,76 @@ bool extension_fits(const fs::path& path, ExportFormat format) {
     return path.extension() == (format == ExportFormat::lammps_dump ? ".lammpstrj" : ".xyz");
 }
 
+// What an export will write, checked and sized before anything is.
+struct ExportJob {
+    fs::path path;
+    ExportOptions options;
+    std::vector<std::size_t> frames;
+    ExportScene scene;
+    BodyState first;  // the first frame, read to check its bodies against the config
+    std::size_t spheres = 0;
+    double total_bytes = 0.0;
+};
+
+void print_plan(const ExportJob& job, const StoredRun& run, std::ostream& out) {
+    const std::vector<double>& times = run.times();
+    const std::vector<std::int64_t>& steps = run.reader.steps();
+    const ExportScene& scene = job.scene;
+    out << "export " << run.run_dir.string() << " -> " << job.path.string() << " ("
+        << to_string(job.options.format) << (job.options.velocities ? ", with velocities" : "")
+        << ")\n";
+    if (job.frames.size() == 1)
+        out << "  frame " << job.frames.front() << " of " << run.frames()
+            << ": t = " << format_number(times[job.frames.front()]) << " s, step "
+            << steps[job.frames.front()];
+    else
+        out << "  frames: " << job.frames.size() << " of " << run.frames()
+            << ", t = " << format_number(times[job.frames.front()]) << " to "
+            << format_number(times[job.frames.back()]) << " s";
+    out << "\n  spheres per frame: " << job.spheres << " in " << job.first.size() << " bodies (";
+    for (std::size_t s = 0; s < scene.species.size(); ++s)
+        out << (s ? ", " : "") << "type " << s + 1 << " = " << scene.species[s].name << ": "
+            << run.plan.counts[s] << " x " << scene.species[s].radii.size() << " spheres";
+    out << ")\n  box: [0, " << format_number(scene.lx) << "] x [0, " << format_number(scene.ly)
+        << "] x [" << format_number(scene.z_lo) << ", " << format_number(scene.z_hi)
+        << "] mm; times in s (step x dt, dt = " << format_number(scene.dt)
+        << " s)\n  estimated size: " << megabytes(job.total_bytes) << "\n";
+    if (!extension_fits(job.path, job.options.format))
+        out << "  note: VMD picks its reader by extension; name the file ."
+            << (job.options.format == ExportFormat::lammps_dump ? "lammpstrj" : "xyz")
+            << " or load it with an explicit type (docs/export.md)\n";
+    out.flush();
+}
+
+// Writes every frame of the job into `path` atomically: the file appears complete or not at all,
+// also on a full disk (FileError) or Ctrl-C (StopRequested).
+void write_frames(ExportJob& job, const StoredRun& run, std::ostream& out, bool quiet) {
+    const std::vector<double>& times = run.times();
+    const std::vector<std::int64_t>& steps = run.reader.steps();
+    replace_file_atomically(job.path, [&](const fs::path& tmp) {
+        std::ofstream file(tmp, std::ios::binary | std::ios::trunc);
+        if (!file) throw FileError(tmp.string(), cat({"cannot create: ", std::strerror(errno)}));
+        CountProgress progress(out, choose_progress_style(quiet, ::isatty(STDOUT_FILENO) == 1),
+                               job.frames.size(), "frames");
+        for (std::size_t i = 0; i < job.frames.size(); ++i) {
+            if (const int s = stop_signal_received()) throw StopRequested{s};
+            const std::size_t k = job.frames[i];
+            const BodyState frame = i == 0 ? std::move(job.first) : run.frame(k);
+            write_export_frame(file, job.scene, job.options, frame, steps[k], times[k]);
+            if (!file)
+                throw FileError(job.path.string(),
+                                cat({"write failed: ", std::strerror(errno),
+                                     " (nothing written; the disk may be full)"}));
+            progress.update(i + 1);
+        }
+        file.close();
+        if (!file)
+            throw FileError(job.path.string(),
+                            cat({"write failed: ", std::strerror(errno), " (nothing written)"}));
+        progress.finish();
+    });
+}
+
 }  // namespace
 
 int export_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -144,95 +214,44 @@ int export_command(const std::vector<std::string>& args, std::ostream& out, std:
     if (a.positional.size() > 1)
         throw InvalidParameter("RUN_DIR", quoted(a.positional[1]), "exactly one run directory",
                                "export writes one run into one file");
-    ExportOptions options;
-    options.format = format_from(a.value("--format"));
-    options.velocities = a.has("--velocities");
+    ExportJob job;
+    job.options.format = format_from(a.value("--format"));
+    job.options.velocities = a.has("--velocities");
     const bool quiet = a.has("--quiet");
     const std::optional<std::string> output = a.value("--output");
     if (!output || output->empty())
         throw InvalidParameter("-o", "none given", "the file to write, e.g. -o run.lammpstrj");
-    const fs::path path = *output;
+    job.path = *output;
 
     const StoredRun run = open_stored_run(a.positional[0]);
-    const std::vector<std::size_t> frames = select_frames(run, a);
-    const ExportScene scene = make_export_scene(run.plan);
+    job.frames = select_frames(run, a);
+    job.scene = make_export_scene(run.plan);
     // The first frame is read now: its bodies must match the config before anything is
     // written. Every later frame is checked as it is read (StoredRun::frame).
-    BodyState first = run.frame(frames.front());
-    const std::size_t spheres = export_sphere_count(scene, first, run.trajectory.string());
-    const std::size_t bodies = first.size();
-    const double frame_bytes = estimated_frame_bytes(scene, options, spheres, bodies);
-    const double total_bytes = frame_bytes * static_cast<double>(frames.size());
-    check_output(path, run, total_bytes);
-
-    const std::vector<double>& times = run.times();
-    const std::vector<std::int64_t>& steps = run.reader.steps();
-    if (!quiet) {
-        out << "export " << run.run_dir.string() << " -> " << path.string() << " ("
-            << to_string(options.format) << (options.velocities ? ", with velocities" : "")
-            << ")\n";
-        if (frames.size() == 1)
-            out << "  frame " << frames.front() << " of " << run.frames()
-                << ": t = " << format_number(times[frames.front()]) << " s, step "
-                << steps[frames.front()];
-        else
-            out << "  frames: " << frames.size() << " of " << run.frames()
-                << ", t = " << format_number(times[frames.front()]) << " to "
-                << format_number(times[frames.back()]) << " s";
-        out << "\n  spheres per frame: " << spheres << " in " << bodies << " bodies (";
-        for (std::size_t s = 0; s < scene.species.size(); ++s)
-            out << (s ? ", " : "") << "type " << s + 1 << " = " << scene.species[s].name << ": "
-                << run.plan.counts[s] << " x " << scene.species[s].radii.size() << " spheres";
-        out << ")\n  box: [0, " << format_number(scene.lx) << "] x [0, " << format_number(scene.ly)
-            << "] x [" << format_number(scene.z_lo) << ", " << format_number(scene.z_hi)
-            << "] mm; times in s (step x dt, dt = " << format_number(scene.dt)
-            << " s)\n  estimated size: " << megabytes(total_bytes) << "\n";
-        if (!extension_fits(path, options.format))
-            out << "  note: VMD picks its reader by extension; name the file ."
-                << (options.format == ExportFormat::lammps_dump ? "lammpstrj" : "xyz")
-                << " or load it with an explicit type (docs/export.md)\n";
-        out.flush();
-    }
+    job.first = run.frame(job.frames.front());
+    job.spheres = export_sphere_count(job.scene, job.first, run.trajectory.string());
+    job.total_bytes = estimated_frame_bytes(job.scene, job.options, job.spheres, job.first.size()) *
+                      static_cast<double>(job.frames.size());
+    check_output(job.path, run, job.total_bytes);
+    if (!quiet) print_plan(job, run, out);
 
     using clock = std::chrono::steady_clock;
     const auto start = clock::now();
     const StopSignalGuard signals;  // Ctrl-C stops between frames; a full disk fails a write
     try {
-        replace_file_atomically(path, [&](const fs::path& tmp) {
-            std::ofstream file(tmp, std::ios::binary | std::ios::trunc);
-            if (!file)
-                throw FileError(tmp.string(), cat({"cannot create: ", std::strerror(errno)}));
-            CountProgress progress(out, choose_progress_style(quiet, ::isatty(STDOUT_FILENO) == 1),
-                                   frames.size(), "frames");
-            for (std::size_t i = 0; i < frames.size(); ++i) {
-                if (const int s = stop_signal_received()) throw StopRequested{s};
-                const std::size_t k = frames[i];
-                const BodyState frame = i == 0 ? std::move(first) : run.frame(k);
-                write_export_frame(file, scene, options, frame, steps[k], times[k]);
-                if (!file)
-                    throw FileError(path.string(),
-                                    cat({"write failed: ", std::strerror(errno),
-                                         " (nothing written; the disk may be full)"}));
-                progress.update(i + 1);
-            }
-            file.close();
-            if (!file)
-                throw FileError(path.string(), cat({"write failed: ", std::strerror(errno),
-                                                    " (nothing written)"}));
-            progress.finish();
-        });
+        write_frames(job, run, out, quiet);
     } catch (const StopRequested& stop) {
         err << "rodsea: export stopped by signal " << stop.signal << "; nothing written ("
-            << path.string() << " is unchanged)\n";
+            << job.path.string() << " is unchanged)\n";
         return stop.exit_code();
     }
     if (!quiet) {
         std::error_code ec;
-        const auto size = fs::file_size(path, ec);
+        const auto size = fs::file_size(job.path, ec);
         const double seconds = std::chrono::duration<double>(clock::now() - start).count();
-        out << "  wrote " << path.string() << ": " << frames.size()
-            << (frames.size() == 1 ? " frame, " : " frames, ")
-            << megabytes(ec ? total_bytes : static_cast<double>(size)) << " in "
+        out << "  wrote " << job.path.string() << ": " << job.frames.size()
+            << (job.frames.size() == 1 ? " frame, " : " frames, ")
+            << megabytes(ec ? job.total_bytes : static_cast<double>(size)) << " in "
             << format_number(std::round(seconds * 100) / 100) << " s\n";
     }
     return 0;

@@ -241,6 +241,100 @@ class Annotator {
     double font_;
 };
 
+// The medium first, by colour, bodies of one colour sharing a path, but 64 at most: Cairo's
+// rasteriser slows down on long paths (a 10⁵-bead medium: 256 ms at 2000 px in paths of 64
+// bodies, 300 ms in paths of 256).
+void fill_batches(cairo_t* cr, const DiscPainter& painter, const BodyState& bodies,
+                  const std::vector<std::size_t>& list, double inset, const Rgb& colour) {
+    constexpr std::size_t kBatch = 64;
+    set_colour(cr, colour);
+    for (std::size_t first = 0; first < list.size(); first += kBatch) {
+        cairo_new_path(cr);
+        for (std::size_t i = first; i < std::min(list.size(), first + kBatch); ++i)
+            painter.add(bodies, list[i], inset);
+        cairo_fill(cr);
+    }
+}
+
+// Draws the medium, grey or by its nematic axis; returns whether any rod got an axis colour.
+bool draw_medium(cairo_t* cr, const DiscPainter& painter, const RunPlan& plan,
+                 const BodyState& bodies, const std::vector<std::size_t>& medium, double outline,
+                 bool nematic) {
+    if (outline > 0.0) fill_batches(cr, painter, bodies, medium, 0.0, kOutline);
+    std::vector<std::vector<std::size_t>> bins(nematic ? kNematicBins + 1 : 1);
+    for (std::size_t b : medium) {
+        const bool has_axis = plan.engine.species[bodies.species[b]].kind == BodyKind::apolar_rod;
+        if (!nematic || !has_axis) {
+            bins.back().push_back(b);
+            continue;
+        }
+        const double theta = in_plane_angle(bodies.orientation[b]);
+        const double turns = theta / std::numbers::pi - std::floor(theta / std::numbers::pi);
+        bins[static_cast<std::size_t>(turns * kNematicBins) % kNematicBins].push_back(b);
+    }
+    for (std::size_t k = 0; k < bins.size(); ++k)
+        fill_batches(cr, painter, bodies, bins[k], outline,
+                     k + 1 == bins.size() ? kMediumFill
+                                          : nematic_colour((static_cast<double>(k) + 0.5) *
+                                                           std::numbers::pi / kNematicBins));
+    return std::any_of(bins.begin(), bins.end() - 1, [](const auto& bin) { return !bin.empty(); });
+}
+
+// DBSCAN labels of the polar rods, renumbered by flock size. DBSCAN numbers flocks by where it
+// met them first, which changes from frame to frame; ranked by size (largest first, the label
+// order as tie-break) a flock keeps its colour through a movie as long as it stays the n-th
+// largest. `flocks` receives their number.
+std::vector<int> flocks_by_size(const BodyState& bodies, const std::vector<std::size_t>& polar,
+                                const PeriodicBox2D& box, const DbscanParameters& parameters,
+                                int& flocks) {
+    std::vector<Vec3> centres;
+    for (std::size_t b : polar)
+        centres.push_back(bodies.position[b]);
+    std::vector<int> labels = dbscan(centres, box, parameters);
+    flocks = 0;
+    for (int l : labels)
+        flocks = std::max(flocks, l + 1);
+    std::vector<int> size(static_cast<std::size_t>(flocks), 0), rank(size.size());
+    for (int l : labels)
+        if (l >= 0) ++size[static_cast<std::size_t>(l)];
+    std::vector<int> by_size(size.size());
+    for (std::size_t l = 0; l < by_size.size(); ++l)
+        by_size[l] = static_cast<int>(l);
+    std::stable_sort(by_size.begin(), by_size.end(), [&](int a, int b) {
+        return size[static_cast<std::size_t>(a)] > size[static_cast<std::size_t>(b)];
+    });
+    for (std::size_t r = 0; r < by_size.size(); ++r)
+        rank[static_cast<std::size_t>(by_size[r])] = static_cast<int>(r);
+    for (int& l : labels)
+        if (l >= 0) l = rank[static_cast<std::size_t>(l)];
+    return labels;
+}
+
+// Polar rods one by one, lowest first, each in the colour `colour_of(index in polar)` gives.
+template <class ColourOf>
+void draw_polar(cairo_t* cr, const DiscPainter& painter, const BodyState& bodies,
+                const std::vector<std::size_t>& polar, double outline, ColourOf colour_of) {
+    std::vector<std::size_t> order(polar.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+        order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return bodies.position[polar[a]].z < bodies.position[polar[b]].z;
+    });
+    for (std::size_t i : order) {
+        const std::size_t b = polar[i];
+        if (outline > 0.0) {
+            cairo_new_path(cr);
+            painter.add(bodies, b, 0.0);
+            set_colour(cr, kOutline);
+            cairo_fill(cr);
+        }
+        cairo_new_path(cr);
+        painter.add(bodies, b, outline);
+        set_colour(cr, colour_of(i));
+        cairo_fill(cr);
+    }
+}
+
 }  // namespace
 
 FrameRenderer::FrameRenderer(const RunPlan& plan, const RenderOptions& options)
@@ -318,127 +412,27 @@ void FrameRenderer::render_into(const BodyState& bodies, const FrameLabel& label
     std::vector<std::size_t> polar, medium;
     for (std::size_t b = 0; b < bodies.size(); ++b)
         (is_polar(plan_.engine.species[bodies.species[b]]) ? polar : medium).push_back(b);
-
-    // The medium first, by colour: the polar rods are what the eye looks for. Bodies of one
-    // colour share a path, but 64 at most: Cairo's rasteriser slows down on long paths (a
-    // 10⁵-bead medium: 256 ms at 2000 px in paths of 64 bodies, 300 ms in paths of 256).
-    const auto fill_batches = [&](const std::vector<std::size_t>& list, double inset,
-                                  const Rgb& colour) {
-        constexpr std::size_t kBatch = 64;
-        set_colour(cr, colour);
-        for (std::size_t first = 0; first < list.size(); first += kBatch) {
-            cairo_new_path(cr);
-            for (std::size_t i = first; i < std::min(list.size(), first + kBatch); ++i)
-                painter.add(bodies, list[i], inset);
-            cairo_fill(cr);
-        }
-    };
-    if (outline > 0.0) fill_batches(medium, 0.0, kOutline);
     const bool nematic = options_.medium == MediumColouring::nematic;
-    std::vector<std::vector<std::size_t>> bins(nematic ? kNematicBins + 1 : 1);
-    for (std::size_t b : medium) {
-        const bool has_axis = plan_.engine.species[bodies.species[b]].kind == BodyKind::apolar_rod;
-        if (!nematic || !has_axis) {
-            bins.back().push_back(b);
-            continue;
-        }
-        const double theta = in_plane_angle(bodies.orientation[b]);
-        const double turns = theta / std::numbers::pi - std::floor(theta / std::numbers::pi);
-        bins[static_cast<std::size_t>(turns * kNematicBins) % kNematicBins].push_back(b);
-    }
-    for (std::size_t k = 0; k < bins.size(); ++k)
-        fill_batches(bins[k], outline,
-                     k + 1 == bins.size() ? kMediumFill
-                                          : nematic_colour((static_cast<double>(k) + 0.5) *
-                                                           std::numbers::pi / kNematicBins));
-
-    // Polar rods one by one, lowest first, each in its own colour.
+    const bool medium_axes = draw_medium(cr, painter, plan_, bodies, medium, outline, nematic);
     std::vector<double> angles;
     for (std::size_t b : polar)
         angles.push_back(in_plane_angle(bodies.orientation[b]));
     std::vector<int> labels;
     int flocks = 0;
-    if (options_.polar == PolarColouring::flock && !polar.empty()) {
-        std::vector<Vec3> centres;
-        for (std::size_t b : polar)
-            centres.push_back(bodies.position[b]);
-        labels = dbscan(centres, {plan_.engine.box.lx, plan_.engine.box.ly}, flocks_);
-        for (int l : labels)
-            flocks = std::max(flocks, l + 1);
-        // DBSCAN numbers flocks by where it met them first, which changes from frame to frame;
-        // ranked by size (largest first, the label order as tie-break) a flock keeps its colour
-        // through a movie as long as it stays the n-th largest.
-        std::vector<int> size(static_cast<std::size_t>(flocks), 0), rank(size.size());
-        for (int l : labels)
-            if (l >= 0) ++size[static_cast<std::size_t>(l)];
-        std::vector<int> by_size(size.size());
-        for (std::size_t l = 0; l < by_size.size(); ++l)
-            by_size[l] = static_cast<int>(l);
-        std::stable_sort(by_size.begin(), by_size.end(), [&](int a, int b) {
-            return size[static_cast<std::size_t>(a)] > size[static_cast<std::size_t>(b)];
-        });
-        for (std::size_t r = 0; r < by_size.size(); ++r)
-            rank[static_cast<std::size_t>(by_size[r])] = static_cast<int>(r);
-        for (int& l : labels)
-            if (l >= 0) l = rank[static_cast<std::size_t>(l)];
-    }
-    std::vector<std::size_t> order(polar.size());
-    for (std::size_t i = 0; i < order.size(); ++i)
-        order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        return bodies.position[polar[a]].z < bodies.position[polar[b]].z;
+    if (options_.polar == PolarColouring::flock && !polar.empty())
+        labels = flocks_by_size(bodies, polar, {plan_.engine.box.lx, plan_.engine.box.ly}, flocks_,
+                                flocks);
+    draw_polar(cr, painter, bodies, polar, outline, [&](std::size_t i) {
+        return options_.polar == PolarColouring::direction ? direction_colour(angles[i])
+               : options_.polar == PolarColouring::flock   ? label_colour(labels[i])
+                                                           : kPolarUniform;
     });
-    for (std::size_t i : order) {
-        const std::size_t b = polar[i];
-        if (outline > 0.0) {
-            cairo_new_path(cr);
-            painter.add(bodies, b, 0.0);
-            set_colour(cr, kOutline);
-            cairo_fill(cr);
-        }
-        cairo_new_path(cr);
-        painter.add(bodies, b, outline);
-        set_colour(cr, options_.polar == PolarColouring::direction ? direction_colour(angles[i])
-                       : options_.polar == PolarColouring::flock   ? label_colour(labels[i])
-                                                                   : kPolarUniform);
-        cairo_fill(cr);
-    }
 
-    if (options_.annotate) {
-        cairo_identity_matrix(cr);
-        const Annotator note(cr, width_, height_);
-        std::vector<std::string> lines;
-        lines.push_back("t = " + fixed(label.time, 4) + " s   frame " +
-                        std::to_string(label.frame) + "   step " + std::to_string(label.step));
-        const double area = plan_.engine.box.lx * plan_.engine.box.ly;
-        for (std::uint32_t s = 0; s < plan_.engine.species.size(); ++s) {
-            const Species& sp = plan_.engine.species[s];
-            std::string line =
-                sp.name + ": " + std::to_string(plan_.counts[s]) + " " + plural_kind(sp.kind) +
-                ", φ = " +
-                fixed(static_cast<double>(plan_.counts[s]) * sp.shape.projected_area / area, 3);
-            if (sp.kind == BodyKind::polar_rod)
-                line += ", P = " + fixed(orientational_order(bodies, s, 1), 2);
-            else if (sp.kind == BodyKind::apolar_rod)
-                line += ", S = " + fixed(orientational_order(bodies, s, 2), 2);
-            lines.push_back(line);
-        }
-        if (options_.polar == PolarColouring::flock)
-            lines.push_back("colour: flock (DBSCAN ε = " + format_number(flocks_.eps) + " mm), " +
-                            std::to_string(flocks) + " flocks; grey: none");
-        if (options_.region)
-            lines.push_back("view: x " + format_number(region_.x0) + "–" +
-                            format_number(region_.x1) + " mm, y " + format_number(region_.y0) +
-                            "–" + format_number(region_.y1) + " mm");
-        note.text_block(lines);
-        note.scale_bar(scale_bar_length(region_.x1 - region_.x0), scale_);
-        int slot = 0;
-        if (!polar.empty() && options_.polar == PolarColouring::direction)
-            note.wheel(slot++, "polar axis", direction_colour);
-        if (nematic && bins.size() > 1 &&
-            std::any_of(bins.begin(), bins.end() - 1, [](const auto& bin) { return !bin.empty(); }))
-            note.wheel(slot, "medium axis", nematic_colour);
-    }
+    if (options_.annotate)
+        annotate(
+            cr, bodies, label,
+            {flocks, !polar.empty() && options_.polar == PolarColouring::direction, medium_axes});
+
     const cairo_status_t status = cairo_status(cr);
     cairo_destroy(cr);
     cairo_surface_flush(surface);
@@ -448,6 +442,40 @@ void FrameRenderer::render_into(const BodyState& bodies, const FrameLabel& label
     if (status != CAIRO_STATUS_SUCCESS)
         throw std::runtime_error(std::string("drawing the frame failed: ") +
                                  cairo_status_to_string(status));
+}
+
+void FrameRenderer::annotate(cairo_t* cr, const BodyState& bodies, const FrameLabel& label,
+                             const Legend& legend) const {
+    cairo_identity_matrix(cr);
+    const Annotator note(cr, width_, height_);
+    std::vector<std::string> lines;
+    lines.push_back("t = " + fixed(label.time, 4) + " s   frame " + std::to_string(label.frame) +
+                    "   step " + std::to_string(label.step));
+    const double area = plan_.engine.box.lx * plan_.engine.box.ly;
+    for (std::uint32_t s = 0; s < plan_.engine.species.size(); ++s) {
+        const Species& sp = plan_.engine.species[s];
+        std::string line =
+            sp.name + ": " + std::to_string(plan_.counts[s]) + " " + plural_kind(sp.kind) +
+            ", φ = " +
+            fixed(static_cast<double>(plan_.counts[s]) * sp.shape.projected_area / area, 3);
+        if (sp.kind == BodyKind::polar_rod)
+            line += ", P = " + fixed(orientational_order(bodies, s, 1), 2);
+        else if (sp.kind == BodyKind::apolar_rod)
+            line += ", S = " + fixed(orientational_order(bodies, s, 2), 2);
+        lines.push_back(line);
+    }
+    if (options_.polar == PolarColouring::flock)
+        lines.push_back("colour: flock (DBSCAN ε = " + format_number(flocks_.eps) + " mm), " +
+                        std::to_string(legend.flocks) + " flocks; grey: none");
+    if (options_.region)
+        lines.push_back("view: x " + format_number(region_.x0) + "–" + format_number(region_.x1) +
+                        " mm, y " + format_number(region_.y0) + "–" + format_number(region_.y1) +
+                        " mm");
+    note.text_block(lines);
+    note.scale_bar(scale_bar_length(region_.x1 - region_.x0), scale_);
+    int slot = 0;
+    if (legend.polar_wheel) note.wheel(slot++, "polar axis", direction_colour);
+    if (legend.medium_wheel) note.wheel(slot, "medium axis", nematic_colour);
 }
 
 }  // namespace rodsea

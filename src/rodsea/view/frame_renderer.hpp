@@ -17,6 +17,9 @@
 #include "rodsea/config/run_plan.hpp"
 #include "rodsea/engine/body_state.hpp"
 
+// Cairo stays out of this header.
+typedef struct _cairo cairo_t;
+
 namespace rodsea {
 
 enum class PolarColouring { direction, flock, uniform };
@@ -70,6 +73,16 @@ class FrameRenderer {
     void render_into(const BodyState& bodies, const FrameLabel& label, Image& image) const;
 
   private:
+    // What the corner text and the legend say beyond the run: the number of flocks coloured,
+    // and which colour wheels to explain.
+    struct Legend {
+        int flocks = 0;
+        bool polar_wheel = false;
+        bool medium_wheel = false;
+    };
+    void annotate(cairo_t* cr, const BodyState& bodies, const FrameLabel& label,
+                  const Legend& legend) const;
+
     const RunPlan& plan_;
     RenderOptions options_;
     ViewRegion region_;

@@ -40,6 +40,10 @@ class ContactFinder {
     std::uint64_t pair_list_builds() const { return pairs_.builds(); }
 
   private:
+    // Appends the chunks to `out`, which holds `at` contacts, and returns how many they had.
+    static size_t gather(const std::vector<std::vector<Contact>>& chunks, std::vector<Contact>& out,
+                         size_t at);
+
     VerletPairList pairs_{kVerletSkin};
     // Per thread: its chunk's body contacts and plate contacts, and its largest overlap.
     std::vector<std::vector<Contact>> body_chunks_, plate_chunks_;
