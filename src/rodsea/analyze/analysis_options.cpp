@@ -130,16 +130,6 @@ std::vector<KeySpec> make_keys() {
     };
 }
 
-// Markdown table cells cannot hold a bare '|'.
-std::string cell(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-        if (c == '|') out += '\\';
-        out += c;
-    }
-    return out;
-}
-
 }  // namespace
 
 const std::vector<KeySpec>& analysis_option_keys() {
@@ -225,8 +215,8 @@ std::string analysis_options_reference() {
         std::string meaning = k.doc;
         if (!k.choice.empty()) meaning += " (MODEL.md CHOICE)";
         out << "| `" << k.path() << "` | " << (k.unit.empty() ? "–" : k.unit) << " | "
-            << k.default_doc() << " | " << cell(k.allowed_text()) << " | " << cell(meaning)
-            << " |\n";
+            << k.default_doc() << " | " << config::markdown_cell(k.allowed_text()) << " | "
+            << config::markdown_cell(meaning) << " |\n";
     }
     return out.str();
 }

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <ostream>
 
 #include "rodsea/analyze/analyze_run.hpp"
@@ -67,11 +68,9 @@ std::vector<std::string> split_commas(const std::string& text) {
 }  // namespace
 
 int analyze_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& log) {
-    const Arguments words = parse_arguments(args, analyze_command_spec());
-    if (words.help) {
-        out << help_text(analyze_command_spec());
-        return 0;
-    }
+    const std::optional<Arguments> parsed = arguments_or_help(args, analyze_command_spec(), out);
+    if (!parsed) return 0;
+    const Arguments& words = *parsed;
     AnalyzeRequest request;
     const bool quiet = words.has("--quiet");
     if (const auto names = words.value("--observables")) {

@@ -193,11 +193,9 @@ std::string read_config(const std::filesystem::path& config) {
 }  // namespace
 
 int calibrate_command(const std::vector<std::string>& words, std::ostream& out, std::ostream&) {
-    const Arguments args = parse_arguments(words, calibrate_command_spec());
-    if (args.help) {
-        out << help_text(calibrate_command_spec());
-        return 0;
-    }
+    const std::optional<Arguments> parsed = arguments_or_help(words, calibrate_command_spec(), out);
+    if (!parsed) return 0;
+    const Arguments& args = *parsed;
     if (args.positional.size() != 1)
         throw InvalidParameter("CONFIG", std::to_string(args.positional.size()) + " given",
                                "exactly one config file (see rodsea calibrate --help)");

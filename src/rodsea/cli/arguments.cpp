@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <memory>
+#include <ostream>
 #include <sstream>
 
 #include "rodsea/error.hpp"
@@ -179,6 +180,14 @@ std::string help_text(const CommandSpec& spec) {
     std::vector<std::vector<std::string>> values;
     std::vector<bool> given;
     return make_parser(spec, values, given)->help();
+}
+
+std::optional<Arguments> arguments_or_help(const std::vector<std::string>& words,
+                                           const CommandSpec& spec, std::ostream& out) {
+    Arguments a = parse_arguments(words, spec);
+    if (!a.help) return a;
+    out << help_text(spec);
+    return std::nullopt;
 }
 
 // Built by appending: GCC 12 at -O3 warns falsely (-Wrestrict) on "literal" + std::string.

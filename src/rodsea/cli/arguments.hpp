@@ -4,6 +4,7 @@
 // command accepts and the help that lists them cannot drift apart. Anything parse_arguments
 // cannot take is an error that names the word and lists the accepted flags: a typo never
 // silently changes what a command does.
+#include <iosfwd>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -48,6 +49,11 @@ Arguments parse_arguments(const std::vector<std::string>& words, const CommandSp
 
 // The command's help: synopsis, description, options, footer.
 std::string help_text(const CommandSpec& spec);
+
+// parse_arguments for a command's function: with --help among the words, prints the help to
+// `out` and returns none (the command then exits with 0).
+std::optional<Arguments> arguments_or_help(const std::vector<std::string>& words,
+                                           const CommandSpec& spec, std::ostream& out);
 
 // A number given to `flag`, checked to lie in [lo, hi] (infinite bounds: any finite number); the
 // message names the flag, the text and the range with its unit.

@@ -1,5 +1,6 @@
 #include "rodsea/config/config_command.hpp"
 
+#include <optional>
 #include <ostream>
 
 #include "rodsea/cli/exit_codes.hpp"
@@ -23,11 +24,9 @@ const CommandSpec& config_command_spec() {
 }
 
 int config_command(const std::vector<std::string>& words, std::ostream& out, std::ostream&) {
-    const Arguments a = parse_arguments(words, config_command_spec());
-    if (a.help) {
-        out << help_text(config_command_spec());
-        return kExitOk;
-    }
+    const std::optional<Arguments> parsed = arguments_or_help(words, config_command_spec(), out);
+    if (!parsed) return kExitOk;
+    const Arguments& a = *parsed;
     if (!a.positional.empty())
         throw InvalidParameter(a.positional[0], "an unexpected argument",
                                "--defaults or --reference");

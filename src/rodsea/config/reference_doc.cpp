@@ -12,16 +12,6 @@ namespace {
 using config::KeySpec;
 using config::TableSpec;
 
-// Markdown table cells cannot hold a bare '|' (|u_n| in the noise docs).
-std::string cell(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-        if (c == '|') out += '\\';
-        out += c;
-    }
-    return out;
-}
-
 std::string kinds_text(config::KindMask kinds) {
     std::string s;
     for (const BodyKind k : {BodyKind::polar_rod, BodyKind::apolar_rod, BodyKind::bead})
@@ -73,8 +63,10 @@ std::string config_reference_markdown() {
               "|---|---|---|---|---|---|\n";
         for (const KeySpec* k : config::keys_of(t.path)) {
             md << "| `" << k->name << "` | " << k->type_text() << " | "
-               << cell(k->unit.empty() ? "—" : k->unit) << " | " << cell(k->default_doc()) << " | "
-               << cell(k->allowed_text()) << " | " << cell(description(*k)) << " |\n";
+               << config::markdown_cell(k->unit.empty() ? "—" : k->unit) << " | "
+               << config::markdown_cell(k->default_doc()) << " | "
+               << config::markdown_cell(k->allowed_text()) << " | "
+               << config::markdown_cell(description(*k)) << " |\n";
         }
     }
     md << "\n## CHOICEs\n\n| key | default | why |\n|---|---|---|\n";
@@ -86,7 +78,8 @@ std::string config_reference_markdown() {
         if (k.choice_kinds != config::kAllKinds) key += " (" + kinds_text(k.choice_kinds) + ")";
         std::string default_text = k.default_doc();
         if (k.default_value && !k.unit.empty()) default_text += " " + k.unit;
-        md << "| " << key << " | " << cell(default_text) << " | " << cell(k.choice) << " |\n";
+        md << "| " << key << " | " << config::markdown_cell(default_text) << " | "
+           << config::markdown_cell(k.choice) << " |\n";
     }
     md << "| sphere-chain construction | — | equally spaced centres, the end centres one end "
           "radius inside the rod's ends, each diameter the profile's at its centre: reproduces "

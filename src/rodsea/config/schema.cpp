@@ -382,6 +382,15 @@ std::string KeySpec::allowed_text() const {
     return "";
 }
 
+std::string markdown_cell(const std::string& text) {
+    std::string out;
+    for (const char c : text) {
+        if (c == '|') out += '\\';
+        out += c;
+    }
+    return out;
+}
+
 std::string doc_text(const Value& v) {
     if (const auto* d = std::get_if<double>(&v)) return doc_number(*d);
     return toml_literal(v);

@@ -125,6 +125,9 @@ inline constexpr double kPolarRodLength = 4.5;  // ℓ_p, mm: the unit of box.si
 inline constexpr double kApolarRodDiameter = 0.8;   // mm: σ = ℓ_a / 0.8 mm
 inline constexpr double kMaxAreaFraction = 0.9069;  // π/(2√3), hexagonal packing of discs
 
+// Text for a cell of a Markdown table: a bare '|' would end the cell (|u_n| in the noise docs).
+std::string markdown_cell(const std::string& text);
+
 // A value as the docs show it: like TOML, but whole reals without ".0".
 std::string doc_text(const Value& v);
 

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <optional>
 #include <ostream>
 
 #include "rodsea/calibration/calibration_table.hpp"
@@ -68,11 +69,9 @@ RunPlan config_named_by(const Arguments& a, const CommandSpec& spec) {
 }  // namespace
 
 int run_command(const std::vector<std::string>& words, std::ostream& out, std::ostream& err) {
-    const Arguments a = parse_arguments(words, run_command_spec());
-    if (a.help) {
-        out << help_text(run_command_spec());
-        return kExitOk;
-    }
+    const std::optional<Arguments> parsed = arguments_or_help(words, run_command_spec(), out);
+    if (!parsed) return kExitOk;
+    const Arguments& a = *parsed;
     RunOptions options;
     options.quiet = a.has("--quiet");
     options.overwrite = a.has("--overwrite");
@@ -91,11 +90,9 @@ int run_command(const std::vector<std::string>& words, std::ostream& out, std::o
 }
 
 int info_command(const std::vector<std::string>& words, std::ostream& out, std::ostream&) {
-    const Arguments a = parse_arguments(words, info_command_spec());
-    if (a.help) {
-        out << help_text(info_command_spec());
-        return kExitOk;
-    }
+    const std::optional<Arguments> parsed = arguments_or_help(words, info_command_spec(), out);
+    if (!parsed) return kExitOk;
+    const Arguments& a = *parsed;
     const RunPlan plan = config_named_by(a, info_command_spec());
     out << "rodsea info " << a.positional[0] << "\n";
     describe_plan(plan, out);

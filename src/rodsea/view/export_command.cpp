@@ -203,11 +203,9 @@ void write_frames(ExportJob& job, const StoredRun& run, std::ostream& out, bool 
 }  // namespace
 
 int export_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-    const Arguments a = parse_arguments(args, export_command_spec());
-    if (a.help) {
-        out << help_text(export_command_spec());
-        return 0;
-    }
+    const std::optional<Arguments> parsed = arguments_or_help(args, export_command_spec(), out);
+    if (!parsed) return 0;
+    const Arguments& a = *parsed;
     if (a.positional.empty())
         throw InvalidParameter("RUN_DIR", "none given",
                                "one run directory (see rodsea export --help)");

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <ostream>
 
 #include "rodsea/cli/count_progress.hpp"
@@ -49,11 +50,9 @@ const CommandSpec& movie_command_spec() {
 }
 
 int movie_command(const std::vector<std::string>& words, std::ostream& out, std::ostream&) {
-    const Arguments args = parse_arguments(words, movie_command_spec());
-    if (args.help) {
-        out << help_text(movie_command_spec());
-        return 0;
-    }
+    const std::optional<Arguments> parsed = arguments_or_help(words, movie_command_spec(), out);
+    if (!parsed) return 0;
+    const Arguments& args = *parsed;
     if (args.positional.size() != 1)
         throw InvalidParameter("RUN_DIR", std::to_string(args.positional.size()) + " given",
                                "exactly one run directory (see rodsea movie --help)");

@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <ostream>
 
 #include "rodsea/cli/arguments.hpp"
@@ -131,11 +132,9 @@ int run_child(std::vector<std::string> argv_words, std::ostream& out, std::ostre
 }  // namespace
 
 int plot_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-    const Arguments a = parse_arguments(args, plot_command_spec());
-    if (a.help) {
-        out << help_text(plot_command_spec());
-        return kExitOk;
-    }
+    const std::optional<Arguments> parsed = arguments_or_help(args, plot_command_spec(), out);
+    if (!parsed) return kExitOk;
+    const Arguments& a = *parsed;
     if (a.positional.size() != 1)
         throw InvalidParameter("INPUT", std::to_string(a.positional.size()) + " given",
                                "exactly one: a run's analysis directory, its analysis.json or a "

@@ -1,6 +1,7 @@
 #include "rodsea/view/render_command.hpp"
 
 #include <chrono>
+#include <optional>
 #include <ostream>
 
 #include "rodsea/cli/stop_signal.hpp"
@@ -49,11 +50,9 @@ std::string frame_name(std::size_t frame) {
 }  // namespace
 
 int render_command(const std::vector<std::string>& words, std::ostream& out, std::ostream&) {
-    const Arguments args = parse_arguments(words, render_command_spec());
-    if (args.help) {
-        out << help_text(render_command_spec());
-        return 0;
-    }
+    const std::optional<Arguments> parsed = arguments_or_help(words, render_command_spec(), out);
+    if (!parsed) return 0;
+    const Arguments& args = *parsed;
     if (args.positional.size() != 1)
         throw InvalidParameter("RUN_DIR", std::to_string(args.positional.size()) + " given",
                                "exactly one run directory (see rodsea render --help)");
