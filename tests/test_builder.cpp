@@ -1,7 +1,7 @@
 // The system builder: exact counts, every body flat and resting on the base, no two bodies
-// overlapping (checked here by brute force, independently of the builder's own grid), the dense
-// packings of the paper reached, isotropy at low density, determinism, and refusals that name
-// the species.
+// overlapping (checked independently of the builder, builder_checks.hpp), the lattice start,
+// isotropy at low density, determinism, and refusals that name the species. The dense isotropic
+// starts are tested with their segregation in test_dense_starts.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "builder_checks.hpp"
 #include "rodsea/builder/footprint.hpp"
 #include "rodsea/builder/initial_state.hpp"
 #include "rodsea/builder/lattice.hpp"
@@ -25,112 +26,7 @@
 namespace rodsea {
 namespace {
 
-struct Request {
-    EngineParameters params;
-    std::vector<long long> counts;
-};
-
-// Polar rods at φ_p with a medium (beads for medium_length 0, else apolar rods) at φ_a, in a
-// square box of side `side` mm, counts from N = round(φ L² / A).
-Request mixture(double phi_polar, double medium_length, double phi_medium, double side) {
-    Request r;
-    r.params.box = {side, side};
-    r.params.species = {polar_rod_species(),
-                        medium_length == 0.0 ? bead_species() : apolar_rod_species(medium_length)};
-    for (const Species& s : r.params.species) {
-        const double phi = s.kind == BodyKind::polar_rod ? phi_polar : phi_medium;
-        r.counts.push_back(count_for_area_fraction(phi, r.params.box, s.shape));
-    }
-    return r;
-}
-
-struct Overlaps {
-    double min_gap_3d = 1e9;          // smallest surface gap between spheres of two bodies, in 3D
-    double min_gap_2d = 1e9;          // same between their great discs in the plane
-    int close_pairs_across_seam = 0;  // pairs closer than 0.1 mm met through the periodic boundary
-};
-
-// Every pair of spheres of different bodies, by brute force with the minimum image.
-Overlaps brute_force_gaps(const EngineParameters& params, const BodyState& bodies) {
-    std::vector<Vec3> centre;
-    std::vector<double> radius;
-    std::vector<size_t> owner;
-    for (size_t b = 0; b < bodies.size(); ++b) {
-        const Shape& shape = params.species[bodies.species[b]].shape;
-        for (size_t k = 0; k < shape.sphere_count(); ++k) {
-            centre.push_back(bodies.position[b] + rotate(bodies.orientation[b], shape.offsets[k]));
-            radius.push_back(shape.radii[k]);
-            owner.push_back(b);
-        }
-    }
-    const PeriodicBox2D box{params.box.lx, params.box.ly};
-    Overlaps o;
-    for (size_t i = 0; i < centre.size(); ++i) {
-        for (size_t j = i + 1; j < centre.size(); ++j) {
-            if (owner[i] == owner[j]) continue;
-            const Vec3 raw = centre[i] - centre[j];
-            const Vec3 d = box.minimum_image(raw);
-            const double reach = radius[i] + radius[j];
-            if (std::abs(d.x) > reach + 0.1 || std::abs(d.y) > reach + 0.1) continue;
-            o.min_gap_3d = std::min(o.min_gap_3d, norm(d) - reach);
-            const double gap_2d = std::hypot(d.x, d.y) - reach;
-            o.min_gap_2d = std::min(o.min_gap_2d, gap_2d);
-            if (gap_2d < 0.1 && (d.x != raw.x || d.y != raw.y)) ++o.close_pairs_across_seam;
-        }
-    }
-    return o;
-}
-
-// The checks every built state must pass. `seam`: some close pairs must meet through the
-// periodic boundary, so that the test sees it (dense states).
-void expect_valid_start(const Request& r, const BodyState& bodies, bool seam = true) {
-    ASSERT_EQ(bodies.size(), static_cast<size_t>(r.counts[0] + r.counts[1]));
-    for (std::uint32_t s = 0; s < r.counts.size(); ++s) {
-        EXPECT_EQ(std::count(bodies.species.begin(), bodies.species.end(), s), r.counts[s])
-            << r.params.species[s].name;
-    }
-    const double base = physics::plate_state(r.params.drive.motion(), 0.0).base_z;
-    for (size_t b = 0; b < bodies.size(); ++b) {
-        const Vec3& x = bodies.position[b];
-        EXPECT_TRUE(x.x >= 0.0 && x.x < r.params.box.lx && x.y >= 0.0 && x.y < r.params.box.ly)
-            << "body " << b << " not wrapped";
-        // Flat: the axis horizontal and the body z axis vertical (1e-12: round-off of a unit
-        // quaternion's rotation).
-        const Quat& q = bodies.orientation[b];
-        EXPECT_NEAR(rotate(q, Vec3{1, 0, 0}).z, 0.0, 1e-12);
-        EXPECT_NEAR(rotate(q, Vec3{0, 0, 1}).z, 1.0, 1e-12);
-        // Resting: the lowest sphere 1 µm (resting_height's clearance) above the base at t = 0.
-        const Shape& shape = r.params.species[bodies.species[b]].shape;
-        double lowest = 1e9;
-        for (size_t k = 0; k < shape.sphere_count(); ++k)
-            lowest = std::min(lowest, x.z + rotate(q, shape.offsets[k]).z - shape.radii[k]);
-        EXPECT_NEAR(lowest - base, 1e-3, 1e-12);
-    }
-    const Overlaps o = brute_force_gaps(r.params, bodies);
-    std::printf(
-        "[ measured ] smallest gap %.5f mm in the plane, %.5f mm in 3D; %d close pairs "
-        "across the periodic boundary\n",
-        o.min_gap_2d, o.min_gap_3d, o.close_pairs_across_seam);
-    // The builder promises kBuildClearance between the discs in the plane; 1e-12 mm of slack
-    // for the round-off between its disc positions and the ones recomputed here.
-    EXPECT_GE(o.min_gap_2d, kBuildClearance - 1e-12);
-    EXPECT_GE(o.min_gap_3d, o.min_gap_2d);  // discs apart in the plane: spheres apart in 3D
-    if (seam) {
-        EXPECT_GT(o.close_pairs_across_seam, 0);
-    }
-}
-
-// A few hundred steps of the engine from the built state: accepted, and overlaps stay small.
-void expect_runs(const Request& r, const BodyState& bodies) {
-    Simulation sim(r.params, bodies);
-    sim.run(300);
-    std::printf("[ measured ] 300 steps: largest overlap %.4f of the smaller radius\n",
-                sim.totals().max_overlap_fraction);
-    // Same bound as DenseMonolayer: relative speeds below ~220 mm/s give at most 1.1 µm of
-    // overlap per 5 µs step, 0.55 % of the smallest radius; ten steps of accumulation allowed.
-    EXPECT_LT(sim.totals().max_overlap_fraction, 0.055);
-    EXPECT_EQ(sim.totals().unresolved, 0u);
-}
+using namespace test;
 
 TEST(BuilderLattice, BeadRowsFormTheHexagonalLattice) {
     // Rows of discs of diameter d + c half a pitch apart touch when their spacing is
@@ -171,7 +67,12 @@ TEST(BuilderLattice, OneBodyPerRowInANarrowBox) {
         r.counts = counts;
         BuilderOptions options;
         options.randomisation_sweeps = 0;  // the lattice itself
-        const BodyState bodies = build_initial_state(r.params, r.counts, options, 4);
+        // Isotropic starts this dense are random packings (compression); aligned ones are the
+        // lattice (polar rods all along +x, apolar rods ±x at random as in any lattice start).
+        options.orientation = InitialOrientation::aligned;
+        BuildReport report;
+        const BodyState bodies = build_initial_state(r.params, r.counts, options, 4, &report);
+        EXPECT_EQ(report.start, StartKind::lattice);
         // Polar rods two rows apart sit 1.5 mm apart at best: no pair closer than 0.1 mm.
         expect_valid_start(r, bodies, counts[0] == 0);
     }
@@ -202,76 +103,13 @@ TEST(BuilderLattice, BeadRowsStretchWhenThereIsRoom) {
     }
 }
 
-TEST(BuilderDense, BeadsAtEightyPercentWithPolarRods) {
-    // φ_a = 0.80 beads + φ_p = 0.05 polar rods, the densest bead medium of Table S1. 64 mm: a
-    // box whose row rounding leaves room (docs/builder.md lists which sides do).
-    const Request r = mixture(0.05, 0.0, 0.80, 64.0);
-    BuildReport report;
-    const BodyState bodies = build_initial_state(r.params, r.counts, {}, 11, &report);
-    expect_valid_start(r, bodies);
-    EXPECT_TRUE(report.lattice_start);
-    std::printf("[ measured ] S %.3f / %.3f, P %.3f (polar / beads), acceptance %.2f\n",
-                report.nematic_order[0], report.nematic_order[1], report.polar_order[0],
-                report.acceptance);
-    EXPECT_EQ(report.sweeps, BuilderOptions{}.randomisation_sweeps);
-    EXPECT_GE(report.min_gap, kBuildClearance - 1e-12);
-    EXPECT_LE(report.row_height, r.params.box.ly);
-    expect_runs(r, bodies);
-}
-
-TEST(BuilderDense, ApolarRodsAtEightyPercentWithPolarRods) {
-    // ℓ_a = 2.5 mm (9 spheres) at φ_a = 0.80 + φ_p = 0.05: the densest rod medium of Table S1.
-    const Request r = mixture(0.05, 2.5, 0.80, 50.0);
-    BuildReport report;
-    const BodyState bodies = build_initial_state(r.params, r.counts, {}, 12, &report);
-    expect_valid_start(r, bodies);
-    EXPECT_TRUE(report.lattice_start);
-    std::printf("[ measured ] S %.3f / %.3f, P %.3f (polar / apolar), acceptance %.2f\n",
-                report.nematic_order[0], report.nematic_order[1], report.polar_order[0],
-                report.acceptance);
-    // Random head/tail: P of the polar rods is a sum of ±1 over N rods, |P| ≲ 3/√N.
-    EXPECT_LT(report.polar_order[0], 3.0 / std::sqrt(static_cast<double>(r.counts[0])));
-    expect_runs(r, bodies);
-}
-
-// Order parameters of isotropic angles: N P² and N S² are asymptotically exponential with mean
-// 1 for N independent uniform angles, so P, S > 3/√N has probability e⁻⁹ ≈ 1e-4. Hard-body
-// correlations at φ = 0.15 are short-ranged and do not change the scaling.
-void expect_isotropic(const BodyState& bodies, std::uint32_t species, long long n) {
-    const double bound = 3.0 / std::sqrt(static_cast<double>(n));
-    std::printf("[ measured ] species %u: P %.3f, S %.3f, bound 3/sqrt(N) = %.3f\n", species,
-                orientational_order(bodies, species, 1), orientational_order(bodies, species, 2),
-                bound);
-    EXPECT_LT(orientational_order(bodies, species, 1), bound) << "P of species " << species;
-    EXPECT_LT(orientational_order(bodies, species, 2), bound) << "S of species " << species;
-}
-
-// Occupancy of a k × k grid of coarse cells: chi² = Σ (n_i − n/k²)² / (n/k²). For Poisson
-// counts its mean is k² − 1 and its standard deviation sqrt(2 (k² − 1)); hard bodies are
-// sub-Poissonian, so mean + 5 σ is a generous upper bound for a uniform state, while rows or
-// clumps of the size of a cell give chi² of order n.
-double coarse_cell_chi2(const BodyState& bodies, const Box& box, int k) {
-    std::vector<int> cells(static_cast<size_t>(k * k), 0);
-    for (const Vec3& x : bodies.position) {
-        const int cx = std::min(k - 1, static_cast<int>(x.x / box.lx * k));
-        const int cy = std::min(k - 1, static_cast<int>(x.y / box.ly * k));
-        ++cells[static_cast<size_t>(cy * k + cx)];
-    }
-    const double expected = static_cast<double>(bodies.size()) / (k * k);
-    double chi2 = 0.0;
-    for (const int n : cells)
-        chi2 += (n - expected) * (n - expected) / expected;
-    std::printf("[ measured ] chi2 of %d x %d cells: %.1f\n", k, k, chi2);
-    return chi2;
-}
-
 TEST(BuilderLowDensity, IsotropicAndUniform) {
     // φ_p = 0.05 + φ_a = 0.10 (ℓ_a = 2.5 mm) in a 120 mm box: 181 polar and 1053 apolar rods.
     const Request r = mixture(0.05, 2.5, 0.10, 120.0);
     BuildReport report;
     const BodyState bodies = build_initial_state(r.params, r.counts, {}, 5, &report);
     expect_valid_start(r, bodies);
-    EXPECT_FALSE(report.lattice_start);  // random insertion suffices this dilute
+    EXPECT_EQ(report.start, StartKind::insertion);  // random insertion suffices this dilute
     expect_isotropic(bodies, 0, r.counts[0]);
     expect_isotropic(bodies, 1, r.counts[1]);
     const int k = 6;
@@ -292,7 +130,9 @@ TEST(BuilderLowDensity, MonteCarloForgetsTheLattice) {
     PlanarBodies planar = place_lattice(plan, r.params.species, feet, r.params.box,
                                         InitialOrientation::isotropic, rng);
     const PlanarBodies lattice = planar;
-    const MonteCarloResult mc = randomise(planar, feet, r.params.box, {0.0025, 50, true}, rng);
+    MonteCarloOptions options;
+    options.sweeps = 50;
+    const MonteCarloResult mc = randomise(planar, feet, r.params.box, options, rng);
     EXPECT_EQ(mc.sweeps, 50);
     BodyState bodies;  // angles and centres are all the order parameters need
     for (std::uint32_t b = 0; b < planar.size(); ++b)
@@ -329,7 +169,7 @@ TEST(BuilderAligned, PolarRodsAllPointAlongPlusX) {
         options.orientation = InitialOrientation::aligned;
         BuildReport report;
         const BodyState bodies = build_initial_state(r.params, r.counts, options, 2, &report);
-        EXPECT_EQ(report.lattice_start, phi > 0.5);
+        EXPECT_EQ(report.start, phi > 0.5 ? StartKind::lattice : StartKind::insertion);
         EXPECT_EQ(orientational_order(bodies, 0, 1), 1.0) << "phi " << phi;
         EXPECT_NEAR(orientational_order(bodies, 1, 2), 1.0, 1e-15) << "phi " << phi;
         for (size_t b = 0; b < bodies.size(); ++b) {

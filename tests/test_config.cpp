@@ -88,6 +88,7 @@ void expect_same_plan(const RunPlan& a, const RunPlan& b, bool same_text = true)
     EXPECT_EQ(a.requested_area_fraction, b.requested_area_fraction);
     EXPECT_EQ(a.builder.orientation, b.builder.orientation);
     EXPECT_EQ(a.builder.randomisation_sweeps, b.builder.randomisation_sweeps);
+    EXPECT_EQ(a.builder.domain_size, b.builder.domain_size);
     EXPECT_EQ(a.control.duration, b.control.duration);
     EXPECT_EQ(a.control.output_interval, b.control.output_interval);
     EXPECT_EQ(a.control.checkpoint_interval, b.control.checkpoint_interval);
@@ -188,6 +189,7 @@ TEST(ConfigDefaults, EmptyFileIsThePapersMainSystemWithModelMdValues) {
     EXPECT_EQ(p.control.threads, 1);
     EXPECT_EQ(p.builder.orientation, InitialOrientation::isotropic);
     EXPECT_EQ(p.builder.randomisation_sweeps, 50);
+    EXPECT_EQ(p.builder.domain_size, 20.0);
     EXPECT_EQ(p.total_steps(), 800'000u);  // 4000 steps per 5 ms period, for one second
     EXPECT_EQ(p.steps_per_output(), 40'000u);
 }
@@ -361,6 +363,8 @@ std::vector<KeyCase> key_cases() {
          [](const RunPlan& p) { EXPECT_EQ(p.builder.orientation, InitialOrientation::aligned); }},
         {"initial.randomisation_sweeps", "[initial]\nrandomisation_sweeps = 0",
          [](const RunPlan& p) { EXPECT_EQ(p.builder.randomisation_sweeps, 0); }},
+        {"initial.domain_size", "[initial]\ndomain_size = 35.5",
+         [](const RunPlan& p) { EXPECT_EQ(p.builder.domain_size, 35.5); }},
         {"engine.max_sweeps", "[engine]\nmax_sweeps = 17",
          [](const RunPlan& p) { EXPECT_EQ(p.engine.max_sweeps, 17); }},
         {"engine.approach_tolerance", "[engine]\napproach_tolerance = 0.001",

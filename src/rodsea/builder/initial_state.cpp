@@ -6,9 +6,11 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "rodsea/builder/compression.hpp"
 #include "rodsea/builder/footprint.hpp"
 #include "rodsea/builder/lattice.hpp"
 #include "rodsea/builder/monte_carlo.hpp"
+#include "rodsea/builder/mosaic.hpp"
 #include "rodsea/builder/placement.hpp"
 #include "rodsea/builder/random_insertion.hpp"
 #include "rodsea/engine/order_parameters.hpp"
@@ -33,6 +35,8 @@ constexpr std::uint64_t kLatticeStream = 0x6C61747469636531ULL;
 constexpr std::uint64_t kMonteCarloStream = 0x6D6F6E7465636172ULL;
 constexpr std::uint64_t kVelocityStream = 0x76656C6F63697479ULL;
 constexpr std::uint64_t kInsertionStream = 0x696E736572746564ULL;
+constexpr std::uint64_t kCompressionStream = 0x636F6D7072657373ULL;
+constexpr std::uint64_t kMosaicStream = 0x6D6F7361696373ULL;
 
 // Random insertion is tried up to a total area fraction of 0.50 (plus the rounding of counts),
 // with at most 100 attempts per body on average before the lattice takes over. Measured in the
@@ -41,6 +45,11 @@ constexpr std::uint64_t kInsertionStream = 0x696E736572746564ULL;
 // ~1 s of trying, 4.5 mm rods already at 0.35 + 0.05.
 constexpr double kInsertionLimit = 0.505;
 constexpr double kInsertionAttemptsPerBody = 100.0;
+
+// The overlap relaxations stop early once the largest overlap stops halving (stall_iterations), so
+// this cap only bounds the slow convergence just below jamming: 2.5 mm rods at 0.75 + polar rods
+// at 0.05 need ~3500 iterations.
+constexpr int kRelaxationIterations = 6000;
 
 std::vector<Footprint> footprints(const EngineParameters& params) {
     std::vector<Footprint> feet;
@@ -121,6 +130,60 @@ double smallest_gap(const EngineParameters& params, const BodyState& state, doub
     return gap;
 }
 
+// The random starts, in order: insertion when dilute; for isotropic starts compression, then the
+// mosaic with domains ever larger. False when none succeeded (the lattice is left). Each start has
+// its own random stream, so a dilute start does not depend on the denser ones' code.
+bool start_randomly(const EngineParameters& params, const std::vector<Footprint>& feet,
+                    const std::vector<long long>& counts, const BuilderOptions& options,
+                    std::uint64_t seed, PlanarBodies& planar, StartKind& kind, BuildReport& tried) {
+    const double fraction = area_fraction(params, counts);
+    if (fraction <= kInsertionLimit) {
+        SplitMix64 rng(splitmix64(seed ^ kInsertionStream));
+        const InsertionResult inserted =
+            insert_randomly(params.species, feet, counts, params.box, kMonteCarloClearance,
+                            options.orientation, kInsertionAttemptsPerBody, rng, planar);
+        tried.insertion_attempts = inserted.attempts;
+        kind = StartKind::insertion;
+        if (inserted.complete) return true;
+    }
+    if (options.orientation != InitialOrientation::isotropic) return false;
+
+    SplitMix64 compression_rng(splitmix64(seed ^ kCompressionStream));
+    CompressionOptions compression;
+    compression.clearance = kMonteCarloClearance;
+    compression.max_iterations = kRelaxationIterations;
+    if (compression_probe_succeeds(params.species, feet, counts, params.box, options.orientation,
+                                   compression, compression_rng)) {
+        const CompressionResult compressed =
+            compress_from_random(params.species, feet, counts, params.box, options.orientation,
+                                 compression, compression_rng, planar);
+        tried.relaxation_iterations += compressed.relaxation.iterations;
+        kind = StartKind::compression;
+        if (compressed.complete) return true;
+    }
+    tried.compression_jammed = true;
+
+    SplitMix64 mosaic_rng(splitmix64(seed ^ kMosaicStream));
+    MosaicOptions mosaic;
+    mosaic.clearance = kMonteCarloClearance;
+    mosaic.lattice_clearance = kLatticeClearance;
+    mosaic.max_iterations = kRelaxationIterations;
+    const double largest = std::max(params.box.lx, params.box.ly);
+    mosaic.domain_size = std::min(options.domain_size, largest);
+    for (;;) {
+        const MosaicResult laid =
+            mosaic_start(params.species, feet, counts, params.box, mosaic, mosaic_rng, planar);
+        tried.relaxation_iterations += laid.relaxation.iterations;
+        tried.domains = laid.domains;
+        tried.domain_size = laid.domain_size;
+        kind = StartKind::mosaic;
+        if (laid.complete) return true;
+        // Larger domains lose less room at their boundaries; one domain is the largest.
+        if (laid.domains <= 1) return false;
+        mosaic.domain_size = std::min(2.0 * mosaic.domain_size, largest);
+    }
+}
+
 }  // namespace
 
 PackingCheck check_packing(const EngineParameters& params, const std::vector<long long>& counts) {
@@ -159,15 +222,11 @@ BodyState build_initial_state(const EngineParameters& params, const std::vector<
     }
     validate(params);
 
-    // 1. Start: random insertion when dilute enough, else the lattice (always fits here).
+    // 1. Start: the first of insertion, compression, mosaic and lattice that succeeds.
     PlanarBodies planar;
-    InsertionResult insertion;
-    if (area_fraction(params, counts) <= kInsertionLimit) {
-        SplitMix64 rng(splitmix64(seed ^ kInsertionStream));
-        insertion = insert_randomly(params.species, feet, counts, params.box, kMonteCarloClearance,
-                                    options.orientation, kInsertionAttemptsPerBody, rng, planar);
-    }
-    if (!insertion.complete) {
+    StartKind kind = StartKind::lattice;
+    BuildReport attempts;
+    if (start_randomly(params, feet, counts, options, seed, planar, kind, attempts) == false) {
         SplitMix64 rng(splitmix64(seed ^ kLatticeStream));
         planar = place_lattice(plan, params.species, feet, params.box, options.orientation, rng);
     }
@@ -190,14 +249,14 @@ BodyState build_initial_state(const EngineParameters& params, const std::vector<
     }
 
     if (report) {
+        *report = attempts;
+        report->start = kind;
         report->sweeps = randomised.sweeps;
         report->acceptance = randomised.attempted == 0
                                  ? 0.0
                                  : static_cast<double>(randomised.accepted) /
                                        static_cast<double>(randomised.attempted);
         report->min_gap = gap;
-        report->lattice_start = !insertion.complete;
-        report->insertion_attempts = insertion.attempts;
         report->row_height = plan.height;
         report->pitch_scale = plan.pitch_scale;
         report->translation_step = randomised.translation_step;
@@ -212,6 +271,61 @@ BodyState build_initial_state(const EngineParameters& params, const std::vector<
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
     return state;
+}
+
+const char* to_string(StartKind kind) {
+    switch (kind) {
+        case StartKind::insertion:
+            return "insertion";
+        case StartKind::compression:
+            return "compression";
+        case StartKind::mosaic:
+            return "mosaic";
+        case StartKind::lattice:
+            return "lattice";
+    }
+    return "?";
+}
+
+std::string describe_start(const BuildReport& r) {
+    std::string text;
+    switch (r.start) {
+        case StartKind::insertion:
+            text = "random insertion (" + std::to_string(r.insertion_attempts) + " placements)";
+            break;
+        case StartKind::compression:
+            text =
+                "compression: shrunk bodies inserted at random, grown back, overlaps relaxed in " +
+                std::to_string(r.relaxation_iterations) + " iterations";
+            break;
+        case StartKind::mosaic:
+            text = "mosaic: random compression jams; the medium ";
+            text += r.domains == 1 ? std::string("as one domain at a random angle")
+                                   : "in " + std::to_string(r.domains) + " domains of " +
+                                         format_number(r.domain_size) + " mm at random directions";
+            text += ", the other species at random (" + std::to_string(r.relaxation_iterations) +
+                    " relaxation iterations)";
+            break;
+        case StartKind::lattice:
+            text = "lattice: rows along x";
+            if (r.compression_jammed) text += " (random compression and every mosaic jammed)";
+            break;
+    }
+    return text;
+}
+
+std::string planned_start(const EngineParameters& params, const std::vector<long long>& counts,
+                          const BuilderOptions& options) {
+    const double fraction = area_fraction(params, counts);
+    const bool aligned = options.orientation == InitialOrientation::aligned;
+    if (fraction <= kInsertionLimit)
+        return "random insertion (area fraction <= " + format_number(kInsertionLimit) +
+               (aligned ? "; rows along x if it fails)" : ")");
+    if (aligned) return "lattice: rows along x (aligned start above area fraction 0.505)";
+    return "compression: shrunk bodies inserted at random, grown back, overlaps relaxed; if the "
+           "random packing jams (above area fraction ~0.75-0.84, docs/builder.md), a mosaic of " +
+           format_number(options.domain_size) +
+           " mm domains of the medium at random directions with the other species at random";
 }
 
 }  // namespace rodsea

@@ -282,6 +282,7 @@ void build_the_rest(ConfigValues& c, RunPlan& plan, const EpsilonLookup& epsilon
                                    ? InitialOrientation::aligned
                                    : InitialOrientation::isotropic;
     plan.builder.randomisation_sweeps = static_cast<int>(initial.integer("randomisation_sweeps"));
+    plan.builder.domain_size = initial.real("domain_size");
     const TableValues& engine = c.one("engine");
     plan.engine.max_sweeps = static_cast<int>(engine.integer("max_sweeps"));
     plan.engine.approach_tolerance = engine.real("approach_tolerance");

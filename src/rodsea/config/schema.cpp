@@ -244,7 +244,17 @@ std::vector<KeySpec> make_keys() {
     k.push_back(integer("initial", "randomisation_sweeps")
                     .def(std::int64_t{builder.randomisation_sweeps})
                     .integers(0, 100'000)
-                    .doc("Monte Carlo sweeps that randomise the lattice start."));
+                    .doc("Monte Carlo sweeps after the start is placed: they relax it locally "
+                         "(docs/builder.md)."));
+    k.push_back(real("initial", "domain_size")
+                    .unit("mm")
+                    .def(builder.domain_size)
+                    .range(closed(2.0, 10000.0))
+                    .doc("Side of the domains of the mosaic start, used only above the jamming "
+                         "of random packings (e.g. 2.5 mm rods at 0.80): the medium's S at the "
+                         "start is then about 1/sqrt(domains). Smaller domains waste more room "
+                         "at their boundaries and may not fit; the build doubles the size until "
+                         "they do (docs/builder.md)."));
     // [engine]
     k.push_back(integer("engine", "max_sweeps")
                     .def(std::int64_t{engine.max_sweeps})
@@ -445,7 +455,9 @@ const std::vector<TableSpec>& config_tables() {
         {"time", false, "The time step and the length of the run."},
         {"output", false, "How often the run writes frames, rows and checkpoints."},
         {"run", false, "Seed and threads."},
-        {"initial", false, "The initial state: a lattice start randomised by Monte Carlo."},
+        {"initial", false,
+         "The initial state: a random start (insertion, compression or a mosaic of domains, "
+         "docs/builder.md) relaxed by Monte Carlo."},
         {"engine", false, "Advanced: the impulse solver."},
     };
     return tables;

@@ -109,6 +109,7 @@ void describe_plan(const RunPlan& plan, std::ostream& out, bool brief) {
     out << "memory   about " << format_bytes(e.memory_bytes) << "\n";
     const PackingCheck packing = check_packing(p, plan.counts);
     out << "packing  " << (packing.ok ? "feasible" : "IMPOSSIBLE: " + packing.message) << "\n";
+    if (packing.ok) out << "start    " << planned_start(p, plan.counts, plan.builder) << "\n";
     if (brief) return;
     out << "CHOICEs in force (MODEL.md; each is a config key):\n";
     for (const std::string& c : plan.choices)

@@ -260,25 +260,28 @@ int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out,
     const std::filesystem::path& dir = options.out_dir;
     const RunDirectoryLock lock(dir);
     if (options.overwrite) remove_run_files(dir);
+    // Flushed at once: with stdout going to a file, the plan and the start would otherwise
+    // appear only with the first progress line, minutes later.
     if (!options.quiet) {
         out << "rodsea run -> " << dir.string() << "\n";
         describe_plan(plan, out, true);
+        out << std::flush;
     }
 
     BuildReport built;
     BodyState bodies =
         build_initial_state(plan.engine, plan.counts, plan.builder, plan.engine.seed, &built);
     if (!options.quiet) {
-        // Dense starts keep some of the lattice's alignment (docs/builder.md): say how much.
+        // Dense starts keep some order (docs/builder.md): say how they were built and how much.
         std::ostringstream line;
         line.precision(3);
-        line << "initial state built in " << built.seconds << " s (" << built.sweeps
-             << " randomisation sweeps); order left from the start:";
+        line << "initial state built in " << built.seconds << " s: " << describe_start(built)
+             << ", then " << built.sweeps << " Monte Carlo sweeps; order at the start:";
         for (size_t s = 0; s < plan.engine.species.size(); ++s)
             if (plan.engine.species[s].kind != BodyKind::bead)
                 line << " " << plan.engine.species[s].name << " P = " << built.polar_order.at(s)
                      << ", S = " << built.nematic_order.at(s) << ";";
-        out << line.str() << "\n";
+        out << line.str() << std::endl;
     }
     Simulation sim(plan.engine, std::move(bodies), {.threads = plan.control.threads});
     write_file_atomically(dir / kConfigFile, plan.config_toml);
