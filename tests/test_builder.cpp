@@ -16,11 +16,13 @@
 #include "rodsea/builder/initial_state.hpp"
 #include "rodsea/builder/lattice.hpp"
 #include "rodsea/builder/monte_carlo.hpp"
+#include "rodsea/builder/overlap_relaxation.hpp"
 #include "rodsea/engine/order_parameters.hpp"
 #include "rodsea/engine/physics/plates.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/math/periodic_box.hpp"
+#include "rodsea/random.hpp"
 #include "rodsea/scenes/scenes.hpp"
 
 namespace rodsea {
@@ -181,15 +183,85 @@ TEST(BuilderAligned, PolarRodsAllPointAlongPlusX) {
 }
 
 TEST(BuilderDeterminism, SameSeedSameStateOtherSeedOther) {
-    for (const double phi : {0.20, 0.60}) {  // the random-insertion path and the lattice path
+    // Each start: insertion, compression, mosaic (the lattice: BuilderAligned is exact).
+    const std::vector<std::pair<double, StartKind>> cases{
+        {0.20, StartKind::insertion}, {0.60, StartKind::compression}, {0.80, StartKind::mosaic}};
+    for (const auto& [phi, kind] : cases) {
         const Request r = mixture(0.05, 2.5, phi, 30.0);
         const auto hash = [&](std::uint64_t seed) {
-            return Simulation(r.params, build_initial_state(r.params, r.counts, {}, seed))
-                .state_hash();
+            BuildReport report;
+            const BodyState bodies = build_initial_state(r.params, r.counts, {}, seed, &report);
+            EXPECT_EQ(report.start, kind) << "phi " << phi;
+            return Simulation(r.params, bodies).state_hash();
         };
         EXPECT_EQ(hash(7), hash(7)) << "phi " << phi;
         EXPECT_NE(hash(7), hash(8)) << "phi " << phi;
     }
+}
+
+// Two discs of one body each, d apart in x in a 20 mm box, relaxed.
+PlanarBodies two_beads(double d) {
+    PlanarBodies b;
+    b.add(0, 10.0, 10.0, 0.0);
+    b.add(0, 10.0 + d, 10.0, 0.0);
+    return b;
+}
+
+TEST(OverlapRelaxation, PartsTwoDiscsAlongTheirLineOfCentresAboutTheirMidpoint) {
+    // Equal and opposite forces on equal masses: FIRE keeps the total velocity zero (its mixing
+    // adds a multiple of the total force, also zero), so the midpoint stays where it was, and
+    // the discs move along x only. The end: a gap of at least the clearance.
+    const std::vector<Footprint> feet{footprint_of(bead_species().shape)};
+    const Box box{20.0, 20.0};
+    PlanarBodies b = two_beads(0.3);  // 0.8 mm beads overlapping by 0.5 mm
+    OverlapRelaxationOptions options;
+    const OverlapRelaxationResult r = relax_overlaps(b, feet, box, options);
+    EXPECT_TRUE(r.converged);
+    EXPECT_FALSE(r.stalled);
+    const double gap = (b.x[1] - b.x[0]) - 0.8;
+    std::printf("[ measured ] %d iterations, gap %.6f mm\n", r.iterations, gap);
+    EXPECT_GE(gap, options.clearance);
+    // It stops at the first iteration with the gap: FIRE's momentum carries the discs past the
+    // energy's zero (twice the clearance) by at most one step of a speed the 0.5 mm overlap's
+    // energy bounds, far less than that overlap.
+    EXPECT_LT(gap, 0.5);
+    EXPECT_NEAR(0.5 * (b.x[0] + b.x[1]), 10.15, 1e-12);
+    EXPECT_EQ(b.y[0], 10.0);
+    EXPECT_EQ(b.y[1], 10.0);
+}
+
+TEST(OverlapRelaxation, LeavesAClearPackingAlone) {
+    const std::vector<Footprint> feet{footprint_of(bead_species().shape)};
+    PlanarBodies b = two_beads(1.0);
+    const PlanarBodies before = b;
+    const OverlapRelaxationResult r = relax_overlaps(b, feet, {20.0, 20.0}, {});
+    EXPECT_TRUE(r.converged);
+    EXPECT_EQ(r.iterations, 0);
+    EXPECT_EQ(b.x, before.x);
+    EXPECT_EQ(b.y, before.y);
+}
+
+TEST(OverlapRelaxation, StallsWhenTheBodiesCannotFit) {
+    // Beads at an area fraction of 0.95, beyond the hexagonal close packing (π/√12 ≈ 0.907):
+    // no configuration is free of overlaps, and the relaxation must say so early (the largest
+    // overlap stops halving) rather than run to its iteration cap.
+    const Species bead = bead_species();
+    const std::vector<Footprint> feet{footprint_of(bead.shape)};
+    const Box box{10.0, 10.0};
+    const long long n = count_for_area_fraction(0.95, box, bead.shape);
+    SplitMix64 rng(5);
+    PlanarBodies b;
+    for (long long i = 0; i < n; ++i)
+        b.add(0, rng.uniform(0.0, box.lx), rng.uniform(0.0, box.ly), 0.0);
+    OverlapRelaxationOptions options;
+    options.max_iterations = 20000;
+    const OverlapRelaxationResult r = relax_overlaps(b, feet, box, options);
+    std::printf("[ measured ] %lld beads: stalled after %d iterations at an overlap of %.3f mm\n",
+                n, r.iterations, r.largest_overlap);
+    EXPECT_FALSE(r.converged);
+    EXPECT_TRUE(r.stalled);
+    EXPECT_LT(r.iterations, options.max_iterations / 4);
+    EXPECT_GT(r.largest_overlap, 0.01);  // a hundredth of a millimetre: not round-off
 }
 
 void expect_refused(const Request& r, const std::vector<std::string>& named) {
