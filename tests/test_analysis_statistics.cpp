@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "rodsea/analysis/statistics.hpp"
+#include "rodsea/analysis/steady_state.hpp"
 #include "rodsea/random.hpp"
 
 namespace rodsea {
@@ -84,6 +85,50 @@ TEST(Statistics, BlockErrorIsTheStandardErrorOfTheBlocks) {
     // Sample standard deviation sqrt(5/3), over sqrt(4).
     EXPECT_NEAR(e.error, std::sqrt(5.0 / 3.0) / 2.0, 1e-15);
     EXPECT_EQ(e.mean, 2.5);
+}
+
+// Unit white noise with an exponential transient of amplitude 5 and decay time `tau` on top.
+std::vector<double> relaxing(double tau, std::uint64_t seed) {
+    SplitMix64 rng(seed);
+    std::vector<double> x;
+    for (int t = 0; t < 2000; ++t)
+        x.push_back(5.0 * std::exp(-t / tau) + gaussian(rng));
+    return x;
+}
+
+TEST(SteadyState, TheWindowStartsAfterTheSlowestTransient) {
+    // P relaxes in 10 samples, S of the medium in 100: the window must wait for S (its own start
+    // lies past t ≈ 250, where its bias falls below 0.4 noise widths), and say that S decided.
+    // A constant series (no information) and one with a NaN (not applicable) do not decide.
+    const std::vector<NamedSeries> series{{"P", relaxing(10.0, 21)},
+                                          {"S", relaxing(100.0, 22)},
+                                          {"flat", std::vector<double>(2000, 0.3)},
+                                          {"gap", std::vector<double>(2000, std::nan(""))}};
+    const SteadyChoice choice = latest_steady_start(series);
+    EXPECT_EQ(choice.decided_by, "S");
+    EXPECT_EQ(choice.first, steady_start(series[1].values));
+    EXPECT_GE(choice.first, 200u);
+    EXPECT_LT(steady_start(series[0].values), choice.first);
+    ASSERT_EQ(choice.series.size(), 4u);
+    EXPECT_EQ(choice.series[0].start, steady_start(series[0].values));
+    // White noise from the window on: n_eff ≈ n (τ_int = 1/2), within Sokal's ~10 %.
+    const double n = static_cast<double>(2000 - choice.first);
+    EXPECT_NEAR(choice.series[0].n_eff, n, 0.15 * n);
+    EXPECT_FALSE(choice.series[0].drifting);
+    EXPECT_FALSE(choice.series[1].drifting);
+    EXPECT_EQ(choice.series[3].n_eff, 0.0);
+}
+
+TEST(SteadyState, ATrendIsFlaggedAsDrifting) {
+    // A series still rising to its end (the dilute run whose P never settled): its halves differ
+    // by 0.5 (a slope of 1/2000 per sample over 1000 samples), 16 standard errors of 0.032.
+    SplitMix64 rng(31);
+    std::vector<double> rising;
+    for (int t = 0; t < 2000; ++t)
+        rising.push_back(t / 2000.0 + gaussian(rng));
+    const std::vector<NamedSeries> series{{"P", rising}};
+    const SteadyChoice choice = latest_steady_start(series);
+    EXPECT_TRUE(choice.series[0].drifting);
 }
 
 }  // namespace

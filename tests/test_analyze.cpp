@@ -2,6 +2,7 @@
 // the files are readable from Python, and bad input is refused before anything is written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -72,6 +73,61 @@ TEST_F(AnalyzeCli, SteadyPolarOrderIsTheMeanOfTheRunsOwnSeries) {
     // they agree to float rounding (1e-6 relative in each angle).
     ASSERT_EQ(a.results[0].scalars[0].name, "P_polar");
     EXPECT_NEAR(a.results[0].scalars[0].estimate.mean, mean, 1e-5);
+}
+
+// The column `name` of the table `table` of the observable `observable`, one value per row.
+std::vector<double> table_column(const RunAnalysis& a, const std::string& observable,
+                                 const std::string& table, const std::string& name) {
+    for (const ObservableResults& r : a.results) {
+        if (r.observable != observable) continue;
+        for (const TableResult& t : r.tables) {
+            if (t.name != table) continue;
+            const auto c = std::find(t.columns.begin(), t.columns.end(), name) - t.columns.begin();
+            std::vector<double> v;
+            for (const std::vector<double>& row : t.rows)
+                v.push_back(row[static_cast<std::size_t>(c)]);
+            return v;
+        }
+    }
+    return {};
+}
+
+TEST_F(AnalyzeCli, TheRunRecordsSegregationAndTheLargestFlockAsAnalyzeMeasuresThem) {
+    // The steady window looks at Σ and N_m from the run's own series: they must be the analysis'
+    // numbers, frame by frame. The run measures double-precision positions, the analysis float32
+    // frames; a body within 1e-6 mm of a cell edge or of eps could tip one count, which these
+    // 21 frames (a fixed seed) do not have.
+    AnalyzeRequest request;
+    request.from = 0.0;
+    request.observables = {"segregation", "flocks"};
+    std::ostringstream log;
+    const RunAnalysis a = analyze_run(prepare_run(mixture(), request), log, true);
+    const TrajectoryReader reader(mixture() / "trajectory.h5");
+    const std::vector<double> sigma = reader.series("segregation");
+    const std::vector<double> largest = reader.series("largest_flock");
+    EXPECT_EQ(sigma, table_column(a, "segregation", "segregation", "Sigma_raw"));
+    EXPECT_EQ(largest, table_column(a, "flocks", "flocks", "N_m"));
+    // Without polar rods neither exists.
+    EXPECT_FALSE(TrajectoryReader(medium_only() / "trajectory.h5").has_series("segregation"));
+}
+
+TEST_F(AnalyzeCli, TheAutomaticWindowNamesEveryOrderSeriesAndTheOneThatDecided) {
+    const PreparedRun run = prepare_run(mixture(), {});
+    ASSERT_TRUE(run.window.automatic);
+    std::vector<std::string> names;
+    for (const SeriesStart& s : run.window.series)
+        names.push_back(s.name);
+    EXPECT_EQ(names,
+              (std::vector<std::string>{"polar_order_polar", "nematic_order_polar",
+                                        "nematic_order_medium", "segregation", "largest_flock"}));
+    // The window starts at the latest series' start, and that series is the one named.
+    std::size_t latest = 0;
+    for (const SeriesStart& s : run.window.series)
+        latest = std::max(latest, s.start);
+    EXPECT_EQ(run.window.first_frame, latest);
+    const auto decided = std::find(names.begin(), names.end(), run.window.basis);
+    ASSERT_NE(decided, names.end());
+    EXPECT_EQ(run.window.series[static_cast<std::size_t>(decided - names.begin())].start, latest);
 }
 
 TEST_F(AnalyzeCli, OneFrameWindowGivesValuesWithoutErrorBars) {

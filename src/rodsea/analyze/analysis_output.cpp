@@ -122,6 +122,18 @@ Json observable_json(const ObservableResults& r, const fs::path& out_dir) {
             {"notes", r.notes}};
 }
 
+// Each order series' own steady start, its independent samples in the window and whether it
+// drifts there.
+Json window_series_json(const PreparedRun& run) {
+    Json series = Json::array();
+    for (const SeriesStart& s : run.window.series)
+        series.push_back({{"name", s.name},
+                          {"steady_from_s", run.times[s.start]},
+                          {"n_eff", s.n_eff},
+                          {"drifting", s.drifting}});
+    return series;
+}
+
 void write_analysis_files(const RunAnalysis& a, const fs::path& out_dir) {
     const SteadyWindow& w = a.run.window;
     Json observables = Json::object();
@@ -143,10 +155,12 @@ void write_analysis_files(const RunAnalysis& a, const fs::path& out_dir) {
           {"first_frame", w.first_frame},
           {"frames", a.run.setup.steady_frames},
           {"method", w.automatic
-                         ? "automatic: earliest start maximising n_eff = n/(2 tau_int) of " +
+                         ? "automatic: the latest of the order series' steady starts (each the "
+                           "earliest start maximising n_eff = n/(2 tau_int)), decided by " +
                                (w.basis.empty() ? std::string("(none)") : w.basis)
                          : std::string("given: --from")},
-          {"basis_n_eff", w.n_eff},
+          {"decided_by", w.basis},
+          {"series", window_series_json(a.run)},
           {"error_bars",
            "per-frame series: sqrt(var * 2 tau_int / n), tau_int by Sokal's "
            "window; window averages (D_r, sigma_f, N_avg): spread of " +

@@ -7,6 +7,7 @@
 
 #include "rodsea/analyze/frame_context.hpp"
 #include "rodsea/analyze/observable_registry.hpp"
+#include "rodsea/analyze/structure_series.hpp"
 #include "rodsea/cli/progress.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/stored_run.hpp"
@@ -18,27 +19,22 @@ namespace {
 
 namespace fs = std::filesystem;
 
-AnalysisSetup make_setup(const RunPlan& plan) {
-    AnalysisSetup setup;
-    setup.box = {plan.engine.box.lx, plan.engine.box.ly};
-    const double area = setup.box.lx * setup.box.ly;
-    for (std::size_t s = 0; s < plan.engine.species.size(); ++s) {
-        const Species& sp = plan.engine.species[s];
-        setup.species.push_back(
-            {sp.name, sp.kind, sp.shape.extent, plan.counts[s],
-             static_cast<double>(plan.counts[s]) * sp.shape.projected_area / area});
+// The order series of the run that it recorded (runs from before Σ and N_m were recorded
+// have only P and S).
+std::vector<NamedSeries> recorded_order_series(const TrajectoryReader& reader,
+                                               const AnalysisSetup& setup, std::size_t frames,
+                                               const fs::path& trajectory) {
+    std::vector<NamedSeries> series;
+    for (const std::string& column : steady_series_columns(setup)) {
+        if (!reader.has_series(column)) continue;
+        series.push_back({column, reader.series(column)});
+        if (series.back().values.size() != frames)
+            throw FileError(trajectory.string(), "the time series " + column + " has " +
+                                                     std::to_string(series.back().values.size()) +
+                                                     " rows for " + std::to_string(frames) +
+                                                     " frames");
     }
-    return setup;
-}
-
-// The series whose relaxation decides the automatic steady start: P of the first polar
-// species, else S of the first rod species (the same columns `rodsea run` records).
-std::string steady_basis(const AnalysisSetup& setup) {
-    for (const SpeciesInfo& s : setup.species)
-        if (s.kind == BodyKind::polar_rod && s.count > 0) return "polar_order_" + s.name;
-    for (const SpeciesInfo& s : setup.species)
-        if (s.kind == BodyKind::apolar_rod && s.count > 0) return "nematic_order_" + s.name;
-    return "";
+    return series;
 }
 
 }  // namespace
@@ -50,7 +46,7 @@ PreparedRun prepare_run(const fs::path& run, const AnalyzeRequest& request) {
     p.run_dir = stored.run_dir;
     p.trajectory = stored.trajectory;
     p.plan = stored.plan;
-    p.setup = make_setup(p.plan);
+    p.setup = analysis_setup(p.plan);
     p.setup.blocks = request.options.blocks;
     p.times = reader.times();
     const std::size_t frames = p.times.size();
@@ -92,20 +88,11 @@ PreparedRun prepare_run(const fs::path& run, const AnalyzeRequest& request) {
             ++w.first_frame;
     } else {
         w.automatic = true;
-        w.basis = steady_basis(p.setup);
-        if (!w.basis.empty()) {
-            const std::vector<double> series = reader.series(w.basis);
-            if (series.size() != frames)
-                throw FileError(p.trajectory.string(), "the time series " + w.basis + " has " +
-                                                           std::to_string(series.size()) +
-                                                           " rows for " + std::to_string(frames) +
-                                                           " frames");
-            w.first_frame = steady_start(series);
-            const std::span<const double> kept(
-                series.begin() + static_cast<std::ptrdiff_t>(w.first_frame), series.end());
-            w.n_eff =
-                static_cast<double>(kept.size()) / (2.0 * integrated_autocorrelation_time(kept));
-        }
+        const SteadyChoice choice =
+            latest_steady_start(recorded_order_series(reader, p.setup, frames, p.trajectory));
+        w.first_frame = choice.first;
+        w.basis = choice.decided_by;
+        w.series = choice.series;
     }
     w.from = p.times[w.first_frame];
     p.setup.steady_frames = frames - w.first_frame;
@@ -128,13 +115,19 @@ RunAnalysis analyze_run(const PreparedRun& run, std::ostream& log, bool quiet) {
             << format_number(run.times.front()) << " to " << format_number(run.times.back())
             << " s\n  steady window from " << format_number(run.window.from) << " s (frame "
             << run.window.first_frame << ", " << run.setup.steady_frames << " frames; ";
-        if (run.window.automatic && !run.window.basis.empty())
-            log << "automatic: the start that maximises the independent samples of "
-                << run.window.basis << ", n_eff = " << format_number(run.window.n_eff) << ")\n";
-        else if (run.window.automatic)
+        if (run.window.automatic && !run.window.basis.empty()) {
+            log << "automatic: the latest steady start of the order series, decided by "
+                << run.window.basis << ")\n";
+            for (const SeriesStart& s : run.window.series)
+                log << "    " << s.name << ": steady from " << format_number(run.times[s.start])
+                    << " s, n_eff = " << format_number(s.n_eff) << " in the window"
+                    << (s.drifting ? "; DRIFTING: its two halves differ by > 3 errors" : "")
+                    << "\n";
+        } else if (run.window.automatic) {
             log << "automatic: no order-parameter series, whole run)\n";
-        else
+        } else {
             log << "--from)\n";
+        }
         log << "  observables:";
         for (const std::string& n : run.observables)
             log << " " << n;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "rodsea/analysis/steady_state.hpp"
 #include "rodsea/analyze/analysis_options.hpp"
 #include "rodsea/analyze/observable.hpp"
 #include "rodsea/config/run_plan.hpp"
@@ -23,10 +24,10 @@ struct AnalyzeRequest {
 
 struct SteadyWindow {
     std::size_t first_frame = 0;
-    double from = 0.0;       // s, time of the first steady frame
-    bool automatic = false;  // chosen by steady_start() rather than --from
-    std::string basis;       // the series the automatic choice used
-    double n_eff = 0.0;      // its independent samples in the window
+    double from = 0.0;                // s, time of the first steady frame
+    bool automatic = false;           // chosen by latest_steady_start() rather than --from
+    std::string basis;                // the series whose steady start decided the automatic choice
+    std::vector<SeriesStart> series;  // every order series: its own start, n_eff, drift
 };
 
 struct PreparedRun {

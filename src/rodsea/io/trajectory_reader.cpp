@@ -72,4 +72,8 @@ std::vector<double> TrajectoryReader::series(const std::string& column) const {
     return h5::read_doubles(f, g.get(), "value");
 }
 
+bool TrajectoryReader::has_series(const std::string& column) const {
+    return h5::exists(impl_->file.id(), "observables/" + column);
+}
+
 }  // namespace rodsea

@@ -23,6 +23,7 @@ class TrajectoryReader {
     const std::vector<double>& times() const { return times_; }
     BodyState frame(std::uint64_t index) const;
     std::vector<double> series(const std::string& column) const;
+    bool has_series(const std::string& column) const;
 
   private:
     struct Impl;

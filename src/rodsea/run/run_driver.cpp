@@ -48,7 +48,7 @@ class Session {
           sim_(std::move(sim)),
           trajectory_(std::move(trajectory)),
           csv_(std::move(csv)),
-          recorder_(plan.engine),
+          recorder_(plan),
           dir_(std::move(dir)),
           wall_before_(wall_before),
           polar_column_(polar_order_column(plan.engine)),
@@ -285,7 +285,7 @@ int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out,
     }
     Simulation sim(plan.engine, std::move(bodies), {.threads = plan.control.threads});
     write_file_atomically(dir / kConfigFile, plan.config_toml);
-    const SeriesRecorder columns(plan.engine);
+    const SeriesRecorder columns(plan);
     TrajectoryFile trajectory =
         TrajectoryFile::create(dir / kTrajectoryFile, plan.engine, sim.bodies().species,
                                plan.config_toml, columns.columns());
@@ -326,7 +326,7 @@ int resume_run(const std::filesystem::path& dir, const RunOptions& options, std:
         throw FileError(checkpoint_path.string(), "holds " + std::to_string(c.bodies.size()) +
                                                       " bodies but its config asks for " +
                                                       std::to_string(expected));
-    const SeriesRecorder columns(plan.engine);
+    const SeriesRecorder columns(plan);
     if (c.interval_accumulators.size() != columns.interval_state().size())
         throw FileError(checkpoint_path.string(), "damaged: wrong time-series interval state");
     // A run stopped by a failed write has its checkpoint at the step whose frame failed: that

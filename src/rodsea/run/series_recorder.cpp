@@ -7,12 +7,15 @@
 
 namespace rodsea {
 
-SeriesRecorder::SeriesRecorder(const EngineParameters& params)
-    : species_count_(params.species.size()) {
+SeriesRecorder::SeriesRecorder(const RunPlan& plan)
+    : species_count_(plan.engine.species.size()), structure_(analysis_setup(plan)) {
+    const EngineParameters& params = plan.engine;
     for (const Species& sp : params.species) {
         columns_.push_back({"polar_order_" + sp.name, "1"});
         columns_.push_back({"nematic_order_" + sp.name, "1"});
     }
+    if (structure_.has_segregation()) columns_.push_back({kSegregationColumn, "1"});
+    if (structure_.has_flocks()) columns_.push_back({kLargestFlockColumn, "polar rods"});
     for (const Species& sp : params.species) {
         columns_.push_back({"kinetic_energy_translational_" + sp.name, "mass-unit mm2 s-2/body"});
         columns_.push_back({"kinetic_energy_rotational_" + sp.name, "mass-unit mm2 s-2/body"});
@@ -47,6 +50,8 @@ std::vector<double> SeriesRecorder::row(const Simulation& sim, double steps_per_
         values.push_back(orientational_order(b, static_cast<std::uint32_t>(s), 1));
         values.push_back(orientational_order(b, static_cast<std::uint32_t>(s), 2));
     }
+    if (structure_.has_segregation()) values.push_back(structure_.segregation(b));
+    if (structure_.has_flocks()) values.push_back(structure_.largest_flock(b));
     std::vector<double> translational(species_count_), rotational(species_count_),
         count(species_count_);
     for (size_t i = 0; i < b.size(); ++i) {

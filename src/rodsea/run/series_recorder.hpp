@@ -1,10 +1,13 @@
 #pragma once
 // The scalar time series written every output interval: order parameters and kinetic energies
-// per species from the current state, and the engine's health (largest overlap, unresolved
+// per species from the current state, the segregation Σ and largest flock N_m as `rodsea analyze`
+// measures them (structure_series.hpp), and the engine's health (largest overlap, unresolved
 // contacts, sweeps, impulses) and collision rates accumulated over the interval, so that a bad
 // step between two rows is not missed.
 #include <vector>
 
+#include "rodsea/analyze/structure_series.hpp"
+#include "rodsea/config/run_plan.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/io/trajectory_file.hpp"
 
@@ -12,7 +15,7 @@ namespace rodsea {
 
 class SeriesRecorder {
   public:
-    explicit SeriesRecorder(const EngineParameters& params);
+    explicit SeriesRecorder(const RunPlan& plan);
 
     const std::vector<SeriesColumn>& columns() const { return columns_; }
     void accumulate(const StepStatistics& step);
@@ -28,6 +31,7 @@ class SeriesRecorder {
   private:
     std::vector<SeriesColumn> columns_;
     size_t species_count_ = 0;
+    StructureSeries structure_;
     double max_overlap_ = 0.0;
     double unresolved_ = 0.0;
     double max_sweeps_ = 0.0;
