@@ -89,6 +89,8 @@ void expect_same_plan(const RunPlan& a, const RunPlan& b, bool same_text = true)
     EXPECT_EQ(a.builder.orientation, b.builder.orientation);
     EXPECT_EQ(a.builder.randomisation_sweeps, b.builder.randomisation_sweeps);
     EXPECT_EQ(a.builder.domain_size, b.builder.domain_size);
+    EXPECT_EQ(a.control.steady_samples, b.control.steady_samples);
+    EXPECT_EQ(a.control.steady_series, b.control.steady_series);
     EXPECT_EQ(a.control.duration, b.control.duration);
     EXPECT_EQ(a.control.output_interval, b.control.output_interval);
     EXPECT_EQ(a.control.checkpoint_interval, b.control.checkpoint_interval);
@@ -363,6 +365,10 @@ std::vector<KeyCase> key_cases() {
          [](const RunPlan& p) { EXPECT_EQ(p.builder.orientation, InitialOrientation::aligned); }},
         {"initial.randomisation_sweeps", "[initial]\nrandomisation_sweeps = 0",
          [](const RunPlan& p) { EXPECT_EQ(p.builder.randomisation_sweeps, 0); }},
+        {"time.steady_samples", "[time]\nsteady_samples = 200",
+         [](const RunPlan& p) { EXPECT_EQ(p.control.steady_samples, 200); }},
+        {"time.steady_series", "[time]\nsteady_series = \"segregation\"",
+         [](const RunPlan& p) { EXPECT_EQ(p.control.steady_series, "segregation"); }},
         {"initial.domain_size", "[initial]\ndomain_size = 35.5",
          [](const RunPlan& p) { EXPECT_EQ(p.builder.domain_size, 35.5); }},
         {"engine.max_sweeps", "[engine]\nmax_sweeps = 17",

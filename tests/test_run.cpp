@@ -3,20 +3,25 @@
 // checkpoint, and bad input changes nothing.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 
 #include "child_process.hpp"
+#include "rodsea/analysis/steady_state.hpp"
 #include "rodsea/builder/initial_state.hpp"
 #include "rodsea/config/config_file.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/checkpoint.hpp"
+#include "rodsea/io/trajectory_file.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
 #include "rodsea/run/run_driver.hpp"
+#include "rodsea/run/steady_stop.hpp"
 #include "scratch_dir.hpp"
 
 namespace rodsea {
@@ -138,6 +143,161 @@ TEST(RunWorkflow, InterruptedAndResumedRunIsBitIdentical) {
     const ChildResult again = run_rodsea({"run", "--resume", a.string()}, dir.path());
     EXPECT_EQ(again.exit_code, kExitOk);
     EXPECT_NE(again.out.find("already complete"), std::string::npos) << again.out;
+}
+
+// Runs `config` into `out` in this process (quiet); its exit code.
+int run_quietly(const std::string& config, const std::filesystem::path& out) {
+    RunOptions options;
+    options.out_dir = out;
+    options.quiet = true;
+    std::ostringstream log, err;
+    return start_run(load_config_string(config, "test"), options, log, err);
+}
+
+int extend_quietly(const std::filesystem::path& dir, std::optional<double> duration,
+                   std::optional<long long> samples = std::nullopt) {
+    RunOptions options;
+    options.quiet = true;
+    options.duration = duration;
+    options.steady_samples = samples;
+    std::ostringstream log, err;
+    return resume_run(dir, options, log, err);
+}
+
+// Two run directories hold the same run: the same end state bit for bit, the same frames, the
+// same time series (all but the wall-clock steps_per_second).
+void expect_same_run(const std::filesystem::path& a, const std::filesystem::path& b) {
+    const Checkpoint end_a = read_checkpoint(a / kCheckpointFile);
+    const Checkpoint end_b = read_checkpoint(b / kCheckpointFile);
+    EXPECT_TRUE(end_a.complete);
+    EXPECT_EQ(end_a.step, end_b.step);
+    EXPECT_TRUE(same_bits(end_a.bodies, end_b.bodies));
+    EXPECT_EQ(end_a.interval_accumulators, end_b.interval_accumulators);
+    EXPECT_EQ(end_a.config_toml, end_b.config_toml);
+    const TrajectoryReader ta(a / kTrajectoryFile), tb(b / kTrajectoryFile);
+    ASSERT_EQ(ta.frames(), tb.frames());
+    EXPECT_EQ(ta.steps(), tb.steps());
+    EXPECT_EQ(ta.times(), tb.times());
+    for (std::uint64_t f = 0; f < ta.frames(); ++f)
+        EXPECT_TRUE(same_bits(ta.frame(f), tb.frame(f))) << "frame " << f;
+    for (const char* column :
+         {"polar_order_polar", "nematic_order_medium", "segregation", "largest_flock",
+          "max_overlap_fraction", "impulses_per_step", "body_collision_rate"})
+        EXPECT_EQ(ta.series(column), tb.series(column)) << column;
+    EXPECT_EQ(line_count(a / kSeriesFile), line_count(b / kSeriesFile));
+    EXPECT_EQ(read_stored_config(a / kTrajectoryFile), read_stored_config(b / kTrajectoryFile));
+    EXPECT_EQ(read_text(a / kConfigFile), read_text(b / kConfigFile));
+}
+
+TEST(RunExtension, AFinishedRunExtendedIsTheLongerRunBitForBit) {
+    // Ending on the output grid (0.02 s, frames every 2 ms) and off it (0.021 s: a last frame at
+    // 0.021 s that the 0.04 s run does not have, and an interval cut short).
+    const ScratchDir dir("run-extend");
+    const auto longer = dir.path() / "longer";
+    ASSERT_EQ(run_quietly(small_config(0.04, 0.002), longer), kExitOk);
+    for (const double first : {0.02, 0.021}) {
+        const auto extended = dir.path() / ("extended-" + std::to_string(first));
+        ASSERT_EQ(run_quietly(small_config(first, 0.002), extended), kExitOk);
+        ASSERT_TRUE(read_checkpoint(extended / kCheckpointFile).complete);
+        ASSERT_EQ(extend_quietly(extended, 0.04), kExitOk);
+        SCOPED_TRACE("extended from " + std::to_string(first) + " s");
+        expect_same_run(extended, longer);
+        EXPECT_EQ(load_config_string(read_text(extended / kConfigFile), "c").control.duration,
+                  0.04);
+    }
+}
+
+TEST(RunExtension, RefusesToShortenBelowTheTimeDoneAndChangesNothing) {
+    const ScratchDir dir("run-extend-bad");
+    const auto run = dir.path() / "run";
+    ASSERT_EQ(run_quietly(small_config(0.01, 0.002), run), kExitOk);
+    const std::string checkpoint = read_text(run / kCheckpointFile);
+    const std::string config = read_text(run / kConfigFile);
+    try {
+        extend_quietly(run, 0.005);
+        ADD_FAILURE() << "shortened a finished run";
+    } catch (const InvalidParameter& e) {
+        EXPECT_EQ(e.name(), "--duration");
+        EXPECT_NE(std::string(e.what()).find("0.01 s already simulated"), std::string::npos)
+            << e.what();
+    }
+    EXPECT_EQ(read_text(run / kCheckpointFile), checkpoint);
+    EXPECT_EQ(read_text(run / kConfigFile), config);
+    // The same duration again: nothing to do.
+    EXPECT_EQ(extend_quietly(run, 0.01), kExitOk);
+    EXPECT_EQ(read_text(run / kCheckpointFile), checkpoint);
+    // --duration belongs to --resume.
+    const auto file = write_config(dir, small_config(0.01, 0.002));
+    const ChildResult r =
+        run_rodsea({"run", file.string(), "--out", (dir.path() / "x").string(), "--duration", "1"},
+                   dir.path());
+    EXPECT_EQ(r.exit_code, kExitBadInput);
+    EXPECT_NE(r.err.find("--duration"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "x"));
+}
+
+// The stop rule as the run applies it, recomputed from the stored series: the window from every
+// order series holds at least `samples` independent samples of `counted`, which does not drift.
+bool steady_enough(const std::vector<NamedSeries>& series, const std::string& counted,
+                   double samples) {
+    if (series[0].values.size() < kSteadyMinimumFrames) return false;
+    for (const SeriesStart& s : latest_steady_start(series).series)
+        if (s.name == counted) return !s.drifting && s.n_eff >= samples;
+    return false;
+}
+
+TEST(RunExtension, StopsWhenSteadyAndExtendsPastThatWithMoreSamples) {
+    // At most 1 s, stopping once the medium's S has 8 independent samples in the steady window
+    // (measured: at 0.134 s; 16 samples at 0.332 s).
+    const ScratchDir dir("run-steady");
+    const auto run = dir.path() / "run";
+    std::string text = small_config(1.0, 0.002);
+    text.replace(text.find("[output]"), 0,
+                 "steady_samples = 8\nsteady_series = \"nematic_order_medium\"\n");
+    ASSERT_EQ(run_quietly(text, run), kExitOk);
+    const Checkpoint end = read_checkpoint(run / kCheckpointFile);
+    ASSERT_TRUE(end.complete);
+    const RunPlan plan = load_config_string(end.config_toml, "c");
+    std::printf("[ measured ] stopped when steady at t = %g s of at most 1 s\n",
+                static_cast<double>(end.step) * plan.engine.dt);
+    EXPECT_LT(end.step, plan.total_steps()) << "did not stop early";
+    EXPECT_EQ(end.step % plan.steps_per_output(), 0u);  // at a frame
+    std::vector<NamedSeries> series;
+    {
+        const TrajectoryReader reader(run / kTrajectoryFile);  // closed before the run reopens it
+        for (const char* c : {"polar_order_polar", "nematic_order_polar", "nematic_order_medium",
+                              "segregation", "largest_flock"})
+            series.push_back({c, reader.series(c)});
+    }
+    // Satisfied at the last frame, not at the one before (else it would have stopped there).
+    EXPECT_TRUE(steady_enough(series, "nematic_order_medium", 8.0));
+    std::vector<NamedSeries> earlier = series;
+    for (NamedSeries& s : earlier)
+        s.values.pop_back();
+    EXPECT_FALSE(steady_enough(earlier, "nematic_order_medium", 8.0));
+
+    // More samples asked for: it goes on from where it stopped, and stops later.
+    ASSERT_EQ(extend_quietly(run, std::nullopt, 16), kExitOk);
+    const Checkpoint later = read_checkpoint(run / kCheckpointFile);
+    EXPECT_TRUE(later.complete);
+    std::printf("[ measured ] with 16 samples at t = %g s\n",
+                static_cast<double>(later.step) * plan.engine.dt);
+    EXPECT_GT(later.step, end.step);
+    EXPECT_EQ(load_config_string(later.config_toml, "c").control.steady_samples, 16);
+}
+
+TEST(RunExtension, AnUnknownSteadySeriesIsRefusedBeforeAnyWork) {
+    const ScratchDir dir("run-steady-bad");
+    std::string text = small_config(0.01, 0.002);
+    text.replace(text.find("[output]"), 0, "steady_samples = 5\nsteady_series = \"P\"\n");
+    try {
+        run_quietly(text, dir.path() / "run");
+        ADD_FAILURE() << "ran with an unknown series";
+    } catch (const InvalidParameter& e) {
+        EXPECT_EQ(e.name(), "time.steady_series");
+        EXPECT_NE(std::string(e.what()).find("polar_order_polar"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "run"));
 }
 
 // A file-size limit makes the trajectory's writes fail part way, as a full disk does: the run

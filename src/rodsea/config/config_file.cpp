@@ -42,6 +42,23 @@ RunPlan load_config_string(std::string_view toml, std::string_view source_name,
     return plan;
 }
 
+RunPlan with_run_length(std::string_view toml, std::string_view source_name,
+                        std::optional<double> duration, std::optional<long long> steady_samples) {
+    config::ConfigValues values = config::read_toml(toml, source_name);
+    std::vector<config::TableValues>& time = values.all("time");
+    if (time.empty()) time.push_back({"time", 0, {}});
+    if (duration) {
+        time.front().entries.erase("periods");
+        time.front().entries["duration"] = {*duration, 0};
+    }
+    if (steady_samples)
+        time.front().entries["steady_samples"] = {static_cast<std::int64_t>(*steady_samples), 0};
+    RunPlan plan = config::resolve(values, {});
+    plan.config_toml = config::write_toml(values);
+    plan.choices = config::list_choices(values, plan);
+    return plan;
+}
+
 std::string default_config_toml() {
     // The resolved empty config is every key at its default, commented.
     return load_config_string("", "defaults").config_toml;

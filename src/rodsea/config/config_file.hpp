@@ -4,6 +4,7 @@
 // TOML, the commented default config and docs/config.md are all generated from it.
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -43,6 +44,12 @@ RunPlan load_config_file(const std::filesystem::path& path, const EpsilonLookup&
 // noise.rotational_diffusion needs `epsilon`; a resolved config (which holds ε) never does.
 RunPlan load_config_string(std::string_view toml, std::string_view source_name,
                            const EpsilonLookup& epsilon = {});
+
+// The config `toml` (a resolved one, as a run stores it) with a new run length: time.duration
+// (s; time.periods dropped) and time.steady_samples, each only if given; validated as any config
+// (InvalidParameter named time.duration or time.steady_samples).
+RunPlan with_run_length(std::string_view toml, std::string_view source_name,
+                        std::optional<double> duration, std::optional<long long> steady_samples);
 
 // A complete config with every key at its default, each commented with its unit and range.
 std::string default_config_toml();

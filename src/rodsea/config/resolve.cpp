@@ -268,6 +268,8 @@ void build_time_and_output(ConfigValues& c, RunPlan& plan) {
         c.equivalents["output.interval"] = plan.control.output_interval;
     }
     plan.control.checkpoint_interval = output.real("checkpoint_interval");
+    plan.control.steady_samples = time.integer("steady_samples");
+    plan.control.steady_series = time.text("steady_series");
 }
 
 void build_the_rest(ConfigValues& c, RunPlan& plan, const EpsilonLookup& epsilon) {

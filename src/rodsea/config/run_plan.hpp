@@ -16,6 +16,12 @@ struct RunControl {
     double output_interval = 0.05;      // simulated time between trajectory frames and rows, s
     double checkpoint_interval = 30.0;  // wall-clock minutes between checkpoints
     int threads = 1;
+    // Stop when steady: with steady_samples > 0 the run ends at the first frame whose steady
+    // window (steady_state.hpp, from every order series) holds at least that many independent
+    // samples of steady_series ("all": of every order series), none of those drifting; the
+    // duration is then the longest it may run.
+    long long steady_samples = 0;
+    std::string steady_series = "all";
 };
 
 struct RunPlan {

@@ -203,6 +203,20 @@ std::vector<KeySpec> make_keys() {
                     .range(left_open(0.0, 1e9))
                     .alternative("duration")
                     .doc("Simulated time in drive periods 2π/Ω."));
+    k.push_back(integer("time", "steady_samples")
+                    .def(std::int64_t{control.steady_samples})
+                    .integers(0, 1'000'000'000)
+                    .doc("Stop when steady: end the run at the first frame whose steady window "
+                         "(chosen as `rodsea analyze` chooses it, from every order series) holds "
+                         "at least this many independent samples n/(2 τ_int) of steady_series, "
+                         "none of them drifting; duration is then the longest it may run. "
+                         "0: run for the whole duration. Needs at least 50 frames to judge."));
+    k.push_back(Key("time", "steady_series", ValueType::text)
+                    .def(control.steady_series)
+                    .doc("The series steady_samples counts: all (every order series must have "
+                         "the samples), or one time-series column: polar_order_<species>, "
+                         "nematic_order_<species>, segregation, largest_flock (checked against "
+                         "the run's species before it starts)."));
     // [output]
     k.push_back(real("output", "interval")
                     .unit("s")

@@ -308,6 +308,12 @@ void write_string_dataset(const File& file, hid_t parent, const std::string& nam
           "cannot write dataset " + name);
 }
 
+void replace_string_dataset(const File& file, hid_t parent, const std::string& name,
+                            const std::string& text) {
+    check(H5Ldelete(parent, name.c_str(), H5P_DEFAULT), file, "cannot replace dataset " + name);
+    write_string_dataset(file, parent, name, text);
+}
+
 std::vector<double> read_doubles(const File& file, hid_t parent, const std::string& name) {
     return read_all<double>(file, parent, name, H5T_NATIVE_DOUBLE);
 }

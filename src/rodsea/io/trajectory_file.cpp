@@ -206,6 +206,13 @@ TrajectoryFile TrajectoryFile::reopen(const std::filesystem::path& path, std::ui
     return TrajectoryFile(std::move(impl));
 }
 
+void TrajectoryFile::replace_config(const std::string& config_toml) {
+    const h5::File& f = impl_->file;
+    h5::Handle rodsea = h5::open_group(f, f.id(), "parameters/rodsea");
+    h5::replace_string_dataset(f, rodsea.get(), "config", config_toml);
+    f.flush();
+}
+
 void TrajectoryFile::append_frame(std::uint64_t step, double time, const BodyState& bodies,
                                   const std::vector<double>& series_row) {
     Impl& m = *impl_;

@@ -58,6 +58,8 @@ class TrajectoryFile {
     // middle of HDF5's own writes, which would leave a file HDF5 cannot open again. Throws
     // FileError naming the file and the reason.
     void reserve(std::uint64_t bytes);
+    // Replaces the stored config (/parameters/rodsea/config): an extended run's new length.
+    void replace_config(const std::string& config_toml);
     void flush();  // makes every appended frame durable before a checkpoint refers to it
     void close();
     // Drops every HDF5 id without closing it, after a failed write (see h5::Handle::release):

@@ -9,6 +9,7 @@
 #include "rodsea/builder/initial_state.hpp"
 #include "rodsea/cli/progress.hpp"
 #include "rodsea/engine/physics/contact.hpp"
+#include "rodsea/run/steady_stop.hpp"
 
 namespace rodsea {
 
@@ -101,6 +102,13 @@ void describe_plan(const RunPlan& plan, std::ostream& out, bool brief) {
     out << "time     dt = " << p.dt * 1e6 << " us, " << plan.total_steps()
         << " steps = " << duration << " s = " << fixed(duration / period, 1)
         << " drive periods, seed " << p.seed << ", threads " << plan.control.threads << "\n";
+    if (plan.control.steady_samples > 0)
+        out << "         stop when steady: once the steady window holds "
+            << plan.control.steady_samples << " independent samples of "
+            << (plan.control.steady_series == "all" ? std::string("every order series")
+                                                    : plan.control.steady_series)
+            << " (checked every frame from frame " << kSteadyMinimumFrames << " on); " << duration
+            << " s at most\n";
     out << "output   a frame every " << plan.steps_per_output() << " steps ("
         << static_cast<double>(plan.steps_per_output()) * p.dt << " s), " << e.frames
         << " frames of " << format_bytes(e.frame_bytes) << " = " << format_bytes(e.trajectory_bytes)

@@ -11,13 +11,15 @@
 #include "rodsea/error.hpp"
 #include "rodsea/run/plan_report.hpp"
 #include "rodsea/run/run_driver.hpp"
+#include "rodsea/run/steady_stop.hpp"
 
 namespace rodsea {
 
 const CommandSpec& run_command_spec() {
     static const CommandSpec spec{
         "run",
-        "CONFIG [--out DIR] [--overwrite] [--quiet]  |  rodsea run --resume DIR [--quiet]",
+        "CONFIG [--out DIR] [--overwrite] [--quiet]  |  rodsea run --resume DIR [--duration T] "
+        "[--steady-samples N] [--quiet]",
         "start a simulation, or continue one from its checkpoint",
         "Reads CONFIG (TOML; every key in docs/config.md), checks all of it and the packing, "
         "prints the plan, builds the initial state (every body flat on the base, no overlaps) "
@@ -29,10 +31,16 @@ const CommandSpec& run_command_spec() {
         "On a terminal a progress bar shows simulated time, ETA, steps/s and P; otherwise a log "
         "line every 5 %. Checkpoints are written every output.checkpoint_interval minutes of wall "
         "time and on SIGINT/SIGTERM (Ctrl-C stops cleanly); --resume continues bit for bit where "
-        "it stopped.",
+        "it stopped. --resume with --duration extends a run, finished or not, to a longer "
+        "duration (bit for bit the run given that duration from the start; config.toml and the "
+        "stored config say the new one); --steady-samples changes time.steady_samples (stop when "
+        "steady) likewise, 0 to run to the duration.",
         {{"--out", "DIR", "output directory; refused if it exists and is not empty"},
          {"--overwrite", "", "replace the run files in an existing DIR"},
          {"--resume", "DIR", "continue the run in DIR from its checkpoint.h5"},
+         {"--duration", "T", "with --resume: the run's new duration, s (at least the time done)"},
+         {"--steady-samples", "N",
+          "with --resume: the run's new time.steady_samples (0: no stop when steady)"},
          {"--quiet", "", "no plan and no progress (errors are still printed)"}},
         ""};
     return spec;
@@ -77,11 +85,20 @@ int run_command(const std::vector<std::string>& words, std::ostream& out, std::o
     options.overwrite = a.has("--overwrite");
     if (const auto dir = a.value("--resume")) {
         if (!a.positional.empty() || a.value("--out") || options.overwrite)
-            throw InvalidParameter("--resume", *dir, "alone (with --quiet at most)",
+            throw InvalidParameter("--resume", *dir,
+                                   "alone (with --duration, --steady-samples, --quiet at most)",
                                    "the config and output directory come from DIR");
         options.out_dir = *dir;
+        if (const auto t = a.value("--duration"))
+            options.duration = parse_number("--duration", *t, 0.0, 1e6, "s");
+        if (const auto n = a.value("--steady-samples"))
+            options.steady_samples = parse_count("--steady-samples", *n, 0, 1'000'000'000);
         return resume_run(*dir, options, out, err, stdout_is_terminal());
     }
+    for (const char* flag : {"--duration", "--steady-samples"})
+        if (a.value(flag))
+            throw InvalidParameter(flag, *a.value(flag), "only with --resume DIR",
+                                   "a new run takes its length from CONFIG ([time])");
     const RunPlan plan = config_named_by(a, run_command_spec());
     const std::filesystem::path config = a.positional[0];
     options.out_dir =
@@ -94,6 +111,7 @@ int info_command(const std::vector<std::string>& words, std::ostream& out, std::
     if (!parsed) return kExitOk;
     const Arguments& a = *parsed;
     const RunPlan plan = config_named_by(a, info_command_spec());
+    check_steady_series(plan);
     out << "rodsea info " << a.positional[0] << "\n";
     describe_plan(plan, out);
     return kExitOk;

@@ -17,9 +17,11 @@
 #include "rodsea/io/checkpoint.hpp"
 #include "rodsea/io/series_csv.hpp"
 #include "rodsea/io/trajectory_file.hpp"
+#include "rodsea/io/trajectory_reader.hpp"
 #include "rodsea/run/plan_report.hpp"
 #include "rodsea/run/run_lock.hpp"
 #include "rodsea/run/series_recorder.hpp"
+#include "rodsea/run/steady_stop.hpp"
 
 namespace rodsea {
 
@@ -49,6 +51,7 @@ class Session {
           trajectory_(std::move(trajectory)),
           csv_(std::move(csv)),
           recorder_(plan),
+          steady_(plan, recorder_.columns()),
           dir_(std::move(dir)),
           wall_before_(wall_before),
           polar_column_(polar_order_column(plan.engine)),
@@ -56,6 +59,7 @@ class Session {
           frames_written_(trajectory_.frames()) {}
 
     SeriesRecorder& recorder() { return recorder_; }
+    SteadyStop& steady() { return steady_; }
 
     // A frame counts (and its interval closes) only once the trajectory and the CSV both hold
     // it: a failure part way leaves the count, and the interval, as a checkpoint must see them.
@@ -69,6 +73,7 @@ class Session {
         csv_.flush();
         recorder_.start_interval();
         ++frames_written_;
+        if (steady_.active()) steady_.add_row(row);
     }
 
     // The frames it counts are first forced to disk, so that no crash can leave a checkpoint
@@ -81,7 +86,10 @@ class Session {
         c.step = sim_.step_count();
         c.frames_written = frames_written_;
         c.bodies = sim_.bodies();
-        c.interval_accumulators = recorder_.interval_state();
+        // A run that ended off the output grid closed its interval early with the last row; an
+        // extension (--duration) continues the interval as an uninterrupted run would.
+        c.interval_accumulators =
+            complete && open_interval_at_end_ ? *open_interval_at_end_ : recorder_.interval_state();
         c.wall_seconds = wall_before_ + seconds_since(started_);
         c.complete = complete;
         write_checkpoint(dir_ / kCheckpointFile, c);
@@ -101,14 +109,21 @@ class Session {
             sim_.step();
             recorder_.accumulate(sim_.last_step());
             const std::uint64_t step = sim_.step_count();
+            const bool on_grid = step % per_output == 0;
             try {
-                if (step % per_output == 0 || step == total)
-                    write_frame(progress.steps_per_second());
+                if (step == total && !on_grid) open_interval_at_end_ = recorder_.interval_state();
+                if (on_grid || step == total) write_frame(progress.steps_per_second());
             } catch (const FileError& e) {
                 progress.finish(step, last_polar_order_);
                 return stop_after_write_failure(e, out, err);
             }
             progress.update(step, last_polar_order_);
+            if (on_grid) {
+                if (const std::optional<SteadyVerdict> v = steady_.verdict()) {
+                    progress.finish(step, last_polar_order_);
+                    return finish(out, err, style, v);
+                }
+            }
             if (const int signal = stop_signal_received(); signal != 0) {
                 progress.finish(step, last_polar_order_);
                 return stop_on_signal(signal, out, err);
@@ -126,6 +141,13 @@ class Session {
             }
         }
         progress.finish(sim_.step_count(), last_polar_order_);
+        return finish(out, err, style, std::nullopt);
+    }
+
+  private:
+    // The run's end: at its duration, or earlier once steady (`verdict`).
+    int finish(std::ostream& out, std::ostream& err, ProgressStyle style,
+               const std::optional<SteadyVerdict>& verdict) {
         try {
             // Closed first: a run is marked complete only with its trajectory whole.
             trajectory_.close();
@@ -136,11 +158,22 @@ class Session {
                 << "--resume " << dir_.string() << "\n";
             return kExitIoError;
         }
-        if (style != ProgressStyle::quiet) report_end(out);
+        if (style == ProgressStyle::quiet) return kExitOk;
+        if (verdict) {
+            const double frame_time =
+                static_cast<double>(plan_.steps_per_output()) * plan_.engine.dt;
+            out << "steady: the window from "
+                << format_number(frame_time * static_cast<double>(verdict->first_frame))
+                << " s (decided by " << verdict->decided_by
+                << ") holds n_eff = " << format_number(verdict->n_eff) << " independent samples of "
+                << verdict->counted << " >= time.steady_samples = " << plan_.control.steady_samples
+                << "; stopped at t = " << sim_.time() << " s of at most " << plan_.control.duration
+                << " s\n";
+        }
+        report_end(out);
         return kExitOk;
     }
 
-  private:
     int stop_on_signal(int signal, std::ostream& out, std::ostream& err) {
         const char* what = signal == SIGINT ? "interrupted (SIGINT)" : "terminated (SIGTERM)";
         try {
@@ -198,6 +231,7 @@ class Session {
     TrajectoryFile trajectory_;
     SeriesCsv csv_;
     SeriesRecorder recorder_;
+    SteadyStop steady_;
     std::filesystem::path dir_;
     double wall_before_;
     std::size_t polar_column_;
@@ -207,6 +241,7 @@ class Session {
     std::uint64_t frame_reserve_bytes_;
     std::uint64_t frames_written_;
     double last_polar_order_ = 0.0;
+    std::optional<std::vector<double>> open_interval_at_end_;  // before the off-grid last row
     Clock::time_point started_ = Clock::now();
     Clock::time_point last_checkpoint_ = Clock::now();
 };
@@ -256,6 +291,7 @@ int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out,
     const PackingCheck packing = check_packing(plan.engine, plan.counts);
     if (!packing.ok)
         throw InvalidParameter("species", "these counts", "a packing that fits", packing.message);
+    check_steady_series(plan);
     prepare_output_directory(options.out_dir, options.overwrite);
     const std::filesystem::path& dir = options.out_dir;
     const RunDirectoryLock lock(dir);
@@ -302,6 +338,59 @@ int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out,
     return session.run(out, err, choose_progress_style(options.quiet, progress_is_terminal));
 }
 
+namespace {
+
+// Everything about a checkpoint is checked against its plan before any file is touched.
+void check_checkpoint(const Checkpoint& c, const RunPlan& plan, const std::filesystem::path& path) {
+    std::uint64_t expected = 0;
+    for (long long n : plan.counts)
+        expected += static_cast<std::uint64_t>(n);
+    if (c.bodies.size() != expected)
+        throw FileError(path.string(), "holds " + std::to_string(c.bodies.size()) +
+                                           " bodies but its config asks for " +
+                                           std::to_string(expected));
+    if (c.interval_accumulators.size() != SeriesRecorder(plan).interval_state().size())
+        throw FileError(path.string(), "damaged: wrong time-series interval state");
+}
+
+// The plan of a run given a new length (--duration, --steady-samples), checked against what the
+// run has done.
+RunPlan extended_plan(const Checkpoint& c, const RunOptions& options,
+                      const std::filesystem::path& path) {
+    RunPlan plan = with_run_length(c.config_toml, path.string() + " [config]", options.duration,
+                                   options.steady_samples);
+    check_steady_series(plan);
+    if (plan.total_steps() < c.step)
+        throw InvalidParameter("--duration", format_number(plan.control.duration) + " s",
+                               "at least the " +
+                                   format_number(static_cast<double>(c.step) * plan.engine.dt) +
+                                   " s already simulated");
+    return plan;
+}
+
+// Makes the checkpoint and config.toml those of the extended run. A complete run that ended off
+// the output grid wrote a last frame that an uninterrupted longer run does not have: it is
+// dropped (the files are truncated to the frames the checkpoint counts when they are reopened),
+// so that the extension is bit for bit the longer run. The checkpoint is written before any file
+// changes: a crash in between resumes the extension, never a run whose checkpoint counts frames
+// that are gone.
+void commit_extension(const std::filesystem::path& dir, const RunPlan& plan, Checkpoint& c) {
+    const std::filesystem::path path = dir / kCheckpointFile;
+    const std::uint64_t due = frames_due(plan, c.step);
+    const bool extra_last_frame = c.complete && c.frames_written == due + 1;
+    if (c.frames_written != due && c.frames_written + 1 != due && !extra_last_frame)
+        throw FileError(path.string(), "counts " + std::to_string(c.frames_written) +
+                                           " frames at step " + std::to_string(c.step) +
+                                           ": not a checkpoint of this run's config");
+    if (extra_last_frame) c.frames_written = due;
+    c.complete = false;
+    c.config_toml = plan.config_toml;
+    write_checkpoint(path, c);
+    write_file_atomically(dir / kConfigFile, plan.config_toml);
+}
+
+}  // namespace
+
 int resume_run(const std::filesystem::path& dir, const RunOptions& options, std::ostream& out,
                std::ostream& err, bool progress_is_terminal) {
     StopSignalGuard signals;
@@ -311,24 +400,19 @@ int resume_run(const std::filesystem::path& dir, const RunOptions& options, std:
                         "no checkpoint here: is this a directory made by rodsea run?");
     const RunDirectoryLock lock(dir);
     Checkpoint c = read_checkpoint(checkpoint_path);
-    const RunPlan plan = load_config_string(c.config_toml, checkpoint_path.string() + " [config]");
-    if (c.complete) {
+    const RunPlan stored =
+        load_config_string(c.config_toml, checkpoint_path.string() + " [config]");
+    check_checkpoint(c, stored, checkpoint_path);
+    const bool extending = options.duration || options.steady_samples;
+    const RunPlan plan = extending ? extended_plan(c, options, checkpoint_path) : stored;
+    if (c.complete && (!extending || plan.total_steps() == c.step)) {
         if (!options.quiet)
             out << "rodsea: the run in " << dir.string() << " is already complete (step " << c.step
-                << " of " << plan.total_steps() << "); nothing to do.\n";
+                << ", t = " << static_cast<double>(c.step) * plan.engine.dt
+                << " s); nothing to do. Extend it with --duration T.\n";
         return kExitOk;
     }
-    // Everything about the checkpoint is checked before any file is touched.
-    std::uint64_t expected = 0;
-    for (long long n : plan.counts)
-        expected += static_cast<std::uint64_t>(n);
-    if (c.bodies.size() != expected)
-        throw FileError(checkpoint_path.string(), "holds " + std::to_string(c.bodies.size()) +
-                                                      " bodies but its config asks for " +
-                                                      std::to_string(expected));
-    const SeriesRecorder columns(plan);
-    if (c.interval_accumulators.size() != columns.interval_state().size())
-        throw FileError(checkpoint_path.string(), "damaged: wrong time-series interval state");
+    if (extending) commit_extension(dir, plan, c);
     // A run stopped by a failed write has its checkpoint at the step whose frame failed: that
     // frame comes first, from the same state and interval, as the uninterrupted run wrote it.
     const std::uint64_t due = frames_due(plan, c.step);
@@ -340,16 +424,25 @@ int resume_run(const std::filesystem::path& dir, const RunOptions& options, std:
     if (!options.quiet) {
         out << "rodsea run --resume " << dir.string() << ": from step " << c.step << " of "
             << plan.total_steps() << " (t = " << static_cast<double>(c.step) * plan.engine.dt
-            << " s), " << c.frames_written << " frames kept\n";
+            << " s of " << plan.control.duration << " s), " << c.frames_written << " frames kept"
+            << (extending ? "; extended, config.toml updated" : "") << std::endl;
     }
+    const SeriesRecorder columns(plan);
     Simulation sim = Simulation::resume(plan.engine, std::move(c.bodies), c.step,
                                         {.threads = plan.control.threads});
     SeriesCsv csv = SeriesCsv::reopen(dir / kSeriesFile, c.frames_written);
+    std::optional<SteadyStop> history;
+    if (plan.control.steady_samples > 0) {
+        history.emplace(plan, columns.columns());
+        history->restore(TrajectoryReader(dir / kTrajectoryFile), c.frames_written);
+    }
     TrajectoryFile trajectory =
         TrajectoryFile::reopen(dir / kTrajectoryFile, c.frames_written, columns.columns());
+    if (extending) trajectory.replace_config(plan.config_toml);
     Session session(plan, std::move(sim), std::move(trajectory), std::move(csv), dir,
                     c.wall_seconds);
     session.recorder().restore_interval(c.interval_accumulators);
+    if (history) session.steady() = std::move(*history);
     if (c.frames_written + 1 == due) {
         try {
             session.write_frame(0.0);

@@ -9,6 +9,7 @@
 //   checkpoint.h5     the latest checkpoint (io/checkpoint.hpp), replaced atomically
 #include <filesystem>
 #include <iosfwd>
+#include <optional>
 
 #include "rodsea/cli/exit_codes.hpp"
 #include "rodsea/config/run_plan.hpp"
@@ -19,6 +20,10 @@ struct RunOptions {
     std::filesystem::path out_dir;
     bool overwrite = false;  // replace the run files of an existing directory
     bool quiet = false;      // no plan, no progress; errors still go to the error stream
+    // Resume only: extend (or shorten, not below the time done) the run to this duration, s,
+    // and/or change its stop-when-steady sample count; the stored config says the new values.
+    std::optional<double> duration;
+    std::optional<long long> steady_samples;
 };
 
 inline const char* const kConfigFile = "config.toml";
@@ -32,7 +37,9 @@ inline const char* const kCheckpointFile = "checkpoint.h5";
 int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out, std::ostream& err,
               bool progress_is_terminal = false);
 
-// Continues the run in `dir` from its checkpoint, bit for bit as if it had never stopped.
+// Continues the run in `dir` from its checkpoint, bit for bit as if it had never stopped; with
+// options.duration or options.steady_samples, with that run length (also when it had completed),
+// bit for bit the run that had been given it from the start.
 int resume_run(const std::filesystem::path& dir, const RunOptions& options, std::ostream& out,
                std::ostream& err, bool progress_is_terminal = false);
 

@@ -79,6 +79,10 @@ void write_dataset(const File& file, hid_t parent, const std::string& name,
                    const std::vector<std::uint64_t>& data, const std::vector<hsize_t>& dims);
 void write_string_dataset(const File& file, hid_t parent, const std::string& name,
                           const std::string& text);
+// Deletes the dataset `name` (a fixed string of another length cannot be overwritten in place) and
+// writes `text` in its place.
+void replace_string_dataset(const File& file, hid_t parent, const std::string& name,
+                            const std::string& text);
 
 // Whole-dataset reads, flattened.
 std::vector<double> read_doubles(const File& file, hid_t parent, const std::string& name);
