@@ -46,6 +46,7 @@ FlockContour flock_contour(std::span<const double> g, std::span<const double> r_
             } else {
                 radius = r_edges[nr];
                 c.closed = false;
+                ++c.rays_at_edge;
             }
         }
         c.theta.push_back(theta);

@@ -17,7 +17,16 @@ struct FlockContour {
     double enclosed_g_area = 0.0;  // Σ g · bin area inside the contour, mm²
     bool closed = true;            // false: some ray stays above the level to the map's edge
     int empty_rays = 0;            // rays that never reach the level
+    int rays_at_edge = 0;          // rays that stay above the level to the map's edge
     bool sparse = false;           // no bin had `min_pairs`: the maximum is over every bin
+
+    // Rays on which the contour closes inside the map, round the reference rod.
+    int closed_rays() const { return static_cast<int>(theta.size()) - empty_rays - rays_at_edge; }
+    // Only a contour closed in every direction encloses a flock: σ_f and N_avg of any other are
+    // not numbers (a contour through the reference rod, or cut by the map's edge).
+    bool encloses_a_flock() const {
+        return level > 0.0 && !theta.empty() && closed_rays() == static_cast<int>(theta.size());
+    }
 };
 
 // `g` is [r_bin * theta_bins + theta_bin]; bins without data are NaN and count as below level.

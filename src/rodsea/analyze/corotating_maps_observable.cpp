@@ -46,16 +46,23 @@ ObservableResults CorotatingMapsObservable::finish() {
         navg_blocks.push_back(n_avg(m, cb));
     }
     const FlockContour contour = contour_of(all);
+    // A contour that does not close round the reference rod in every direction has no aspect
+    // ratio and encloses no flock: null, with the reason, rather than a number with an error bar.
+    const Estimate none{std::nan(""), std::nan(""), 0.5, 0.0, 0, true};
+    const bool flock = contour.encloses_a_flock();
     r.scalars.push_back({"sigma_f", "",
                          "flock aspect ratio: x' (along the rod) over y' extent of the " +
                              format_number(level_ * 100) + " % contour of g(r,θ)",
-                         estimate_from_blocks(contour.aspect_ratio, sigma_blocks)});
+                         flock ? estimate_from_blocks(contour.aspect_ratio, sigma_blocks) : none});
     r.scalars.push_back({"N_avg", "", "polar rods inside that contour (reference rod included)",
-                         estimate_from_blocks(n_avg(all, contour), navg_blocks)});
+                         flock ? estimate_from_blocks(n_avg(all, contour), navg_blocks) : none});
+    const std::size_t nt = all.theta_bins();
+    r.parameters.push_back(
+        {"contour_closed_directions", static_cast<double>(contour.closed_rays()), ""});
+    r.parameters.push_back({"contour_directions", static_cast<double>(nt), ""});
     double pairs = 0.0;
     for (double p : all.pair_counts())
         pairs += p;
-    const std::size_t nt = all.theta_bins();
     if (pairs == 0.0)
         r.notes.push_back(
             "no two polar rods closer than corotating.r_max = " + format_number(parameters_.r_max) +
@@ -66,12 +73,16 @@ ObservableResults CorotatingMapsObservable::finish() {
                           "fewer bins");
     if (contour.empty_rays > 0)
         r.notes.push_back(std::to_string(contour.empty_rays) + " of " + std::to_string(nt) +
-                          " directions never reach the contour level: the contour passes "
-                          "through the reference rod there");
+                          " directions never reach the contour level (the contour passes "
+                          "through the reference rod there): no closed contour, σ_f and N_avg "
+                          "null; " +
+                          std::to_string(contour.closed_rays()) + " directions closed");
     if (!contour.closed)
-        r.notes.push_back(
-            "the g(r,θ) contour reaches corotating.r_max: the flock is larger than "
-            "the map, so σ_f and N_avg are lower bounds; raise corotating.r_max");
+        r.notes.push_back(std::to_string(contour.rays_at_edge) + " of " + std::to_string(nt) +
+                          " directions stay above the contour level to corotating.r_max = " +
+                          format_number(parameters_.r_max) +
+                          " mm (the flock is larger than the map): σ_f and N_avg null; raise "
+                          "corotating.r_max");
     r.maps.push_back({"g_r_theta",
                       "pair density of polar rods around a reference polar rod over the ideal-gas "
                       "density; theta from the reference rod's axis (thick → thin)",
