@@ -229,6 +229,28 @@ TEST_F(RenderCli, FlockColoursGoByFlockSize) {
         expect_colour(pixel_under(image, 14.0, y), label_colour(0), "the larger flock");
 }
 
+TEST_F(RenderCli, AnnotationsLieOutsideTheViewAndHideNoBody) {
+    // Rods in all four corners, where the text, the scale bar and the colour wheel used to sit
+    // on top of the bodies: with annotations the picture of the box must appear whole, pixel for
+    // pixel the picture without them, between a strip of text above and one of legends below.
+    const std::vector<std::array<double, 3>> rods{
+        {2.5, 18.0, 0.3}, {17.5, 18.0, 1.3}, {2.5, 1.5, 2.3}, {17.5, 1.5, 3.3}};
+    const Image bare = render(rods, {"--no-annotations"});
+    const Image annotated = render(rods);
+    ASSERT_EQ(annotated.width, bare.width);
+    ASSERT_GT(annotated.height, bare.height);
+    int offset = -1;
+    for (int top = 0; top + bare.height <= annotated.height && offset < 0; ++top) {
+        bool same = true;
+        for (int row = 0; row < bare.height && same; ++row)
+            for (int col = 0; col < bare.width && same; ++col)
+                same = annotated.at(col, top + row) == bare.at(col, row);
+        if (same) offset = top;
+    }
+    EXPECT_GT(offset, 0) << "the view is not in the annotated picture unchanged";
+    EXPECT_LT(offset + bare.height, annotated.height) << "no strip below the view";
+}
+
 TEST_F(RenderCli, ScaleBarIsAsLongAsItSays) {
     // 400 px for 20 mm: the bar is the largest 1/2/5 × 10^k mm within a fifth of the width, so
     // 2 mm = 40 px; it is the longest black run of pixels in the bottom rows.

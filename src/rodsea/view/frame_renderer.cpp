@@ -147,14 +147,34 @@ const char* plural_kind(BodyKind kind) {
     return "bodies";
 }
 
-// Annotations are drawn in pixels, after the bodies, on the identity transform.
+// The annotations' font size in pixels for an image `width` pixels wide.
+double annotation_font(int width) {
+    return std::clamp(static_cast<double>(width) / 75.0, 10.0, 28.0);
+}
+
+// A colour wheel's radius in pixels.
+double wheel_radius(int width) {
+    return std::max(2.2 * annotation_font(width), static_cast<double>(width) / 28.0);
+}
+
+// The strips above and below the box that hold the annotations, so that none covers a body:
+// the text block above (`lines` lines), the scale bar and the colour wheels below.
+int header_height(int width, int lines) {
+    const double font = annotation_font(width);
+    return static_cast<int>(std::ceil(font + 1.35 * font * static_cast<double>(lines)));
+}
+int footer_height(int width, bool wheels) {
+    const double font = annotation_font(width);
+    return static_cast<int>(
+        std::ceil(wheels ? 4.5 * font + 2.0 * wheel_radius(width) : 3.5 * font));
+}
+
+// Annotations are drawn in pixels, after the bodies, on the identity transform, in the strips
+// above and below the box.
 class Annotator {
   public:
     Annotator(cairo_t* cr, int width, int height)
-        : cr_(cr),
-          width_(width),
-          height_(height),
-          font_(std::clamp(static_cast<double>(width) / 75.0, 10.0, 28.0)) {
+        : cr_(cr), width_(width), height_(height), font_(annotation_font(width)) {
         cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
                                CAIRO_FONT_WEIGHT_NORMAL);
         cairo_set_font_size(cr, font_);
@@ -162,18 +182,9 @@ class Annotator {
 
     double font() const { return font_; }
 
-    // Lines of text in a translucent box in the top-left corner.
+    // Lines of text in the strip above the box.
     void text_block(const std::vector<std::string>& lines) const {
-        double w = 0.0;
-        for (const std::string& line : lines) {
-            cairo_text_extents_t e;
-            cairo_text_extents(cr_, line.c_str(), &e);
-            w = std::max(w, e.x_advance);
-        }
         const double pad = 0.5 * font_, step = 1.35 * font_;
-        cairo_set_source_rgba(cr_, 1.0, 1.0, 1.0, 0.82);
-        cairo_rectangle(cr_, pad, pad, w + 2 * pad, step * static_cast<double>(lines.size()) + pad);
-        cairo_fill(cr_);
         set_colour(cr_, {0.0, 0.0, 0.0});
         for (std::size_t i = 0; i < lines.size(); ++i) {
             cairo_move_to(cr_, 2 * pad, pad + step * static_cast<double>(i + 1) - 0.1 * font_);
@@ -181,12 +192,10 @@ class Annotator {
         }
     }
 
+    // In the strip below the box, on the left.
     void scale_bar(double length_mm, double pixels_per_mm) const {
         const double bar = length_mm * pixels_per_mm, pad = font_;
         const double y = height_ - pad;
-        cairo_set_source_rgba(cr_, 1.0, 1.0, 1.0, 0.82);
-        cairo_rectangle(cr_, 0.5 * pad, y - 2.2 * font_, bar + pad, 2.2 * font_ + 0.5 * pad);
-        cairo_fill(cr_);
         set_colour(cr_, {0.0, 0.0, 0.0});
         cairo_rectangle(cr_, pad, y - 0.35 * font_, bar, 0.35 * font_);
         cairo_fill(cr_);
@@ -197,17 +206,14 @@ class Annotator {
         cairo_show_text(cr_, label.c_str());
     }
 
-    // A colour ring in the bottom-right corner (`slot` 0 is rightmost): the colour of an axis
-    // at angle θ sits at θ on the ring, measured anticlockwise from +x as in the picture.
+    // A colour ring in the strip below the box, on the right (`slot` 0 is rightmost): the
+    // colour of an axis at angle θ sits at θ on the ring, measured anticlockwise from +x as in
+    // the picture.
     void wheel(int slot, const std::string& caption, Rgb (*colour)(double)) const {
-        const double radius = std::max(2.2 * font_, static_cast<double>(width_) / 28.0);
+        const double radius = wheel_radius(width_);
         const double box = 2.0 * radius + 3.2 * font_;
         const double cx = width_ - font_ - 0.5 * box - static_cast<double>(slot) * (box + font_);
         const double cy = height_ - font_ - radius - 0.6 * font_;
-        cairo_set_source_rgba(cr_, 1.0, 1.0, 1.0, 0.82);
-        cairo_rectangle(cr_, cx - 0.5 * box, cy - radius - 2.4 * font_, box,
-                        2.0 * radius + 3.0 * font_);
-        cairo_fill(cr_);
         constexpr int kSegments = 180;
         for (int k = 0; k < kSegments; ++k) {
             const double a0 = kTwoPi * k / kSegments, a1 = kTwoPi * (k + 1) / kSegments;
@@ -371,6 +377,47 @@ FrameRenderer::FrameRenderer(const RunPlan& plan, const RenderOptions& options)
             throw InvalidParameter("--flock-eps", format_number(flocks_.eps) + " mm",
                                    "(0, " + format_number(0.5 * std::min(lx, ly)) + "] mm");
     }
+    if (options.annotate) {
+        top_ = header_height(width_, static_cast<int>(annotation_lines().size()));
+        bottom_ = footer_height(width_, legend_wheels());
+        bottom_ += (top_ + bottom_) % 2;  // H.264 needs an even height
+        height_ += top_ + bottom_;
+        if (height_ > 16384)
+            throw InvalidParameter(
+                "--size", std::to_string(options.width) + " px",
+                "a width that keeps the height within 16384 px",
+                "this view and its annotations would be " + std::to_string(height_) + " px high");
+    }
+}
+
+std::vector<std::string> FrameRenderer::annotation_lines() const {
+    std::vector<std::string> lines{"t"};  // the time line, per frame
+    const double area = plan_.engine.box.lx * plan_.engine.box.ly;
+    for (std::uint32_t s = 0; s < plan_.engine.species.size(); ++s) {
+        const Species& sp = plan_.engine.species[s];
+        lines.push_back(
+            sp.name + ": " + std::to_string(plan_.counts[s]) + " " + plural_kind(sp.kind) +
+            ", φ = " +
+            fixed(static_cast<double>(plan_.counts[s]) * sp.shape.projected_area / area, 3));
+    }
+    if (options_.polar == PolarColouring::flock)
+        lines.push_back("colour: flock (DBSCAN ε = " + format_number(flocks_.eps) + " mm)");
+    if (options_.region)
+        lines.push_back("view: x " + format_number(region_.x0) + "–" + format_number(region_.x1) +
+                        " mm, y " + format_number(region_.y0) + "–" + format_number(region_.y1) +
+                        " mm");
+    return lines;
+}
+
+bool FrameRenderer::legend_wheels() const {
+    bool polar = false, rods = false;
+    for (std::size_t s = 0; s < plan_.engine.species.size(); ++s) {
+        polar = polar || (is_polar(plan_.engine.species[s]) && plan_.counts[s] > 0);
+        rods =
+            rods || (plan_.engine.species[s].kind == BodyKind::apolar_rod && plan_.counts[s] > 0);
+    }
+    return (polar && options_.polar == PolarColouring::direction) ||
+           (rods && options_.medium == MediumColouring::nematic);
 }
 
 Image FrameRenderer::render(const BodyState& bodies, const FrameLabel& label) const {
@@ -393,8 +440,13 @@ void FrameRenderer::render_into(const BodyState& bodies, const FrameLabel& label
 
     // World (mm, y up) to pixels.
     cairo_matrix_t world;
-    cairo_matrix_init(&world, scale_, 0.0, 0.0, -scale_, -region_.x0 * scale_, region_.y1 * scale_);
+    cairo_matrix_init(&world, scale_, 0.0, 0.0, -scale_, -region_.x0 * scale_,
+                      region_.y1 * scale_ + top_);
     cairo_set_matrix(cr, &world);
+    // Bodies stay inside the view: a periodic image past its edge must not spill into the
+    // annotation strips.
+    cairo_rectangle(cr, region_.x0, region_.y0, region_.x1 - region_.x0, region_.y1 - region_.y0);
+    cairo_clip(cr);
     cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
     cairo_set_tolerance(cr, 0.3);
     // Not CAIRO_ANTIALIAS_FAST: its scan converter (tor22) overflows a heap buffer on some paths
@@ -428,6 +480,7 @@ void FrameRenderer::render_into(const BodyState& bodies, const FrameLabel& label
                                                            : kPolarUniform;
     });
 
+    cairo_reset_clip(cr);
     if (options_.annotate)
         annotate(
             cr, bodies, label,
@@ -448,29 +501,27 @@ void FrameRenderer::annotate(cairo_t* cr, const BodyState& bodies, const FrameLa
                              const Legend& legend) const {
     cairo_identity_matrix(cr);
     const Annotator note(cr, width_, height_);
-    std::vector<std::string> lines;
-    lines.push_back("t = " + fixed(label.time, 4) + " s   frame " + std::to_string(label.frame) +
-                    "   step " + std::to_string(label.step));
-    const double area = plan_.engine.box.lx * plan_.engine.box.ly;
+    // The view's upper and lower edges, drawn in the strips' last and first rows.
+    set_colour(cr, {0.6, 0.6, 0.6});
+    cairo_set_line_width(cr, 1.0);
+    for (const double row : {top_ - 0.5, height_ - bottom_ + 0.5}) {
+        cairo_move_to(cr, 0.0, row);
+        cairo_line_to(cr, width_, row);
+    }
+    cairo_stroke(cr);
+    std::vector<std::string> lines = annotation_lines();
+    lines[0] = "t = " + fixed(label.time, 4) + " s   frame " + std::to_string(label.frame) +
+               "   step " + std::to_string(label.step);
     for (std::uint32_t s = 0; s < plan_.engine.species.size(); ++s) {
-        const Species& sp = plan_.engine.species[s];
-        std::string line =
-            sp.name + ": " + std::to_string(plan_.counts[s]) + " " + plural_kind(sp.kind) +
-            ", φ = " +
-            fixed(static_cast<double>(plan_.counts[s]) * sp.shape.projected_area / area, 3);
-        if (sp.kind == BodyKind::polar_rod)
-            line += ", P = " + fixed(orientational_order(bodies, s, 1), 2);
-        else if (sp.kind == BodyKind::apolar_rod)
-            line += ", S = " + fixed(orientational_order(bodies, s, 2), 2);
-        lines.push_back(line);
+        const BodyKind kind = plan_.engine.species[s].kind;
+        if (kind == BodyKind::polar_rod)
+            lines[1 + s] += ", P = " + fixed(orientational_order(bodies, s, 1), 2);
+        else if (kind == BodyKind::apolar_rod)
+            lines[1 + s] += ", S = " + fixed(orientational_order(bodies, s, 2), 2);
     }
     if (options_.polar == PolarColouring::flock)
-        lines.push_back("colour: flock (DBSCAN ε = " + format_number(flocks_.eps) + " mm), " +
-                        std::to_string(legend.flocks) + " flocks; grey: none");
-    if (options_.region)
-        lines.push_back("view: x " + format_number(region_.x0) + "–" + format_number(region_.x1) +
-                        " mm, y " + format_number(region_.y0) + "–" + format_number(region_.y1) +
-                        " mm");
+        lines[1 + plan_.engine.species.size()] +=
+            ", " + std::to_string(legend.flocks) + " flocks; grey: none";
     note.text_block(lines);
     note.scale_bar(scale_bar_length(region_.x1 - region_.x0), scale_);
     int slot = 0;

@@ -3,11 +3,13 @@
 // union of its spheres' discs, tilted bodies included), polar rods coloured by the direction of
 // their axis on a cyclic wheel (or by flock), the medium in a neutral tone (or by its nematic
 // axis), periodic images where a body crosses the box edge, and, unless switched off, the time,
-// area fractions and order parameters, a scale bar in mm and a colour legend.
+// area fractions and order parameters in a strip above the view, a scale bar in mm and the
+// colour legend in a strip below it, so that no annotation hides a body.
 //
-// Image coordinates: column = (x − x0)·s, row = (y1 − y)·s with s = width / (x1 − x0) pixels per
-// mm, so +y points up as in the paper's figures; the height is the view's aspect rounded to an
-// even number of pixels (H.264 needs even sizes).
+// Image coordinates: column = (x − x0)·s, row = top + (y1 − y)·s with s = width / (x1 − x0)
+// pixels per mm and `top` the height of the strip above (0 without annotations), so +y points
+// up as in the paper's figures; the view's height is its aspect rounded to an even number of
+// pixels, and so is the strips' (H.264 needs even sizes).
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -82,12 +84,17 @@ class FrameRenderer {
     };
     void annotate(cairo_t* cr, const BodyState& bodies, const FrameLabel& label,
                   const Legend& legend) const;
+    // The corner text's lines with what does not change between frames (the first, the time,
+    // is filled per frame), and whether colour wheels are drawn: they set the strips' height.
+    std::vector<std::string> annotation_lines() const;
+    bool legend_wheels() const;
 
     const RunPlan& plan_;
     RenderOptions options_;
     ViewRegion region_;
     int width_ = 0, height_ = 0;
-    double scale_ = 1.0;  // pixels per mm
+    int top_ = 0, bottom_ = 0;  // pixels of the annotation strips above and below the view
+    double scale_ = 1.0;        // pixels per mm
     DbscanParameters flocks_;
 };
 
