@@ -9,6 +9,7 @@
 #include "rodsea/analysis/time_correlation.hpp"
 #include "rodsea/analyze/autocorrelation_observable.hpp"
 #include "rodsea/analyze/corotating_maps_observable.hpp"
+#include "rodsea/analyze/drift_observable.hpp"
 #include "rodsea/analyze/flock_observable.hpp"
 #include "rodsea/analyze/medium_velocity_observable.hpp"
 #include "rodsea/analyze/observable_registry.hpp"
@@ -63,6 +64,34 @@ TEST(OrderParameters, IsotropicRodsHavePOfOrderOneOverSqrtN) {
         sum += static_cast<double>(n) * p * p;
     }
     EXPECT_NEAR(sum / draws, 1.0, 0.2);
+}
+
+TEST(Drift, MeanVelocitiesAndTheMediumAlongThePolarHeading) {
+    // Polar rods heading at 0.5 rad, moving (1, 2) mm/s; the medium moving (3, −1) mm/s, whose
+    // component along the heading is 3 cos 0.5 − sin 0.5. Two frames, the second with the
+    // medium's velocity reversed: its mean velocity averages to zero, and so does the drift.
+    std::vector<Body> moving, reversed;
+    SplitMix64 rng(9);
+    for (int i = 0; i < 30; ++i)
+        moving.push_back({rng.uniform(0, 40), rng.uniform(0, 40), 0.5, 0, 1.0, 2.0});
+    for (int i = 0; i < 70; ++i)
+        moving.push_back(
+            {rng.uniform(0, 40), rng.uniform(0, 40), rng.uniform(-kPi, kPi), 1, 3.0, -1.0});
+    reversed = moving;
+    for (Body& b : reversed)
+        if (b.species == 1) b.vx = -b.vx, b.vy = -b.vy;
+    const auto setup = make_setup(40.0, moving, 2);
+    DriftObservable o(setup);
+    const auto r = run_on(o, {make_frame(40.0, moving, 0), make_frame(40.0, reversed, 1)}, setup);
+    // Sums of 30 or 70 equal numbers: exact to a few ulps.
+    EXPECT_NEAR(scalar(r, "vx_polar").estimate.mean, 1.0, 1e-12);
+    EXPECT_NEAR(scalar(r, "vy_polar").estimate.mean, 2.0, 1e-12);
+    EXPECT_NEAR(scalar(r, "vx_medium").estimate.mean, 0.0, 1e-12);
+    const TableResult& t = table(r, "drift");
+    const double along = 3.0 * std::cos(0.5) - std::sin(0.5);
+    EXPECT_NEAR(t.rows[0][column(t, "v_medium_along_polar")], along, 1e-12);
+    EXPECT_NEAR(t.rows[1][column(t, "v_medium_along_polar")], -along, 1e-12);
+    EXPECT_NEAR(t.rows[0][column(t, "vy_medium")], -1.0, 1e-12);
 }
 
 TEST(PairCorrelation, UniformRandomPointsHaveGOfROne) {

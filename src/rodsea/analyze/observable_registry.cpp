@@ -4,6 +4,7 @@
 
 #include "rodsea/analyze/autocorrelation_observable.hpp"
 #include "rodsea/analyze/corotating_maps_observable.hpp"
+#include "rodsea/analyze/drift_observable.hpp"
 #include "rodsea/analyze/flock_observable.hpp"
 #include "rodsea/analyze/medium_velocity_observable.hpp"
 #include "rodsea/analyze/order_parameter_observable.hpp"
@@ -23,6 +24,7 @@ const std::vector<ObservableInfo>& observable_catalogue() {
         {"flocks", "DBSCAN flocks: N_m(t), <N_m>, histograms, labels per frame"},
         {"segregation", "Σ with its random-mixing baseline subtracted"},
         {"medium_velocity", "medium velocity around polar rods vs distance, and at d"},
+        {"drift", "mean velocity of each species; the medium's along the polar rods' heading"},
     };
     return catalogue;
 }
@@ -100,6 +102,7 @@ std::unique_ptr<Observable> make_observable(const std::string& name, const Analy
     if (name == "segregation") return std::make_unique<SegregationObservable>(setup, options);
     if (name == "medium_velocity")
         return std::make_unique<MediumVelocityObservable>(setup, options);
+    if (name == "drift") return std::make_unique<DriftObservable>(setup);
     throw InvalidParameter("observable", name, "a name from observable_catalogue()");
 }
 

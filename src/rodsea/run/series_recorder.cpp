@@ -20,6 +20,12 @@ SeriesRecorder::SeriesRecorder(const RunPlan& plan)
         columns_.push_back({"kinetic_energy_translational_" + sp.name, "mass-unit mm2 s-2/body"});
         columns_.push_back({"kinetic_energy_rotational_" + sp.name, "mass-unit mm2 s-2/body"});
     }
+    // The mean in-plane velocity of each species: the medium's drift along the polar rods'
+    // heading is the paper's mechanism, and a medium alone must show none.
+    for (const Species& sp : params.species) {
+        columns_.push_back({"mean_velocity_x_" + sp.name, "mm s-1"});
+        columns_.push_back({"mean_velocity_y_" + sp.name, "mm s-1"});
+    }
     columns_.push_back({"max_overlap_fraction", "1"});
     columns_.push_back({"unresolved_contacts", "1"});
     columns_.push_back({"max_sweeps", "1"});
@@ -53,7 +59,7 @@ std::vector<double> SeriesRecorder::row(const Simulation& sim, double steps_per_
     if (structure_.has_segregation()) values.push_back(structure_.segregation(b));
     if (structure_.has_flocks()) values.push_back(structure_.largest_flock(b));
     std::vector<double> translational(species_count_), rotational(species_count_),
-        count(species_count_);
+        count(species_count_), vx(species_count_), vy(species_count_);
     for (size_t i = 0; i < b.size(); ++i) {
         const Shape& shape = p.species[b.species[i]].shape;
         const Vec3& v = b.velocity[i];
@@ -62,11 +68,18 @@ std::vector<double> SeriesRecorder::row(const Simulation& sim, double steps_per_
         translational[b.species[i]] += 0.5 * shape.mass * (v.x * v.x + v.y * v.y + v.z * v.z);
         rotational[b.species[i]] += 0.5 * (I.x * w.x * w.x + I.y * w.y * w.y + I.z * w.z * w.z);
         count[b.species[i]] += 1.0;
+        vx[b.species[i]] += v.x;
+        vy[b.species[i]] += v.y;
     }
     for (size_t s = 0; s < species_count_; ++s) {
         const double n = std::max(count[s], 1.0);
         values.push_back(translational[s] / n);
         values.push_back(rotational[s] / n);
+    }
+    for (size_t s = 0; s < species_count_; ++s) {
+        const double n = std::max(count[s], 1.0);
+        values.push_back(vx[s] / n);
+        values.push_back(vy[s] / n);
     }
     values.push_back(max_overlap_);
     values.push_back(unresolved_);
