@@ -96,6 +96,48 @@ std::vector<double> relaxing(double tau, std::uint64_t seed) {
     return x;
 }
 
+TEST(Replicates, MeanAndErrorFromTheSpread) {
+    // Four replicates 1, 2, 3, 4 each quoting σ = 1: sd = √(5/3), error sd/2, χ² = 5 over 3 dof.
+    const ReplicateEstimate r =
+        combine_replicates(std::vector<double>{1, 2, 3, 4}, std::vector<double>{1, 1, 1, 1});
+    EXPECT_EQ(r.replicates, 4u);
+    EXPECT_DOUBLE_EQ(r.mean, 2.5);
+    EXPECT_DOUBLE_EQ(r.error, std::sqrt(5.0 / 3.0) / 2.0);
+    EXPECT_DOUBLE_EQ(r.chi2_per_dof, 5.0 / 3.0);
+    // The central 95 % of χ²/3 (scipy.stats.chi2.ppf(0.025, 3) / 3 and ppf(0.975, 3) / 3).
+    EXPECT_NEAR(r.chi2_low, 0.0719318, 1e-6);
+    EXPECT_NEAR(r.chi2_high, 3.1161345, 1e-6);
+    // A NaN value (an observable undefined in one run) is left out; a missing σ leaves χ² unknown.
+    const ReplicateEstimate partial =
+        combine_replicates(std::vector<double>{1, std::nan(""), 3}, std::vector<double>{0, 1, 1});
+    EXPECT_EQ(partial.replicates, 2u);
+    EXPECT_DOUBLE_EQ(partial.mean, 2.0);
+    EXPECT_DOUBLE_EQ(partial.error, 1.0);
+    EXPECT_TRUE(std::isnan(partial.chi2_per_dof));
+    EXPECT_TRUE(std::isnan(combine_replicates(std::vector<double>{1}, {}).error));
+}
+
+TEST(Replicates, HonestErrorsPassTheChiSquareTestAtItsNominalRate) {
+    // 2000 sets of 8 Gaussian replicates quoting their true σ: χ²/dof falls inside the central
+    // 95 % range in 95 % of the sets (binomial sd 0.5 %: 2 % is four of them); σ quoted 4× too
+    // small puts a set above it when its true χ²/7 exceeds 2.29 / 16, with probability 0.995
+    // (binomial sd 0.16 %).
+    SplitMix64 rng(41);
+    int inside = 0, caught = 0;
+    const int sets = 2000;
+    for (int s = 0; s < sets; ++s) {
+        std::vector<double> x(8);
+        for (double& v : x)
+            v = 0.3 + 0.1 * gaussian(rng);
+        const ReplicateEstimate honest = combine_replicates(x, std::vector<double>(8, 0.1));
+        inside += honest.chi2_per_dof >= honest.chi2_low && honest.chi2_per_dof <= honest.chi2_high;
+        const ReplicateEstimate small = combine_replicates(x, std::vector<double>(8, 0.025));
+        caught += small.chi2_per_dof > small.chi2_high;
+    }
+    EXPECT_NEAR(inside / double(sets), 0.95, 0.02);
+    EXPECT_GT(caught / double(sets), 0.98);
+}
+
 TEST(SteadyState, TheWindowStartsAfterTheSlowestTransient) {
     // P relaxes in 10 samples, S of the medium in 100: the window must wait for S (its own start
     // lies past t ≈ 250, where its bias falls below 0.4 noise widths), and say that S decided.

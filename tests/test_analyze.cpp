@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "child_process.hpp"
@@ -20,13 +21,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string config(bool with_polar) {
+std::string config(bool with_polar, int seed = 5) {
     std::ostringstream s;
     s << "[box]\nside = 20.0\n";
     if (with_polar) s << "[[species]]\nname = \"polar\"\nkind = \"polar_rod\"\ncount = 6\n";
     s << "[[species]]\nname = \"medium\"\nkind = \"apolar_rod\"\nlength = 2.5\n"
       << "area_fraction = 0.15\n[time]\nduration = 0.04\n[output]\ninterval = 0.002\n"
-      << "[run]\nseed = 5\n";
+      << "[run]\nseed = " << seed << "\n";
     return s.str();
 }
 
@@ -44,10 +45,18 @@ class AnalyzeCli : public ::testing::Test {
                       kExitOk)
                 << err.str();
         }
+        RunOptions replicate;
+        replicate.out_dir = scratch_->path() / "mixture-seed6";
+        replicate.quiet = true;
+        std::ostringstream out, err;
+        ASSERT_EQ(start_run(load_config_string(config(true, 6), "test"), replicate, out, err),
+                  kExitOk)
+            << err.str();
     }
     static void TearDownTestSuite() { delete scratch_; }
     static fs::path mixture() { return scratch_->path() / "mixture"; }
     static fs::path medium_only() { return scratch_->path() / "medium-only"; }
+    static fs::path mixture_seed6() { return scratch_->path() / "mixture-seed6"; }
     static ScratchDir* scratch_;
 };
 ScratchDir* AnalyzeCli::scratch_ = nullptr;
@@ -197,6 +206,63 @@ TEST_F(AnalyzeCli, SeveralRunsGiveOneRowEach) {
     EXPECT_NE(lines[1].find("P_polar_err"), std::string::npos);
     EXPECT_NE(lines[2].find("mixture"), std::string::npos);
     EXPECT_NE(lines[3].find("medium-only"), std::string::npos);
+}
+
+// The CSV's rows as maps from column name to cell (no cell of these runs holds a comma).
+std::vector<std::map<std::string, std::string>> read_table(const fs::path& path) {
+    std::ifstream in(path);
+    std::string line;
+    std::getline(in, line);  // the comment
+    const auto cells = [](const std::string& text) {
+        std::vector<std::string> out;
+        std::stringstream s(text);
+        for (std::string cell; std::getline(s, cell, ',');)
+            out.push_back(cell);
+        if (!text.empty() && text.back() == ',') out.emplace_back();
+        return out;
+    };
+    std::getline(in, line);
+    const std::vector<std::string> header = cells(line);
+    std::vector<std::map<std::string, std::string>> rows;
+    while (std::getline(in, line)) {
+        const std::vector<std::string> c = cells(line);
+        std::map<std::string, std::string> row;
+        for (std::size_t i = 0; i < header.size() && i < c.size(); ++i)
+            row[header[i]] = c[i];
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
+TEST_F(AnalyzeCli, ReplicatesGetOneRowWithTheErrorFromTheirSpread) {
+    const fs::path table = scratch_->path() / "replicates.csv";
+    const ChildResult r =
+        run_rodsea({"analyze", mixture().string(), medium_only().string(), mixture_seed6().string(),
+                    "--observables", "order", "--table", table.string()},
+                   scratch_->path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("replicates: 2 runs of one state point (seeds 5 6)"), std::string::npos)
+        << r.out;
+    const auto rows = read_table(table);
+    ASSERT_EQ(rows.size(), 4u);  // three runs, one group: the medium alone has no replicate
+    const auto& group = rows[3];
+    EXPECT_NE(group.at("run").find("replicates of"), std::string::npos);
+    EXPECT_EQ(group.at("replicates"), "2");
+    EXPECT_EQ(group.at("seed"), "5 6");
+    // Two values: the mean is their midpoint, sd/√2 is half their difference, and χ²/1 is the
+    // squared difference from the mean over each run's own error, summed.
+    const double a = std::stod(rows[0].at("P_polar")), b = std::stod(rows[2].at("P_polar"));
+    const double ea = std::stod(rows[0].at("P_polar_err")),
+                 eb = std::stod(rows[2].at("P_polar_err"));
+    EXPECT_NEAR(std::stod(group.at("P_polar")), 0.5 * (a + b), 1e-12);
+    EXPECT_NEAR(std::stod(group.at("P_polar_err")), 0.5 * std::abs(a - b), 1e-12);
+    const double d2 = 0.25 * (a - b) * (a - b);
+    EXPECT_NEAR(std::stod(group.at("P_polar_chi2")), d2 / (ea * ea) + d2 / (eb * eb),
+                1e-9 * (d2 / (ea * ea) + d2 / (eb * eb)));
+    for (const auto& row : {rows[0], rows[2]}) {
+        EXPECT_TRUE(row.at("P_polar_short") == "0" || row.at("P_polar_short") == "1");
+        EXPECT_EQ(row.at("replicates"), "");
+    }
 }
 
 struct BadCase {

@@ -97,6 +97,17 @@ TEST(RunWorkflow, DriverStateIsTheEnginesAndFramesFollowTheCadence) {
     EXPECT_EQ(t.series("polar_order_polar").size(), expected);
     EXPECT_EQ(load_config_string(read_text(options.out_dir / kConfigFile), "stored").config_toml,
               plan.config_toml);
+    // The medium's mean velocity in the last row is that of the final state (summed in body
+    // order, as here, so to the last bit).
+    double vx = 0.0, vy = 0.0, n = 0.0;
+    for (size_t i = 0; i < reference.bodies().size(); ++i) {
+        if (reference.bodies().species[i] != 1) continue;
+        vx += reference.bodies().velocity[i].x;
+        vy += reference.bodies().velocity[i].y;
+        n += 1.0;
+    }
+    EXPECT_EQ(t.series("mean_velocity_x_medium").back(), vx / n);
+    EXPECT_EQ(t.series("mean_velocity_y_medium").back(), vy / n);
 }
 
 // Ctrl-C in the middle, then --resume: the same final state, bit for bit, as a run that was

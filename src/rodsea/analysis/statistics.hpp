@@ -39,6 +39,21 @@ Estimate estimate_from_blocks(double full, std::span<const double> blocks);
 // half the series, so that at least half of the data is always kept).
 std::size_t steady_start(std::span<const double> x);
 
+// The mean of independent replicates (runs that differ only in their seed) with the error from
+// their spread, sd / √n: honest whatever the correlation times, because the runs are independent.
+// chi2_per_dof = Σ (x_i − x̄)² / σ_i² / (n − 1) sets that spread against each replicate's own
+// quoted error σ_i: about 1, within [chi2_low, chi2_high] (the central 95 % for Gaussian errors),
+// when the single-run errors are honest; far above when they are too small.
+struct ReplicateEstimate {
+    double mean = 0.0;
+    double error = 0.0;  // NaN with fewer than two finite values
+    std::size_t replicates = 0;
+    double chi2_per_dof = 0.0;  // NaN without a finite positive σ_i for every value
+    double chi2_low = 0.0, chi2_high = 0.0;
+};
+ReplicateEstimate combine_replicates(std::span<const double> values,
+                                     std::span<const double> errors);
+
 // Slope D of y = D t through the origin, least squares.
 double slope_through_origin(std::span<const double> t, std::span<const double> y);
 

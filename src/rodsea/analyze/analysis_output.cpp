@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "rodsea/analyze/analyze_run.hpp"
+#include "rodsea/config/config_file.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/analysis_h5.hpp"
 #include "rodsea/io/atomic_file.hpp"
@@ -225,60 +226,157 @@ std::vector<fs::path> write_run_analysis(const RunAnalysis& a, const fs::path& o
     return files;
 }
 
-std::string summary_table_csv(const std::vector<RunAnalysis>& runs) {
-    std::vector<std::string> columns{
-        "run",          "box_lx_mm",  "box_ly_mm",      "gamma",
-        "frequency_hz", "gap_mm",     "epsilon_per_mm", "dt_s",
-        "seed",         "duration_s", "steady_from_s",  "steady_frames"};
-    std::vector<std::map<std::string, std::string>> rows;
-    const auto add = [&](std::map<std::string, std::string>& row, const std::string& key,
-                         const std::string& value) {
-        if (std::find(columns.begin(), columns.end(), key) == columns.end()) columns.push_back(key);
+namespace {
+
+// Rows of named cells whose columns are the union, in order of first appearance.
+class SummaryTable {
+  public:
+    using Row = std::map<std::string, std::string>;
+    SummaryTable()
+        : columns_{"run",          "replicates",    "box_lx_mm",      "box_ly_mm", "gamma",
+                   "frequency_hz", "gap_mm",        "epsilon_per_mm", "dt_s",      "seed",
+                   "duration_s",   "steady_from_s", "steady_frames"} {}
+    void set(Row& row, const std::string& key, const std::string& value) {
+        if (std::find(columns_.begin(), columns_.end(), key) == columns_.end())
+            columns_.push_back(key);
         row[key] = value;
-    };
-    for (const RunAnalysis& a : runs) {
-        const EngineParameters& e = a.run.plan.engine;
-        std::map<std::string, std::string> row;
-        row["run"] = csv_quoted(a.run.run_dir.string());
-        row["box_lx_mm"] = exact_number(e.box.lx);
-        row["box_ly_mm"] = exact_number(e.box.ly);
-        row["gamma"] = exact_number(e.drive.gamma);
-        row["frequency_hz"] = exact_number(e.drive.angular_frequency / (2.0 * M_PI));
-        row["gap_mm"] = exact_number(e.drive.gap);
-        row["epsilon_per_mm"] = exact_number(e.noise_epsilon);
-        row["dt_s"] = exact_number(e.dt);
-        row["seed"] = std::to_string(e.seed);
-        row["duration_s"] = exact_number(a.run.plan.control.duration);
-        row["steady_from_s"] = exact_number(a.run.window.from);
-        row["steady_frames"] = std::to_string(a.run.setup.steady_frames);
-        for (const SpeciesInfo& s : a.run.setup.species) {
-            add(row, "phi_" + s.name, exact_number(s.area_fraction));
-            add(row, "count_" + s.name, std::to_string(s.count));
-            add(row, "length_mm_" + s.name, exact_number(s.length));
+    }
+    void add(Row row) { rows_.push_back(std::move(row)); }
+    std::string csv() const {
+        std::ostringstream out;
+        out << "# rodsea " << RODSEA_VERSION
+            << " analysis summary: one row per run, its parameters (mm, s), then each "
+               "steady-state scalar, its error bar (<name>_err) and whether the window was "
+               "shorter than 50 tau_int (<name>_short = 1: the error is an underestimate); then, "
+               "for runs that differ "
+               "only in their seed, one row per group with the mean over the replicates, the "
+               "error from their spread (<name>_err) and chi2/dof of that spread against the "
+               "runs' own errors (<name>_chi2, ~1 when those are honest); the definitions are in "
+               "each run's analysis.json\n";
+        for (std::size_t c = 0; c < columns_.size(); ++c)
+            out << (c ? "," : "") << columns_[c];
+        out << "\n";
+        for (const Row& row : rows_) {
+            for (std::size_t c = 0; c < columns_.size(); ++c) {
+                const auto it = row.find(columns_[c]);
+                out << (c ? "," : "") << (it == row.end() ? "" : it->second);
+            }
+            out << "\n";
         }
+        return out.str();
+    }
+
+  private:
+    std::vector<std::string> columns_;
+    std::vector<Row> rows_;
+};
+
+// The parameters of a run, shared by its replicates but for the seed and the window.
+SummaryTable::Row parameter_row(SummaryTable& table, const RunAnalysis& a) {
+    const EngineParameters& e = a.run.plan.engine;
+    SummaryTable::Row row;
+    table.set(row, "box_lx_mm", exact_number(e.box.lx));
+    table.set(row, "box_ly_mm", exact_number(e.box.ly));
+    table.set(row, "gamma", exact_number(e.drive.gamma));
+    table.set(row, "frequency_hz", exact_number(e.drive.angular_frequency / (2.0 * M_PI)));
+    table.set(row, "gap_mm", exact_number(e.drive.gap));
+    table.set(row, "epsilon_per_mm", exact_number(e.noise_epsilon));
+    table.set(row, "dt_s", exact_number(e.dt));
+    table.set(row, "duration_s", exact_number(a.run.plan.control.duration));
+    for (const SpeciesInfo& s : a.run.setup.species) {
+        table.set(row, "phi_" + s.name, exact_number(s.area_fraction));
+        table.set(row, "count_" + s.name, std::to_string(s.count));
+        table.set(row, "length_mm_" + s.name, exact_number(s.length));
+    }
+    return row;
+}
+
+// Groups of at least two runs whose configs differ only in the seed, in order of first run.
+std::vector<std::vector<const RunAnalysis*>> replicate_groups(
+    const std::vector<RunAnalysis>& runs) {
+    std::vector<std::string> keys;
+    std::vector<std::vector<const RunAnalysis*>> groups;
+    for (const RunAnalysis& a : runs) {
+        const std::string key = config_without_seed(a.run.plan.config_toml);
+        const auto at = std::find(keys.begin(), keys.end(), key);
+        if (at == keys.end()) {
+            keys.push_back(key);
+            groups.push_back({&a});
+        } else {
+            groups[static_cast<std::size_t>(at - keys.begin())].push_back(&a);
+        }
+    }
+    std::erase_if(groups, [](const auto& g) { return g.size() < 2; });
+    return groups;
+}
+
+}  // namespace
+
+std::vector<ReplicateSummary> replicate_summaries(const std::vector<RunAnalysis>& runs) {
+    std::vector<ReplicateSummary> summaries;
+    for (const auto& group : replicate_groups(runs)) {
+        ReplicateSummary g;
+        for (const RunAnalysis* a : group) {
+            g.runs.push_back(a->run.run_dir);
+            g.seeds.push_back(a->run.plan.engine.seed);
+        }
+        // The scalars of the first run, combined over every run that has them.
+        for (const ObservableResults& r : group.front()->results) {
+            for (const ScalarResult& s : r.scalars) {
+                std::vector<double> values, errors;
+                for (const RunAnalysis* a : group)
+                    for (const ObservableResults& ra : a->results)
+                        for (const ScalarResult& sa : ra.scalars)
+                            if (ra.observable == r.observable && sa.name == s.name) {
+                                values.push_back(sa.estimate.mean);
+                                errors.push_back(sa.estimate.error);
+                            }
+                g.scalars.push_back({s.name, s.unit, combine_replicates(values, errors)});
+            }
+        }
+        summaries.push_back(std::move(g));
+    }
+    return summaries;
+}
+
+std::string summary_table_csv(const std::vector<RunAnalysis>& runs) {
+    SummaryTable table;
+    for (const RunAnalysis& a : runs) {
+        SummaryTable::Row row = parameter_row(table, a);
+        table.set(row, "run", csv_quoted(a.run.run_dir.string()));
+        table.set(row, "seed", std::to_string(a.run.plan.engine.seed));
+        table.set(row, "steady_from_s", exact_number(a.run.window.from));
+        table.set(row, "steady_frames", std::to_string(a.run.setup.steady_frames));
         for (const ObservableResults& r : a.results)
             for (const ScalarResult& s : r.scalars) {
-                add(row, s.name, exact_number(s.estimate.mean));
-                add(row, s.name + "_err", exact_number(s.estimate.error));
+                table.set(row, s.name, exact_number(s.estimate.mean));
+                table.set(row, s.name + "_err", exact_number(s.estimate.error));
+                // 1: the window is shorter than 50 τ_int, the error an underestimate.
+                table.set(row, s.name + "_short", s.estimate.short_series() ? "1" : "0");
             }
-        rows.push_back(std::move(row));
+        table.add(std::move(row));
     }
-    std::ostringstream out;
-    out << "# rodsea " << RODSEA_VERSION
-        << " analysis summary: one row per run, its parameters (mm, s), then each steady-state "
-           "scalar and its error bar (<name>_err); the definitions are in each run's "
-           "analysis.json\n";
-    for (std::size_t c = 0; c < columns.size(); ++c)
-        out << (c ? "," : "") << columns[c];
-    out << "\n";
-    for (const auto& row : rows) {
-        for (std::size_t c = 0; c < columns.size(); ++c) {
-            const auto it = row.find(columns[c]);
-            out << (c ? "," : "") << (it == row.end() ? "" : it->second);
+    const std::vector<ReplicateSummary> summaries = replicate_summaries(runs);
+    const auto groups = replicate_groups(runs);
+    for (std::size_t k = 0; k < summaries.size(); ++k) {
+        const ReplicateSummary& g = summaries[k];
+        SummaryTable::Row row = parameter_row(table, *groups[k].front());
+        std::string seeds;
+        for (const std::uint64_t seed : g.seeds) {
+            if (!seeds.empty()) seeds += ' ';
+            seeds += std::to_string(seed);
         }
-        out << "\n";
+        table.set(row, "run", csv_quoted("replicates of " + g.runs.front().string()));
+        table.set(row, "replicates", std::to_string(g.runs.size()));
+        table.set(row, "seed", csv_quoted(seeds));
+        for (const ReplicateScalar& s : g.scalars) {
+            table.set(row, s.name, exact_number(s.estimate.mean));
+            table.set(row, s.name + "_err", exact_number(s.estimate.error));
+            table.set(row, s.name + "_chi2", exact_number(s.estimate.chi2_per_dof));
+        }
+        table.add(std::move(row));
     }
-    return out.str();
+    return table.csv();
 }
 
 }  // namespace rodsea

@@ -14,6 +14,17 @@
 
 namespace rodsea {
 
+namespace {
+
+std::string observable_names() {
+    std::string names;
+    for (const ObservableInfo& o : observable_catalogue())
+        names += (names.empty() ? "" : ", ") + o.name;
+    return names;
+}
+
+}  // namespace
+
 const CommandSpec& analyze_command_spec() {
     static const CommandSpec spec{
         "analyze",
@@ -30,11 +41,11 @@ const CommandSpec& analyze_command_spec() {
         "--table)\n"
         "Everything is checked for every run before any frame is read.",
         {{"--observables", "NAME,...",
-          "comma-separated subset of: order, pair, corotating, autocorrelation, flocks, "
-          "segregation, medium_velocity (default: all that the run's species allow)"},
+          "comma-separated subset of: " + observable_names() +
+              " (default: all that the run's species allow)"},
          {"--from", "T",
-          "start of the steady window, s; default: the earliest start that maximises the number "
-          "of independent samples of the run's P (Chodera's rule)"},
+          "start of the steady window, s; default: the latest of the steady starts of the run's "
+          "order series (P, S, Σ, N_m; each by Chodera's rule), which it names"},
          {"--param", "KEY=VALUE",
           "an analysis parameter, e.g. flocks.eps=2.25 (the keys below); may be repeated", true},
          {"--out", "DIR", "output directory for a single run (default RUN_DIR/analysis)"},
@@ -63,6 +74,30 @@ std::vector<std::string> split_commas(const std::string& text) {
     }
     if (!part.empty()) parts.push_back(part);
     return parts;
+}
+
+// Per group of replicates: each scalar from the spread of the runs, and whether the runs' own
+// error bars were honest about it.
+void report_replicates(const std::vector<ReplicateSummary>& groups, std::ostream& log) {
+    for (const ReplicateSummary& g : groups) {
+        log << "replicates: " << g.runs.size() << " runs of one state point (seeds";
+        for (const std::uint64_t seed : g.seeds)
+            log << " " << seed;
+        log << "), mean ± spread / sqrt(n):\n";
+        for (const ReplicateScalar& s : g.scalars) {
+            const ReplicateEstimate& e = s.estimate;
+            log << "    " << s.name << " = " << format_number(e.mean) << " ± "
+                << format_number(e.error) << (s.unit.empty() ? "" : " ") << s.unit;
+            if (std::isfinite(e.chi2_per_dof))
+                log << "  (the runs' own errors: chi2/dof = " << format_number(e.chi2_per_dof)
+                    << (e.chi2_per_dof > e.chi2_high
+                            ? ", too small: use the replicates' error"
+                            : (e.chi2_per_dof < e.chi2_low ? ", too large" : ", honest"))
+                    << "; 95 % range " << format_number(e.chi2_low) << "–"
+                    << format_number(e.chi2_high) << ")";
+            log << "\n";
+        }
+    }
 }
 
 }  // namespace
@@ -126,7 +161,8 @@ int analyze_command(const std::vector<std::string>& args, std::ostream& out, std
                     log << "    " << s.name << " = " << format_number(s.estimate.mean) << " ± "
                         << format_number(s.estimate.error) << (s.unit.empty() ? "" : " ") << s.unit
                         << (s.estimate.short_series()
-                                ? "  (window < 50 τ_int: the error bar is an underestimate)"
+                                ? "  (window < 50 τ_int: the error bar is an underestimate; run "
+                                  "longer, or give several seeds for an error from replicates)"
                                 : "")
                         << "\n";
                 for (const std::string& n : r.notes)
@@ -135,6 +171,7 @@ int analyze_command(const std::vector<std::string>& args, std::ostream& out, std
         }
         analyses.push_back(std::move(a));
     }
+    if (!quiet) report_replicates(replicate_summaries(analyses), log);
     if (table_path) {
         write_file_atomically(*table_path, summary_table_csv(analyses));
         if (!quiet) log << "table: " << table_path->string() << "\n";

@@ -62,7 +62,22 @@ void check_analysis_output_directory(const std::filesystem::path& out_dir);
 std::vector<std::filesystem::path> write_run_analysis(const RunAnalysis& analysis,
                                                       const std::filesystem::path& out_dir);
 
-// One CSV row per run: its parameters, then every scalar and its error bar.
+// Runs that differ only in their seed are replicates of one state point: each scalar's mean over
+// them with the error from their spread, and chi²/dof of that spread against the runs' own
+// errors (statistics.hpp combine_replicates).
+struct ReplicateScalar {
+    std::string name, unit;
+    ReplicateEstimate estimate;
+};
+struct ReplicateSummary {
+    std::vector<std::filesystem::path> runs;
+    std::vector<std::uint64_t> seeds;
+    std::vector<ReplicateScalar> scalars;
+};
+std::vector<ReplicateSummary> replicate_summaries(const std::vector<RunAnalysis>& runs);
+
+// One CSV row per run: its parameters, then every scalar and its error bar; then one row per
+// group of replicates (the mean, the error from their spread, chi²/dof).
 std::string summary_table_csv(const std::vector<RunAnalysis>& runs);
 
 }  // namespace rodsea

@@ -59,6 +59,15 @@ RunPlan with_run_length(std::string_view toml, std::string_view source_name,
     return plan;
 }
 
+std::string config_without_seed(std::string_view toml) {
+    config::ConfigValues values = config::read_toml(toml, "stored config");
+    std::vector<config::TableValues>& run = values.all("run");
+    if (run.empty()) run.push_back({"run", 0, {}});
+    run.front().entries["seed"] = {std::int64_t{0}, 0};
+    config::resolve(values, {});
+    return config::write_toml(values);
+}
+
 std::string default_config_toml() {
     // The resolved empty config is every key at its default, commented.
     return load_config_string("", "defaults").config_toml;
