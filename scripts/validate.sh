@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # The validate tier: every measurement behind docs/validation.md and docs/model.md's choice of
-# gap and time step, regenerated from scratch. Not part of CI: about 45 minutes on 2 cores.
+# gap and time step, and of the error bars and the drift control, regenerated from scratch. Not part
+# of CI: about 75 minutes on 2 cores.
 #
 #   scripts/validate.sh [OUT [PART...]]     (default OUT: out/validate; PART: all of
-#                                            gap dt dt-fine epsilon apolar-rod bead mixture)
+#                                            gap dt dt-fine epsilon apolar-rod bead mixture
+#                                            replicates medium-drift)
 #
 # Parts already in OUT are kept, so a tier can be completed part by part; the report uses
 # whatever parts OUT holds.
@@ -17,7 +19,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 out=${1:-$root/out/validate}
 shift || true
 parts=("$@")
-all_parts=(gap dt dt-fine epsilon apolar-rod bead mixture)
+all_parts=(gap dt dt-fine epsilon apolar-rod bead mixture replicates medium-drift)
 [[ ${#parts[@]} -gt 0 ]] || parts=("${all_parts[@]}")
 for part in "${parts[@]}"; do
     if [[ " ${all_parts[*]} " != *" $part "* ]]; then
@@ -39,8 +41,38 @@ mkdir -p "$out"
 started=$SECONDS
 stamp() { printf '[validate %4d s] %s\n' $((SECONDS - started)) "$*"; }
 
-# The dense mixture at dt, dt/2 and dt/4 of the default (1.25 µs), several seeds each: independent
+# Runs the (config, output directory) pairs of a NUL-separated jobs file: independent
 # single-threaded runs, $threads at a time.
+run_jobs() {
+    xargs -0 -n 2 -P "$threads" sh -c '"$0" run "$1" --out "$2" --overwrite --quiet' "$rodsea" \
+        <"$1"
+    rm -f "$1"
+}
+
+# One config of validate/ run for each seed for `duration` s, then analysed (automatic window).
+#   run_seeds PART DURATION OBSERVABLES SEED...
+run_seeds() {
+    local part=$1 duration=$2 observables=$3
+    shift 3
+    mkdir -p "$out/$part"
+    local jobs_file=$out/$part/jobs
+    : >"$jobs_file"
+    for seed in "$@"; do
+        local config=$out/$part/seed$seed.toml
+        {
+            cat "$root/validate/$part.toml"
+            printf '\n[time]\nduration = %s  # s\n\n[run]\nseed = %s\n' "$duration" "$seed"
+        } >"$config"
+        printf '%s\0%s\0' "$config" "$out/$part/seed$seed" >>"$jobs_file"
+    done
+    stamp "$part: $# seeds of ${duration} s, $threads at a time"
+    run_jobs "$jobs_file"
+    for seed in "$@"; do
+        "$rodsea" analyze "$out/$part/seed$seed" --observables "$observables" --quiet
+    done
+}
+
+# The dense mixture at dt, dt/2 and dt/4 of the default (1.25 µs), several seeds each.
 run_mixture() {
     mixture_dts=(1.25e-6 6.25e-7 3.125e-7)
     mixture_seeds=(1 2 3 4 5 6 7 8)
@@ -61,14 +93,18 @@ run_mixture() {
         done
     done
     stamp "mixture: ${#mixture_dts[@]} time steps × ${#mixture_seeds[@]} seeds, $threads at a time"
-    xargs -0 -n 2 -P "$threads" sh -c '"$0" run "$1" --out "$2" --overwrite --quiet' "$rodsea" \
-        <"$jobs_file"
-    rm -f "$jobs_file"
+    run_jobs "$jobs_file"
 }
 
 for part in "${parts[@]}"; do
     if [[ $part == mixture ]]; then
         run_mixture
+    elif [[ $part == replicates ]]; then
+        # 8 seeds of 20 s (400 frames each): ~25 core-minutes.
+        run_seeds replicates 20 order,flocks,drift 1 2 3 4 5 6 7 8
+    elif [[ $part == medium-drift ]]; then
+        # 2 seeds of 20 s (2000 frames each): ~10 core-minutes.
+        run_seeds medium-drift 20 order,drift 1 2
     else
         # Single bodies: one `rodsea calibrate`, each point's copies spread over the threads.
         stamp "calibrate validate/$part.toml"

@@ -3,11 +3,13 @@
 
     /usr/bin/python3 scripts/validation_report.py OUT
 
-reads OUT/{gap,dt,epsilon,apolar-rod,bead}/calibration.csv and OUT/mixture/*/ (rodsea runs) and
-writes OUT/validation.md and OUT/validation-*.png. docs/validation.md quotes them.
+reads OUT/{gap,dt,epsilon,apolar-rod,bead}/calibration.csv, OUT/mixture/*/ (rodsea runs) and
+OUT/{replicates,medium-drift}/seed*/analysis/analysis.json (rodsea runs, analysed) and writes
+OUT/validation.md and OUT/validation-*.png. docs/validation.md quotes them.
 """
 import csv
 import glob
+import json
 import math
 import os
 import re
@@ -20,6 +22,7 @@ import matplotlib.ticker
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from scipy import stats as scipy_stats  # noqa: E402
 
 # MODEL.md §3 and §7: the paper's D_r values and the experiment's single-rod speed.
 PAPER_DR = [0.026, 0.23, 1.21, 1.87]  # rad²/s
@@ -298,6 +301,109 @@ def mixture_section(mixture_dir, out):
     return md
 
 
+def analysed_seeds(part_dir):
+    """(seed, analysis.json) of every analysed run of a validate part, by seed."""
+    runs = []
+    for path in glob.glob(os.path.join(part_dir, "seed*", "analysis", "analysis.json")):
+        seed = int(re.search(r"seed(\d+)", path).group(1))
+        with open(path) as f:
+            runs.append((seed, json.load(f)))
+    return sorted(runs)
+
+
+def scalar_of(analysis, observable, name):
+    """The scalar's JSON entry (value, error, tau_int_samples, n_eff, ...), None if absent."""
+    return analysis["observables"].get(observable, {}).get("scalars", {}).get(name)
+
+
+def replicate_consistency(values, errors):
+    """The replicates' spread against their quoted errors: the standard deviation of the values,
+    the rms quoted error, and chi² = Σ (x − x̄)² / σ² over its n − 1 degrees of freedom with the
+    central 95 % range of that ratio for honest (Gaussian) errors."""
+    x, e = np.asarray(values, float), np.asarray(errors, float)
+    n = len(x)
+    chi2 = float(np.sum((x - x.mean()) ** 2 / e ** 2)) / (n - 1)
+    low, high = (scipy_stats.chi2.ppf(q, n - 1) / (n - 1) for q in (0.025, 0.975))
+    return {"n": n, "mean": x.mean(), "sd": x.std(ddof=1), "rms_error": float(np.sqrt(np.mean(e ** 2))),
+            "chi2": chi2, "low": low, "high": high}
+
+
+def replicates_section(part_dir, out):
+    runs = analysed_seeds(part_dir)
+    if len(runs) < 2:
+        return []
+    md = ["## Error bars against replicates", "",
+          f"{len(runs)} seeds of the dilute point of `validate/replicates.toml` (45 polar rods at "
+          "φ_p = 0.05 among apolar rods of ℓ_a = 2.5 mm at φ_a = 0.05, 60 mm box, D_r = 0), each "
+          f"{runs[0][1]['run']['last_time_s']:g} s, analysed by `rodsea analyze` with its automatic "
+          "window. Each seed quotes a steady mean ± error; honest errors make the spread of the "
+          "seeds' means match them: χ²/dof = Σ (x − x̄)² / σ² / (n − 1) lies in the given 95 % range.",
+          "",
+          "| seed | window from (s) | decided by | P polar | τ_int (frames) | n_eff | short | "
+          "S medium | N_m | medium along p̂ (mm/s) |",
+          "|---|---|---|---|---|---|---|---|---|---|"]
+    columns = {"P_polar": ("order", "P_polar"), "S_medium": ("order", "S_medium"),
+               "N_m": ("flocks", "N_m"), "v_along": ("drift", "v_medium_along_polar")}
+    values = {k: [] for k in columns}
+    for seed, a in runs:
+        entries = {k: scalar_of(a, *where) for k, where in columns.items()}
+        for k, e in entries.items():
+            if e and e.get("value") is not None and e.get("error"):
+                values[k].append((e["value"], e["error"]))
+        p = entries["P_polar"]
+        cell = lambda e: sig(e["value"], e["error"]) if e and e.get("error") else "–"  # noqa: E731
+        md.append(f"| {seed} | {a['steady_state']['from_s']:g} | "
+                  f"{a['steady_state'].get('decided_by', '')} | {cell(p)} | "
+                  f"{p['tau_int_samples']:.1f} | {p['n_eff']:.1f} | "
+                  f"{'yes' if p.get('short_series') else 'no'} | {cell(entries['S_medium'])} | "
+                  f"{cell(entries['N_m'])} | {cell(entries['v_along'])} |")
+    md += ["", "| quantity | mean of seeds | sd of the seeds | rms quoted error | sd / error | "
+           "χ²/dof | 95 % range |", "|---|---|---|---|---|---|---|"]
+    fig, axes = plt.subplots(1, len(columns), figsize=(4 * len(columns), 3.6))
+    for ax, (k, pairs) in zip(axes, values.items()):
+        if len(pairs) < 2:
+            continue
+        c = replicate_consistency(*zip(*pairs))
+        md.append(f"| {k} | {c['mean']:.4g} | {c['sd']:.3g} | {c['rms_error']:.3g} | "
+                  f"{c['sd'] / c['rms_error']:.2f} | {c['chi2']:.2f} | {c['low']:.2f}–{c['high']:.2f} |")
+        seeds = range(1, len(pairs) + 1)
+        ax.errorbar(seeds, [v for v, _ in pairs], [e for _, e in pairs], fmt="o", capsize=3)
+        ax.axhspan(c["mean"] - c["sd"], c["mean"] + c["sd"], color="tab:grey", alpha=0.3,
+                   label="mean ± sd of the seeds")
+        ax.set_xlabel("seed")
+        ax.set_title(k, fontsize=10)
+        ax.legend(fontsize=7)
+    save(fig, out, "validation-replicates.png")
+    return md
+
+
+def medium_drift_section(part_dir, replicates_dir):
+    runs = analysed_seeds(part_dir)
+    if not runs:
+        return []
+    md = ["## The medium alone does not drift", "",
+          f"Apolar rods of ℓ_a = 2.5 mm at φ_a = 0.50 alone in a 30 mm box "
+          f"(`validate/medium-drift.toml`), {len(runs)} seeds of "
+          f"{runs[0][1]['run']['last_time_s']:g} s: the steady mean of the medium's mean in-plane "
+          "velocity (`rodsea analyze`, observable `drift`) with its τ_int error. |v| / error below "
+          "2 is no drift.", "",
+          "| seed | frames | v_x (mm/s) | \|v_x\| / error | v_y (mm/s) | \|v_y\| / error |",
+          "|---|---|---|---|---|---|"]
+    for seed, a in runs:
+        vx, vy = scalar_of(a, "drift", "vx_medium"), scalar_of(a, "drift", "vy_medium")
+        md.append(f"| {seed} | {vx['samples']} | {sig(vx['value'], vx['error'])} | "
+                  f"{abs(vx['value']) / vx['error']:.1f} | {sig(vy['value'], vy['error'])} | "
+                  f"{abs(vy['value']) / vy['error']:.1f} |")
+    along = [scalar_of(a, "drift", "v_medium_along_polar") for _, a in analysed_seeds(replicates_dir)]
+    along = [e for e in along if e and e.get("error")]
+    if along:
+        mean, err = mean_and_error([e["value"] for e in along])
+        md += ["", f"With polar rods (the replicate runs above), the medium's mean velocity along the "
+               f"polar rods' mean heading is {sig(mean, err)} mm/s over {len(along)} seeds "
+               f"({abs(mean) / err:.1f} standard errors from zero)."]
+    return md
+
+
 def log_dt_axis(ax, dts_us):
     """A log dt axis ticked at the measured steps, with the default marked."""
     ax.set_xscale("log")
@@ -337,7 +443,9 @@ def main():
              if table(part)]
     if drift:
         md += drift_section(drift) + [""]
-    md += mixture_section(os.path.join(out, "mixture"), out)
+    md += mixture_section(os.path.join(out, "mixture"), out) + [""]
+    md += replicates_section(os.path.join(out, "replicates"), out) + [""]
+    md += medium_drift_section(os.path.join(out, "medium-drift"), os.path.join(out, "replicates"))
     path = os.path.join(out, "validation.md")
     with open(path + ".tmp", "w") as f:
         f.write("\n".join(md) + "\n")
