@@ -42,30 +42,47 @@ RunPlan load_config_string(std::string_view toml, std::string_view source_name,
     return plan;
 }
 
-RunPlan with_run_length(std::string_view toml, std::string_view source_name,
-                        std::optional<double> duration, std::optional<long long> steady_samples) {
+namespace {
+
+// The stored config `toml` with one table's entries edited, resolved and validated again.
+RunPlan replanned(std::string_view toml, std::string_view source_name, std::string_view table,
+                  const std::function<void(config::TableValues&)>& edit) {
     config::ConfigValues values = config::read_toml(toml, source_name);
-    std::vector<config::TableValues>& time = values.all("time");
-    if (time.empty()) time.push_back({"time", 0, {}});
-    if (duration) {
-        time.front().entries.erase("periods");
-        time.front().entries["duration"] = {*duration, 0};
-    }
-    if (steady_samples)
-        time.front().entries["steady_samples"] = {static_cast<std::int64_t>(*steady_samples), 0};
+    std::vector<config::TableValues>& t = values.all(table);
+    if (t.empty()) t.push_back({std::string(table), 0, {}});
+    edit(t.front());
     RunPlan plan = config::resolve(values, {});
     plan.config_toml = config::write_toml(values);
     plan.choices = config::list_choices(values, plan);
     return plan;
 }
 
+}  // namespace
+
+RunPlan with_run_length(std::string_view toml, std::string_view source_name,
+                        std::optional<double> duration, std::optional<long long> steady_samples) {
+    return replanned(toml, source_name, "time", [&](config::TableValues& time) {
+        if (duration) {
+            time.entries.erase("periods");
+            time.entries["duration"] = {*duration, 0};
+        }
+        if (steady_samples)
+            time.entries["steady_samples"] = {static_cast<std::int64_t>(*steady_samples), 0};
+    });
+}
+
+RunPlan with_threads(std::string_view toml, std::string_view source_name, int threads) {
+    return replanned(toml, source_name, "run", [&](config::TableValues& run) {
+        run.entries["threads"] = {std::int64_t{threads}, 0};
+    });
+}
+
 std::string config_without_seed(std::string_view toml) {
-    config::ConfigValues values = config::read_toml(toml, "stored config");
-    std::vector<config::TableValues>& run = values.all("run");
-    if (run.empty()) run.push_back({"run", 0, {}});
-    run.front().entries["seed"] = {std::int64_t{0}, 0};
-    config::resolve(values, {});
-    return config::write_toml(values);
+    return replanned(toml, "stored config", "run",
+                     [](config::TableValues& run) {
+                         run.entries["seed"] = {std::int64_t{0}, 0};
+                     })
+        .config_toml;
 }
 
 std::string default_config_toml() {

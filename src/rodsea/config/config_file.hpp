@@ -51,6 +51,9 @@ RunPlan load_config_string(std::string_view toml, std::string_view source_name,
 RunPlan with_run_length(std::string_view toml, std::string_view source_name,
                         std::optional<double> duration, std::optional<long long> steady_samples);
 
+// The config `toml` run on `threads` threads (run.threads; InvalidParameter outside its range).
+RunPlan with_threads(std::string_view toml, std::string_view source_name, int threads);
+
 // The resolved config `toml` with run.seed set to 0: equal for two runs exactly when their
 // configs differ at most in the seed (replicates of one state point).
 std::string config_without_seed(std::string_view toml);

@@ -18,7 +18,8 @@ namespace rodsea {
 const CommandSpec& run_command_spec() {
     static const CommandSpec spec{
         "run",
-        "CONFIG [--out DIR] [--overwrite] [--quiet]  |  rodsea run --resume DIR [--duration T] "
+        "CONFIG [--out DIR] [--overwrite] [--threads N] [--quiet]  |  rodsea run --resume DIR "
+        "[--duration T] "
         "[--steady-samples N] [--quiet]",
         "start a simulation, or continue one from its checkpoint",
         "Reads CONFIG (TOML; every key in docs/config.md), checks all of it and the packing, "
@@ -37,6 +38,9 @@ const CommandSpec& run_command_spec() {
         "steady) likewise, 0 to run to the duration.",
         {{"--out", "DIR", "output directory; refused if it exists and is not empty"},
          {"--overwrite", "", "replace the run files in an existing DIR"},
+         {"--threads", "N",
+          "run on N threads, replacing run.threads (the stored config says N; a resumed run "
+          "keeps the threads it started with)"},
          {"--resume", "DIR", "continue the run in DIR from its checkpoint.h5"},
          {"--duration", "T", "with --resume: the run's new duration, s (at least the time done)"},
          {"--steady-samples", "N",
@@ -83,6 +87,9 @@ int run_command(const std::vector<std::string>& words, std::ostream& out, std::o
     RunOptions options;
     options.quiet = a.has("--quiet");
     options.overwrite = a.has("--overwrite");
+    if (const auto n = a.value("--threads"); n && a.value("--resume"))
+        throw InvalidParameter("--threads", *n, "only for a new run",
+                               "a resumed run keeps its threads, so that it continues bit for bit");
     if (const auto dir = a.value("--resume")) {
         if (!a.positional.empty() || a.value("--out") || options.overwrite)
             throw InvalidParameter("--resume", *dir,
@@ -99,8 +106,11 @@ int run_command(const std::vector<std::string>& words, std::ostream& out, std::o
         if (a.value(flag))
             throw InvalidParameter(flag, *a.value(flag), "only with --resume DIR",
                                    "a new run takes its length from CONFIG ([time])");
-    const RunPlan plan = config_named_by(a, run_command_spec());
+    RunPlan plan = config_named_by(a, run_command_spec());
     const std::filesystem::path config = a.positional[0];
+    if (const auto n = a.value("--threads"))
+        plan = with_threads(plan.config_toml, config.string(),
+                            static_cast<int>(parse_count("--threads", *n, 1, 1024)));
     options.out_dir =
         a.value("--out").value_or((std::filesystem::path("out") / config.stem()).string());
     return start_run(plan, options, out, err, stdout_is_terminal());

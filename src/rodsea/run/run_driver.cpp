@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <ostream>
@@ -19,6 +20,7 @@
 #include "rodsea/io/trajectory_file.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
 #include "rodsea/run/plan_report.hpp"
+#include "rodsea/run/progress_file.hpp"
 #include "rodsea/run/run_lock.hpp"
 #include "rodsea/run/series_recorder.hpp"
 #include "rodsea/run/steady_stop.hpp"
@@ -96,6 +98,25 @@ class Session {
         last_checkpoint_ = Clock::now();
     }
 
+    // progress.txt is for people and monitors: a failure to write it never stops the run (a
+    // full disk shows up at the next frame, which handles it).
+    void write_progress(const char* state, double steps_per_second) {
+        RunProgress p;
+        p.state = state;
+        p.step = sim_.step_count();
+        p.total_steps = plan_.total_steps();
+        p.time = sim_.time();
+        p.duration = plan_.control.duration;
+        p.steps_per_second = steps_per_second;
+        p.wall_seconds = wall_before_ + seconds_since(started_);
+        p.updated = unix_time_now();
+        try {
+            write_progress_file(dir_, p);
+        } catch (const FileError&) {
+        }
+        last_progress_ = Clock::now();
+    }
+
     // Steps to the end, or until a signal or a write failure. Returns an ExitCode.
     int run(std::ostream& out, std::ostream& err, ProgressStyle style) {
         const std::uint64_t total = plan_.total_steps();
@@ -103,6 +124,8 @@ class Session {
         const double checkpoint_seconds = plan_.control.checkpoint_interval * 60.0;
         ProgressReporter progress(out, style, sim_.step_count(), total, plan_.engine.dt);
         last_checkpoint_ = Clock::now();
+        rate_ = [&progress] { return progress.steps_per_second(); };
+        write_progress("running", 0.0);
         if (const int signal = stop_signal_received(); signal != 0)  // during the build
             return stop_on_signal(signal, out, err);
         while (sim_.step_count() < total) {
@@ -128,6 +151,8 @@ class Session {
                 progress.finish(step, last_polar_order_);
                 return stop_on_signal(signal, out, err);
             }
+            if ((step & 63u) == 0 && seconds_since(last_progress_) >= kProgressSeconds)
+                write_progress("running", progress.steps_per_second());
             if ((step & 63u) == 0 && seconds_since(last_checkpoint_) >= checkpoint_seconds) {
                 try {
                     checkpoint(false);
@@ -152,6 +177,7 @@ class Session {
             // Closed first: a run is marked complete only with its trajectory whole.
             trajectory_.close();
             checkpoint(true);
+            write_progress(verdict ? "steady" : "done", rate_());
         } catch (const FileError& e) {
             err << "rodsea: the run reached its end but its files could not be closed: " << e.what()
                 << "\n  the last checkpoint is intact; continue with: rodsea run "
@@ -179,6 +205,7 @@ class Session {
         try {
             checkpoint(false);
             trajectory_.close();
+            write_progress("stopped", rate_());
             err << "rodsea: " << what << " at step " << sim_.step_count() << " (t = " << sim_.time()
                 << " s); checkpoint written.\n  continue with: rodsea run --resume "
                 << dir_.string() << "\n";
@@ -197,6 +224,7 @@ class Session {
     int stop_after_write_failure(const FileError& e, std::ostream& out, std::ostream& err) {
         // HDF5 cannot be trusted to close a file whose writes failed: it is left as it is.
         trajectory_.abandon();
+        write_progress("stopped", rate_());
         err << "rodsea: cannot write output at step " << sim_.step_count()
             << " (t = " << sim_.time() << " s): " << e.what() << "\n";
         try {
@@ -244,6 +272,9 @@ class Session {
     std::optional<std::vector<double>> open_interval_at_end_;  // before the off-grid last row
     Clock::time_point started_ = Clock::now();
     Clock::time_point last_checkpoint_ = Clock::now();
+    Clock::time_point last_progress_ = Clock::now();
+    static constexpr double kProgressSeconds = 2.0;      // wall time between progress.txt updates
+    std::function<double()> rate_ = [] { return 0.0; };  // this session's steps/s
 };
 
 // Frames a run has written once it has done `step` steps: frame 0, one per output interval,
@@ -277,7 +308,8 @@ void prepare_output_directory(const std::filesystem::path& dir, bool overwrite) 
 // --overwrite removes only the files a run writes; anything else in the directory stays.
 void remove_run_files(const std::filesystem::path& dir) {
     std::error_code ec;
-    for (const char* name : {kConfigFile, kTrajectoryFile, kSeriesFile, kCheckpointFile})
+    for (const char* name :
+         {kConfigFile, kTrajectoryFile, kSeriesFile, kCheckpointFile, kProgressFile})
         std::filesystem::remove(dir / name, ec);
 }
 
