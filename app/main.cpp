@@ -10,6 +10,7 @@
 
 #include "rodsea/analyze/analyze_command.hpp"
 #include "rodsea/calibration/calibrate_command.hpp"
+#include "rodsea/campaign/campaign_command.hpp"
 #include "rodsea/cli/arguments.hpp"
 #include "rodsea/cli/exit_codes.hpp"
 #include "rodsea/config/config_command.hpp"
@@ -50,6 +51,7 @@ const std::vector<Command>& commands() {
         {rodsea::analyze_command_spec, analyze},
         {rodsea::meanfield_command_spec, meanfield},
         {rodsea::calibrate_command_spec, rodsea::calibrate_command},
+        {rodsea::campaign_command_spec, rodsea::campaign_command},
         {rodsea::render_command_spec, rodsea::render_command},
         {rodsea::movie_command_spec, rodsea::movie_command},
         {rodsea::plot_command_spec, rodsea::plot_command},

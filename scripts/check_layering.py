@@ -27,6 +27,7 @@ LAYERS = [
     ["calibration", "analyze", "meanfield"],
     ["run"],
     ["view"],
+    ["campaign"],
 ]
 LAYER = {module: level for level, modules in enumerate(LAYERS) for module in modules}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"rodsea/([^"]+)"', re.MULTILINE)

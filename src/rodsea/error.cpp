@@ -16,6 +16,10 @@ InvalidParameter::InvalidParameter(const std::string& name, const std::string& v
                             (why.empty() ? "" : " (" + why + ")")),
       name_(name) {}
 
+InvalidParameter InvalidParameter::in_context(const std::string& context) const {
+    return {Message{}, name_, std::string(what()) + " [" + context + "]"};
+}
+
 std::string format_number(double value) {
     std::ostringstream s;
     s.precision(6);

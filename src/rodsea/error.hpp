@@ -13,8 +13,13 @@ class InvalidParameter : public std::invalid_argument {
     InvalidParameter(const std::string& name, const std::string& value, const std::string& allowed,
                      const std::string& why = "");
     const std::string& name() const { return name_; }
+    // The same error, saying where it arose: "... (campaign point phi=0.8)".
+    InvalidParameter in_context(const std::string& context) const;
 
   private:
+    struct Message {};
+    InvalidParameter(Message, const std::string& name, const std::string& message)
+        : std::invalid_argument(message), name_(name) {}
     std::string name_;
 };
 

@@ -25,7 +25,8 @@ std::string seconds(double s) {
     return format_number(s) + " s";
 }
 
-// The paper's main system (MODEL.md §2): what a config without [[species]] simulates.
+}  // namespace
+
 std::vector<TableValues> default_species() {
     TableValues polar, medium;
     polar.path = "species[0]";
@@ -39,6 +40,8 @@ std::vector<TableValues> default_species() {
                       {"area_fraction", {0.50, 0}}};
     return {polar, medium};
 }
+
+namespace {
 
 // Keys whose default is fixed (not kind-dependent) and whose alternative was not given.
 void fill_defaults(TableValues& t, std::string_view table) {

@@ -1,0 +1,26 @@
+#pragma once
+// `rodsea campaign collect`: every finished run analysed with the campaign's [analysis], then one
+// table with a row per point (replicates combined) and one with a row per run. A partial
+// campaign collects what is finished and names what is missing.
+#include <filesystem>
+#include <iosfwd>
+#include <vector>
+
+#include "rodsea/campaign/campaign_store.hpp"
+
+namespace rodsea {
+
+struct CollectResult {
+    std::filesystem::path points_table, runs_table;
+    std::size_t runs_analysed = 0, points_with_runs = 0;
+    std::vector<std::string> missing;  // run ids not finished
+};
+
+// Writes collected/points.csv and collected/runs.csv (atomically). Each point's scalar is the
+// mean over its finished replicates; its error is the larger of the replicates' spread, sd/√n,
+// and their own errors combined, √(Σσ_i²)/n: with few replicates the spread is itself uncertain
+// (for n = 2 by ±70 %), and a run's own error is a floor. <name>_chi2 compares the two.
+CollectResult collect_campaign(const CampaignPaths& paths, const Campaign& campaign,
+                               const CampaignGrid& grid, std::ostream& log, bool quiet);
+
+}  // namespace rodsea

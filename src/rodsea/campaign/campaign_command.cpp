@@ -1,0 +1,191 @@
+#include "rodsea/campaign/campaign_command.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+
+#include "rodsea/calibration/calibration_table.hpp"
+#include "rodsea/campaign/campaign_collect.hpp"
+#include "rodsea/campaign/campaign_cost.hpp"
+#include "rodsea/campaign/local_executor.hpp"
+#include "rodsea/cli/exit_codes.hpp"
+#include "rodsea/cli/progress.hpp"
+#include "rodsea/config/did_you_mean.hpp"
+#include "rodsea/error.hpp"
+#include "rodsea/number_text.hpp"
+
+namespace rodsea {
+
+namespace fs = std::filesystem;
+
+const CommandSpec& campaign_command_spec() {
+    static const CommandSpec spec{
+        "campaign",
+        "plan|run|status|collect CAMPAIGN [--out DIR] [--scale F] [--duration T] [--jobs N] "
+        "[--threads T]",
+        "a figure's grid of runs: plan its cost, run it, follow it, collect its table",
+        "CAMPAIGN is a TOML file (docs/campaigns.md: a base config, axes over config keys, "
+        "replicates, the analysis): every point is built and checked, packing included, before "
+        "anything runs.\n"
+        "  plan     the points, their bodies, spheres and steps, and the cost in core-hours, "
+        "measured on this machine (each point stepped for --measure-seconds in a small box)\n"
+        "  run      runs every run not yet done, --jobs at a time on --threads each, in DIR "
+        "(default out/<campaign name>); run it again to continue: done runs are skipped, "
+        "interrupted ones resume from their checkpoints, failed ones are retried once; Ctrl-C "
+        "stops every run with a checkpoint\n"
+        "  status   each run: pending, running, interrupted, done or failed, its progress and "
+        "ETA (readable while a runner works)\n"
+        "  collect  analyses every finished run ([analysis] of the campaign) and writes "
+        "DIR/collected/points.csv (a row per point, replicates combined) and runs.csv; names "
+        "what is missing",
+        {{"--out", "DIR", "the campaign's directory (default out/<campaign name>)"},
+         {"--scale", "F",
+          "box side times F, in (0, 1], area fractions kept (counts given as counts times F^2): "
+          "run a figure small first; fixed for a campaign directory"},
+         {"--duration", "T", "every run's time.duration, s; fixed for a campaign directory"},
+         {"--jobs", "N", "run: runs at a time (default 1)"},
+         {"--threads", "T", "run: threads per run (default 1); plan: for the wall-time estimate"},
+         {"--retry-failed", "", "run: give runs that failed twice two more tries"},
+         {"--measure-seconds", "S",
+          "plan: seconds of stepping per point to measure its cost "
+          "(default 0.3)"},
+         {"--no-measure", "", "plan: skip the measurement (no core-hours)"},
+         {"--reference", "", "print the campaign file's key reference (Markdown) and exit"},
+         {"--quiet", "", "run, collect: no progress lines"}},
+        "Files: DIR/campaign.toml, scaling.txt, runs/<point>/seed<k>.toml (config), "
+        "runs/<point>/seed<k>/ (the run), .log, .failed, collected/. Exit codes: 0 done; 1 some "
+        "run failed; 2 bad campaign or options (nothing run); 74 file error; 130/143 stopped by "
+        "SIGINT/SIGTERM (every run checkpointed)."};
+    return spec;
+}
+
+namespace {
+
+struct Loaded {
+    Campaign campaign;
+    CampaignScaling scaling;
+    CampaignGrid grid;
+    CampaignPaths paths;
+};
+
+Loaded load(const Arguments& a) {
+    if (a.positional.size() != 2)
+        throw InvalidParameter("CAMPAIGN", std::to_string(a.positional.size() - 1) + " given",
+                               "one campaign file after the subcommand (rodsea campaign --help)");
+    Loaded l;
+    l.campaign = load_campaign_file(a.positional[1]);
+    if (const auto f = a.value("--scale")) l.scaling.scale = parse_number("--scale", *f, 1e-3, 1.0);
+    if (const auto t = a.value("--duration"))
+        l.scaling.duration = parse_number("--duration", *t, 1e-6, 1e6, "s");
+    l.grid = expand_campaign(l.campaign, l.scaling, calibration_table_lookup());
+    l.paths.dir = a.value("--out").value_or(default_campaign_dir(l.campaign).string());
+    return l;
+}
+
+int plan(const Arguments& a, std::ostream& out) {
+    const Loaded l = load(a);
+    const int jobs =
+        static_cast<int>(parse_count("--jobs", a.value("--jobs").value_or("1"), 1, 4096));
+    const int threads =
+        static_cast<int>(parse_count("--threads", a.value("--threads").value_or("1"), 1, 1024));
+    const double seconds =
+        a.has("--no-measure")
+            ? 0.0
+            : parse_number("--measure-seconds", a.value("--measure-seconds").value_or("0.3"), 0.01,
+                           60.0, "s");
+    const std::vector<PointCost> costs =
+        estimate_campaign_cost(l.campaign, l.grid, l.scaling, calibration_table_lookup(), seconds);
+    describe_campaign(l.campaign, l.grid, l.scaling, costs, jobs, threads, out);
+    out << "  directory " << l.paths.dir.string() << "\n";
+    return kExitOk;
+}
+
+int run(const Arguments& a, std::ostream& out) {
+    const Loaded l = load(a);
+    LocalExecutorOptions o;
+    o.jobs = static_cast<int>(parse_count("--jobs", a.value("--jobs").value_or("1"), 1, 4096));
+    o.threads =
+        static_cast<int>(parse_count("--threads", a.value("--threads").value_or("1"), 1, 1024));
+    o.retry_failed = a.has("--retry-failed");
+    o.quiet = a.has("--quiet");
+    std::vector<RunPlan> plans;
+    for (const CampaignRun& r : l.grid.runs)
+        plans.push_back(run_plan(l.campaign, l.grid, r, l.scaling, calibration_table_lookup()));
+    prepare_campaign_dir(l.paths, l.campaign, l.scaling, l.grid, plans);
+    return run_campaign_locally(l.paths, l.grid, o, out);
+}
+
+int status(const Arguments& a, std::ostream& out) {
+    const Loaded l = load(a);
+    check_campaign_dir(l.paths, l.scaling);
+    std::size_t counts[5] = {};
+    char line[512];
+    std::snprintf(line, sizeof line, "%-48s %-11s %7s %18s %10s %9s\n", "run", "state", "done",
+                  "t / duration (s)", "steps/s", "ETA");
+    out << line;
+    for (const CampaignRun& r : l.grid.runs) {
+        const RunStatus s = run_status(l.paths, r);
+        ++counts[static_cast<int>(s.state)];
+        std::string done = "-", time = "-", rate = "-", eta = "-";
+        if (s.progress) {
+            const RunProgress& p = *s.progress;
+            done = format_number(std::floor(p.fraction() * 1000) / 10) + " %";
+            time = format_number(p.time) + " / " + format_number(p.duration);
+            if (s.state == RunState::running) {
+                rate = format_number(std::round(p.steps_per_second));
+                if (p.eta_seconds() >= 0) eta = format_duration(p.eta_seconds());
+            }
+        }
+        const std::string id = r.id.size() > 48 ? r.id.substr(0, 45) + "..." : r.id;
+        std::snprintf(line, sizeof line, "%-48s %-11s %7s %18s %10s %9s\n", id.c_str(),
+                      to_string(s.state), done.c_str(), time.c_str(), rate.c_str(), eta.c_str());
+        out << line;
+        if (s.state == RunState::failed)
+            out << "    failed " << s.failures << " times: " << s.last_failure << "\n";
+    }
+    out << "\n" << l.grid.runs.size() << " runs: ";
+    for (int k = 0; k < 5; ++k)
+        out << (k ? ", " : "") << counts[k] << " " << to_string(static_cast<RunState>(k));
+    out << "\n";
+    return kExitOk;
+}
+
+int collect(const Arguments& a, std::ostream& out) {
+    const Loaded l = load(a);
+    check_campaign_dir(l.paths, l.scaling);
+    const CollectResult r = collect_campaign(l.paths, l.campaign, l.grid, out, a.has("--quiet"));
+    out << "collect: " << r.runs_analysed << " runs of " << r.points_with_runs << " points -> "
+        << r.points_table.string() << ", " << r.runs_table.string() << "\n";
+    if (!r.missing.empty()) {
+        out << "collect: " << r.missing.size() << " runs not finished (rodsea campaign run "
+            << "continues them):";
+        for (const std::string& id : r.missing)
+            out << " " << id;
+        out << "\n";
+    }
+    return kExitOk;
+}
+
+}  // namespace
+
+int campaign_command(const std::vector<std::string>& args, std::ostream& out, std::ostream&) {
+    const std::optional<Arguments> parsed = arguments_or_help(args, campaign_command_spec(), out);
+    if (!parsed) return kExitOk;
+    const Arguments& a = *parsed;
+    if (a.has("--reference")) {
+        out << campaign_reference_markdown();
+        return kExitOk;
+    }
+    const std::vector<std::string> subcommands{"plan", "run", "status", "collect"};
+    const std::string sub = a.positional.empty() ? "" : a.positional[0];
+    if (sub == "plan") return plan(a, out);
+    if (sub == "run") return run(a, out);
+    if (sub == "status") return status(a, out);
+    if (sub == "collect") return collect(a, out);
+    const auto guess = config::closest_match(sub, subcommands);
+    throw InvalidParameter("SUBCOMMAND", sub.empty() ? "none" : quoted(sub),
+                           "plan, run, status or collect",
+                           guess ? "did you mean '" + *guess + "'?" : "rodsea campaign --help");
+}
+
+}  // namespace rodsea

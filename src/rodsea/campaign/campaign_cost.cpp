@@ -1,0 +1,126 @@
+#include "rodsea/campaign/campaign_cost.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+
+#include "rodsea/builder/initial_state.hpp"
+#include "rodsea/cli/progress.hpp"
+#include "rodsea/engine/simulation.hpp"
+#include "rodsea/error.hpp"
+#include "rodsea/number_text.hpp"
+#include "rodsea/run/plan_report.hpp"
+
+namespace rodsea {
+
+namespace {
+
+// Big enough for cells and neighbour lists to behave as in a large box, small enough to build
+// and step in a fraction of a second at the densest packings.
+constexpr double kMeasureBox = 40.0;  // mm
+
+double measure_rate(const RunPlan& plan, double seconds, std::uint64_t spheres) {
+    using Clock = std::chrono::steady_clock;
+    BodyState bodies =
+        build_initial_state(plan.engine, plan.counts, plan.builder, plan.engine.seed);
+    Simulation sim(plan.engine, std::move(bodies), {.threads = 1});
+    sim.run(20);  // the first steps fill the neighbour lists
+    const auto start = Clock::now();
+    std::uint64_t steps = 0;
+    double elapsed = 0.0;
+    while (elapsed < seconds) {
+        sim.run(10);
+        steps += 10;
+        elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    }
+    return static_cast<double>(spheres) * static_cast<double>(steps) / elapsed;
+}
+
+}  // namespace
+
+std::vector<PointCost> estimate_campaign_cost(const Campaign& campaign, const CampaignGrid& grid,
+                                              const CampaignScaling& scaling,
+                                              const EpsilonLookup& epsilon,
+                                              double seconds_per_point) {
+    std::vector<PointCost> costs;
+    for (const CampaignPoint& p : grid.points) {
+        PointCost c;
+        const ResourceEstimate e = estimate_resources(p.plan);
+        c.bodies = e.bodies;
+        c.spheres = e.spheres;
+        c.steps = p.plan.total_steps();
+        c.sphere_steps = static_cast<double>(c.spheres) * static_cast<double>(c.steps);
+        c.core_hours = std::numeric_limits<double>::quiet_NaN();
+        if (seconds_per_point > 0.0) {
+            CampaignScaling small = scaling;
+            const double side = p.plan.engine.box.lx;
+            small.scale = scaling.scale * std::min(1.0, kMeasureBox / side);
+            const RunPlan probe =
+                small.scale == scaling.scale
+                    ? p.plan
+                    : config_with_settings(campaign.base_toml, campaign.base_source, p.settings,
+                                           "campaign point " + p.name, small, epsilon);
+            c.measured_box = probe.engine.box.lx;
+            c.measured_rate =
+                measure_rate(probe, seconds_per_point, estimate_resources(probe).spheres);
+            c.core_hours = c.sphere_steps * campaign.replicates / c.measured_rate / 3600.0;
+        }
+        costs.push_back(c);
+    }
+    return costs;
+}
+
+void describe_campaign(const Campaign& campaign, const CampaignGrid& grid,
+                       const CampaignScaling& scaling, const std::vector<PointCost>& costs,
+                       int jobs, int threads, std::ostream& out) {
+    out << "campaign " << campaign.name;
+    if (!campaign.description.empty()) out << ": " << campaign.description;
+    out << "\n  " << grid.points.size() << " point" << (grid.points.size() == 1 ? "" : "s") << " x "
+        << campaign.replicates << " replicate" << (campaign.replicates == 1 ? "" : "s")
+        << " (seeds " << campaign.first_seed << "-"
+        << campaign.first_seed + static_cast<std::uint64_t>(campaign.replicates) - 1
+        << ") = " << grid.runs.size() << " runs; base " << campaign.base_source;
+    if (scaling.scale != 1.0) out << "; --scale " << exact_number(scaling.scale);
+    if (scaling.duration) out << "; --duration " << exact_number(*scaling.duration) << " s";
+    out << "\n\n";
+    char line[512];
+    std::snprintf(line, sizeof line, "  %-40s %8s %9s %10s %9s %11s %12s %10s\n", "point", "box mm",
+                  "bodies", "spheres", "dur. s", "steps", "Msph-steps/s", "core-h");
+    out << line;
+    double total_sphere_steps = 0.0, total_core_hours = 0.0;
+    bool all_measured = true;
+    for (std::size_t i = 0; i < grid.points.size(); ++i) {
+        const CampaignPoint& p = grid.points[i];
+        const PointCost& c = costs[i];
+        total_sphere_steps += c.sphere_steps * campaign.replicates;
+        all_measured = all_measured && std::isfinite(c.core_hours);
+        if (std::isfinite(c.core_hours)) total_core_hours += c.core_hours;
+        const std::string name = p.name.size() > 40 ? p.name.substr(0, 37) + "..." : p.name;
+        std::snprintf(line, sizeof line, "  %-40s %8.1f %9llu %10llu %9g %11llu %12s %10s\n",
+                      name.c_str(), p.plan.engine.box.lx, static_cast<unsigned long long>(c.bodies),
+                      static_cast<unsigned long long>(c.spheres), p.plan.control.duration,
+                      static_cast<unsigned long long>(c.steps),
+                      c.measured_rate > 0 ? format_number(c.measured_rate / 1e6).c_str() : "-",
+                      std::isfinite(c.core_hours) ? format_number(c.core_hours).c_str() : "-");
+        out << line;
+    }
+    out << "\n  total " << format_number(total_sphere_steps) << " sphere-steps";
+    if (all_measured && !costs.empty()) {
+        out << ", about " << format_number(total_core_hours)
+            << " core-hours on this machine (throughput measured on one thread in a box of at "
+               "most "
+            << format_number(kMeasureBox)
+            << " mm at each point's area fractions, from its initial state)";
+        const double wall_hours = total_core_hours / (std::max(1, jobs) * std::max(1, threads));
+        out << "\n  with --jobs " << jobs << " --threads " << threads << ": about "
+            << format_duration(wall_hours * 3600.0)
+            << " of wall time if threads scale perfectly (they do not: see docs/performance.md)";
+    } else {
+        out << " (cost not measured: --no-measure)";
+    }
+    out << "\n  GPU-hours: no GPU backend yet (issue 17)\n";
+}
+
+}  // namespace rodsea

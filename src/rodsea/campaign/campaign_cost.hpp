@@ -1,0 +1,32 @@
+#pragma once
+// What a campaign will cost, measured rather than assumed: each point's system is built in a
+// small box at the same area fractions and stepped for a fraction of a second on one thread,
+// giving this machine's sphere-steps per second at that density; the point's runs then cost
+// spheres × steps / that rate.
+#include <iosfwd>
+#include <vector>
+
+#include "rodsea/campaign/campaign_points.hpp"
+
+namespace rodsea {
+
+struct PointCost {
+    std::uint64_t bodies = 0, spheres = 0, steps = 0;
+    double sphere_steps = 0.0;   // per run
+    double measured_rate = 0.0;  // sphere-steps/s on one thread; 0 when not measured
+    double core_hours = 0.0;     // all replicates; NaN when not measured
+    double measured_box = 0.0;   // mm, side of the box it was measured in
+};
+
+// `seconds_per_point` of stepping per point (after a short warm-up); 0 measures nothing.
+std::vector<PointCost> estimate_campaign_cost(const Campaign& campaign, const CampaignGrid& grid,
+                                              const CampaignScaling& scaling,
+                                              const EpsilonLookup& epsilon,
+                                              double seconds_per_point);
+
+// The plan: every point with its counts, spheres, steps and cost, and the totals.
+void describe_campaign(const Campaign& campaign, const CampaignGrid& grid,
+                       const CampaignScaling& scaling, const std::vector<PointCost>& costs,
+                       int jobs, int threads, std::ostream& out);
+
+}  // namespace rodsea

@@ -1,0 +1,108 @@
+#include "rodsea/campaign/campaign_points.hpp"
+
+#include <algorithm>
+
+#include "rodsea/builder/initial_state.hpp"
+#include "rodsea/error.hpp"
+#include "rodsea/run/steady_stop.hpp"
+
+namespace rodsea {
+
+std::string short_key(const std::string& key) {
+    if (key.rfind("species.", 0) == 0) return key.substr(8);
+    const std::size_t dot = key.find('.');
+    return dot == std::string::npos ? key : key.substr(dot + 1);
+}
+
+namespace {
+
+std::string point_name(const std::vector<KeySetting>& coordinates) {
+    if (coordinates.empty()) return "base";
+    std::string name;
+    for (const KeySetting& c : coordinates) {
+        if (!name.empty()) name += ',';
+        name += short_key(c.first) + "=" + setting_text(c.second);
+    }
+    // Values are numbers or option words, but a directory name must not hold a separator.
+    std::replace(name.begin(), name.end(), '/', '_');
+    return name;
+}
+
+// Equal as values of a key: 1 and 1.0 are the same coordinate.
+bool same_value(const config::Value& a, const config::Value& b) {
+    const auto number = [](const config::Value& v, double& x) {
+        if (const auto* d = std::get_if<double>(&v)) return x = *d, true;
+        if (const auto* i = std::get_if<std::int64_t>(&v)) return x = static_cast<double>(*i), true;
+        return false;
+    };
+    double x = 0.0, y = 0.0;
+    if (number(a, x) && number(b, y)) return x == y;
+    return a == b;
+}
+
+}  // namespace
+
+CampaignGrid expand_campaign(const Campaign& c, const CampaignScaling& scaling,
+                             const EpsilonLookup& epsilon) {
+    CampaignGrid grid;
+    std::vector<std::size_t> index(c.axes.size(), 0);
+    while (true) {
+        CampaignPoint p;
+        for (std::size_t a = 0; a < c.axes.size(); ++a)
+            for (std::size_t k = 0; k < c.axes[a].keys.size(); ++k)
+                p.coordinates.emplace_back(c.axes[a].keys[k], c.axes[a].values[index[a]][k]);
+        p.name = point_name(p.coordinates);
+        for (const CampaignPoint& q : grid.points)
+            if (q.name == p.name)
+                throw InvalidParameter("axis", p.name, "each point once",
+                                       "two values of an axis are the same number");
+        p.settings = p.coordinates;
+        for (const CampaignOverride& o : c.overrides) {
+            const bool applies =
+                std::all_of(o.when.begin(), o.when.end(), [&](const KeySetting& w) {
+                    return std::any_of(
+                        p.coordinates.begin(), p.coordinates.end(), [&](const KeySetting& x) {
+                            return x.first == w.first && same_value(x.second, w.second);
+                        });
+                });
+            if (applies) p.settings.insert(p.settings.end(), o.set.begin(), o.set.end());
+        }
+        std::vector<KeySetting> seeded = p.settings;
+        seeded.emplace_back("run.seed", static_cast<std::int64_t>(c.first_seed));
+        const std::string what = "campaign point " + p.name;
+        p.plan = config_with_settings(c.base_toml, c.base_source, seeded, what, scaling, epsilon);
+        try {
+            check_steady_series(p.plan);
+        } catch (const InvalidParameter& e) {
+            throw e.in_context(what);
+        }
+        const PackingCheck packing = check_packing(p.plan.engine, p.plan.counts);
+        if (!packing.ok)
+            throw InvalidParameter("species", "the counts of " + what, "a packing that fits",
+                                   packing.message);
+        grid.points.push_back(std::move(p));
+        // The next index of the product, the last axis fastest.
+        std::size_t a = c.axes.size();
+        while (a > 0 && ++index[a - 1] == c.axes[a - 1].values.size())
+            index[--a] = 0;
+        if (a == 0) break;
+    }
+    for (std::size_t i = 0; i < grid.points.size(); ++i)
+        for (int r = 0; r < c.replicates; ++r) {
+            const std::uint64_t seed = c.first_seed + static_cast<std::uint64_t>(r);
+            grid.runs.push_back({i, seed, grid.points[i].name + "/seed" + std::to_string(seed)});
+        }
+    return grid;
+}
+
+RunPlan run_plan(const Campaign& c, const CampaignGrid& grid, const CampaignRun& run,
+                 const CampaignScaling& scaling, const EpsilonLookup& epsilon) {
+    const CampaignPoint& p = grid.points[run.point];
+    if (run.seed == c.first_seed) return p.plan;
+    std::vector<KeySetting> seeded = p.settings;
+    seeded.emplace_back("run.seed", static_cast<std::int64_t>(run.seed));
+    return config_with_settings(c.base_toml, c.base_source, seeded, "campaign run " + run.id,
+                                scaling, epsilon);
+}
+
+}  // namespace rodsea

@@ -1,0 +1,46 @@
+#pragma once
+// A campaign's state points and runs: the product of its axes, each point the base config with
+// the point's coordinates and overrides applied and validated, each run a point at one seed.
+// Everything is checked here, packing included, before any run starts.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "rodsea/config/campaign_file.hpp"
+#include "rodsea/config/run_plan.hpp"
+
+namespace rodsea {
+
+struct CampaignPoint {
+    // Its directory name, from its coordinates: "medium.area_fraction=0.35", or "base" for a
+    // campaign without axes. Stable when values are added to an axis.
+    std::string name;
+    std::vector<KeySetting> coordinates;  // each axis key with its value here, in axis order
+    std::vector<KeySetting> settings;     // coordinates, then the overrides that apply
+    RunPlan plan;                         // at the first replicate's seed
+};
+
+struct CampaignRun {
+    std::size_t point = 0;
+    std::uint64_t seed = 0;
+    std::string id;  // "<point name>/seed<seed>"
+};
+
+struct CampaignGrid {
+    std::vector<CampaignPoint> points;
+    std::vector<CampaignRun> runs;  // point by point, replicates together
+};
+
+// Throws InvalidParameter naming the point and key (or the packing that cannot be built).
+CampaignGrid expand_campaign(const Campaign& campaign, const CampaignScaling& scaling,
+                             const EpsilonLookup& epsilon);
+
+// The config of one run: its point's plan at its seed.
+RunPlan run_plan(const Campaign& campaign, const CampaignGrid& grid, const CampaignRun& run,
+                 const CampaignScaling& scaling, const EpsilonLookup& epsilon);
+
+// "medium.area_fraction" for species.medium.area_fraction, "rotational_diffusion" for
+// noise.rotational_diffusion: the column and directory names of an axis key.
+std::string short_key(const std::string& key);
+
+}  // namespace rodsea

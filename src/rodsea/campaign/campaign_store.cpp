@@ -1,0 +1,184 @@
+#include "rodsea/campaign/campaign_store.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "rodsea/error.hpp"
+#include "rodsea/io/atomic_file.hpp"
+#include "rodsea/number_text.hpp"
+#include "rodsea/run/run_driver.hpp"
+
+namespace rodsea {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::optional<std::string> read_text(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return std::nullopt;
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::string scaling_text(const CampaignScaling& s) {
+    return "# the --scale and --duration of this campaign's runs\nscale = " +
+           exact_number(s.scale) +
+           "\nduration = " + (s.duration ? exact_number(*s.duration) : std::string("none")) + "\n";
+}
+
+void check_scaling(const CampaignPaths& paths, const CampaignScaling& scaling) {
+    const auto stored = read_text(paths.dir / "scaling.txt");
+    if (!stored) return;
+    if (*stored != scaling_text(scaling)) {
+        std::string given = "--scale " + exact_number(scaling.scale);
+        if (scaling.duration) given += " --duration " + exact_number(*scaling.duration);
+        std::string said;
+        std::istringstream lines(*stored);
+        for (std::string line; std::getline(lines, line);)
+            if (!line.empty() && line[0] != '#') said += (said.empty() ? "" : ", ") + line;
+        throw InvalidParameter(
+            "--scale/--duration", given,
+            "what the campaign in " + paths.dir.string() + " was started with (" + said + ")",
+            "give the same options, or another --out");
+    }
+}
+
+}  // namespace
+
+fs::path default_campaign_dir(const Campaign& campaign) {
+    return fs::path("out") / campaign.name;
+}
+
+void check_campaign_dir(const CampaignPaths& paths, const CampaignScaling& scaling) {
+    std::error_code ec;
+    if (!fs::is_directory(paths.dir, ec) || !fs::exists(paths.dir / "campaign.toml", ec))
+        throw FileError(paths.dir.string(),
+                        "no campaign here yet (rodsea campaign run starts it; --out names another "
+                        "directory)");
+    check_scaling(paths, scaling);
+}
+
+void prepare_campaign_dir(const CampaignPaths& paths, const Campaign& campaign,
+                          const CampaignScaling& scaling, const CampaignGrid& grid,
+                          const std::vector<RunPlan>& plans) {
+    std::error_code ec;
+    if (fs::exists(paths.dir, ec) && !fs::is_directory(paths.dir, ec))
+        throw FileError(paths.dir.string(), "is a file, not a campaign directory");
+    const bool fresh = !fs::exists(paths.dir / "campaign.toml", ec);
+    if (fresh && fs::exists(paths.dir, ec) && !fs::is_empty(paths.dir, ec))
+        throw FileError(paths.dir.string(),
+                        "exists, is not empty and holds no campaign: give another --out");
+    check_scaling(paths, scaling);
+    // Every existing config is compared before anything is written.
+    for (std::size_t i = 0; i < grid.runs.size(); ++i) {
+        const auto stored = read_text(paths.config(grid.runs[i]));
+        if (stored && *stored != plans[i].config_toml)
+            throw InvalidParameter(
+                "campaign", grid.runs[i].id,
+                "the config it was started with (" + paths.config(grid.runs[i]).string() + ")",
+                "the campaign file or its base changed this point; run the changed campaign "
+                "with another --out, or remove that point's files");
+    }
+    fs::create_directories(paths.dir / "runs", ec);
+    if (ec) throw FileError(paths.dir.string(), "cannot be created: " + ec.message());
+    if (!campaign.file.empty()) {
+        if (const auto text = read_text(campaign.file))
+            write_file_atomically(paths.dir / "campaign.toml", *text);
+    }
+    if (!fs::exists(paths.dir / "campaign.toml", ec))
+        write_file_atomically(paths.dir / "campaign.toml", "# (given as a string)\n");
+    write_file_atomically(paths.dir / "scaling.txt", scaling_text(scaling));
+    for (std::size_t i = 0; i < grid.runs.size(); ++i) {
+        const fs::path config = paths.config(grid.runs[i]);
+        if (fs::exists(config, ec)) continue;
+        fs::create_directories(config.parent_path(), ec);
+        if (ec)
+            throw FileError(config.parent_path().string(), "cannot be created: " + ec.message());
+        write_file_atomically(config, plans[i].config_toml);
+    }
+}
+
+const char* to_string(RunState state) {
+    switch (state) {
+        case RunState::pending:
+            return "pending";
+        case RunState::running:
+            return "running";
+        case RunState::interrupted:
+            return "interrupted";
+        case RunState::done:
+            return "done";
+        case RunState::failed:
+            return "failed";
+    }
+    return "?";
+}
+
+RunStatus run_status(const CampaignPaths& paths, const CampaignRun& run, int max_failures) {
+    RunStatus s;
+    const fs::path dir = paths.run_dir(run);
+    s.progress = read_progress_file(dir);
+    if (const auto failed = read_text(paths.failures(run))) {
+        std::istringstream lines(*failed);
+        for (std::string line; std::getline(lines, line);) {
+            if (line.rfind("--- exit", 0) == 0)
+                ++s.failures;
+            else if (!line.empty())
+                s.last_failure = line;
+        }
+    }
+    std::error_code ec;
+    const bool has_checkpoint = fs::exists(dir / kCheckpointFile, ec);
+    const bool finished =
+        s.progress && (s.progress->state == "done" || s.progress->state == "steady");
+    const int fd = ::open(paths.lock(run).c_str(), O_RDONLY | O_CLOEXEC);
+    bool locked = false;
+    if (fd >= 0) {
+        struct flock probe {};
+        probe.l_type = F_WRLCK;
+        probe.l_whence = SEEK_SET;
+        locked = ::fcntl(fd, F_OFD_GETLK, &probe) == 0 && probe.l_type != F_UNLCK;
+        ::close(fd);
+    }
+    if (finished && has_checkpoint)
+        s.state = RunState::done;
+    else if (locked)
+        s.state = RunState::running;
+    else if (s.failures >= max_failures)
+        s.state = RunState::failed;
+    else if (has_checkpoint)
+        s.state = RunState::interrupted;
+    return s;
+}
+
+RunClaim::RunClaim(const CampaignPaths& paths, const CampaignRun& run) {
+    const int fd = ::open(paths.lock(run).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0) throw FileError(paths.lock(run).string(), "cannot be created");
+    struct flock lock {};
+    lock.l_type = F_WRLCK;
+    lock.l_whence = SEEK_SET;
+    if (::fcntl(fd, F_OFD_SETLK, &lock) != 0) {
+        ::close(fd);
+        return;
+    }
+    fd_ = fd;
+}
+
+RunClaim::~RunClaim() {
+    if (fd_ >= 0) ::close(fd_);  // closing releases the lock
+}
+
+void record_failure(const CampaignPaths& paths, const CampaignRun& run, int exit_code,
+                    const std::string& message) {
+    std::ofstream out(paths.failures(run), std::ios::app);
+    out << "--- exit " << exit_code << " at " << exact_number(unix_time_now()) << "\n"
+        << message << (message.empty() || message.back() == '\n' ? "" : "\n");
+    if (!out) throw FileError(paths.failures(run).string(), "cannot be written");
+}
+
+}  // namespace rodsea

@@ -1,0 +1,84 @@
+#pragma once
+// A campaign's directory, the one place its runners, `status` and `collect` meet:
+//
+//   campaign.toml             the campaign file as given, and
+//   scaling.txt               the --scale and --duration it is run at (a later command must agree)
+//   runs/<point>/seed<k>.toml the run's config (resolved); compared on every later command
+//   runs/<point>/seed<k>/     the run directory (`rodsea run`'s files, progress.txt)
+//   runs/<point>/seed<k>.lock held (fcntl) by the runner running it, on any host of a cluster
+//   runs/<point>/seed<k>.log  the run's output, every session appended
+//   runs/<point>/seed<k>.failed  how it failed, once per failure
+//   collected/                what `collect` writes
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rodsea/campaign/campaign_points.hpp"
+#include "rodsea/run/progress_file.hpp"
+
+namespace rodsea {
+
+struct CampaignPaths {
+    std::filesystem::path dir;
+    std::filesystem::path config(const CampaignRun& r) const {
+        return dir / "runs" / (r.id + ".toml");
+    }
+    std::filesystem::path run_dir(const CampaignRun& r) const { return dir / "runs" / r.id; }
+    std::filesystem::path lock(const CampaignRun& r) const {
+        return dir / "runs" / (r.id + ".lock");
+    }
+    std::filesystem::path failures(const CampaignRun& r) const {
+        return dir / "runs" / (r.id + ".failed");
+    }
+    std::filesystem::path collected() const { return dir / "collected"; }
+};
+
+// The default directory of a campaign: out/<campaign name>.
+std::filesystem::path default_campaign_dir(const Campaign& campaign);
+
+// Makes `dir` this campaign's directory, or checks that it already is: the same scaling, and for
+// every run already written the same config. A changed point is refused by name (nothing is
+// written); new points (values added to an axis) are added. Throws InvalidParameter/FileError.
+void prepare_campaign_dir(const CampaignPaths& paths, const Campaign& campaign,
+                          const CampaignScaling& scaling, const CampaignGrid& grid,
+                          const std::vector<RunPlan>& plans);
+
+// Checks, without writing, that `dir` holds this campaign at this scaling (status, collect).
+void check_campaign_dir(const CampaignPaths& paths, const CampaignScaling& scaling);
+
+enum class RunState { pending, running, interrupted, done, failed };
+const char* to_string(RunState state);
+
+struct RunStatus {
+    RunState state = RunState::pending;
+    std::optional<RunProgress> progress;
+    int failures = 0;
+    std::string last_failure;  // the last line of the last failure's message
+};
+
+// A run's state from its files: done once its progress says done or steady (written after its
+// final checkpoint), running while a runner holds its lock, failed after `max_failures`.
+RunStatus run_status(const CampaignPaths& paths, const CampaignRun& run, int max_failures = 2);
+
+// An fcntl lock (open-file-description lock, so that no other open of the file in this process
+// drops it) on the run's lock file, held while this object lives; `held()` is false when another
+// runner has it. fcntl locks work across the hosts of a cluster's NFS or Lustre file system.
+class RunClaim {
+  public:
+    RunClaim(const CampaignPaths& paths, const CampaignRun& run);
+    ~RunClaim();
+    RunClaim(RunClaim&& other) noexcept : fd_(other.fd_) { other.fd_ = -1; }
+    RunClaim(const RunClaim&) = delete;
+    RunClaim& operator=(const RunClaim&) = delete;
+    bool held() const { return fd_ >= 0; }
+
+  private:
+    int fd_ = -1;
+};
+
+// Appends a failure record (exit code and the message's last lines).
+void record_failure(const CampaignPaths& paths, const CampaignRun& run, int exit_code,
+                    const std::string& message);
+
+}  // namespace rodsea

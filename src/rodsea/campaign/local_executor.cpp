@@ -1,0 +1,215 @@
+#include "rodsea/campaign/local_executor.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <deque>
+#include <fstream>
+#include <map>
+#include <ostream>
+#include <sstream>
+#include <thread>
+#include <vector>
+
+#include "rodsea/cli/exit_codes.hpp"
+#include "rodsea/cli/progress.hpp"
+#include "rodsea/cli/stop_signal.hpp"
+#include "rodsea/error.hpp"
+#include "rodsea/run/run_driver.hpp"
+
+namespace rodsea {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct ActiveRun {
+    std::size_t run = 0;
+    RunClaim claim;
+    Clock::time_point started;
+    std::streamoff log_start = 0;  // where this session's output begins in the log
+};
+
+fs::path log_path(const CampaignPaths& paths, const CampaignRun& run) {
+    return paths.dir / "runs" / (run.id + ".log");
+}
+
+// The words of the `rodsea run` that continues `run` from what its directory holds.
+std::vector<std::string> run_words(const CampaignPaths& paths, const CampaignRun& run,
+                                   const LocalExecutorOptions& o, std::string& what) {
+    const fs::path dir = paths.run_dir(run);
+    std::error_code ec;
+    if (fs::exists(dir / kCheckpointFile, ec)) {
+        what = "resume";
+        return {"run", "--resume", dir.string(), "--quiet"};
+    }
+    // Killed before its first checkpoint (or never started): from the start.
+    what = fs::exists(dir, ec) ? "restart (no checkpoint yet)" : "start";
+    return {"run",       paths.config(run).string(), "--out",  dir.string(), "--overwrite",
+            "--threads", std::to_string(o.threads),  "--quiet"};
+}
+
+pid_t spawn(const fs::path& executable, const std::vector<std::string>& words,
+            const fs::path& log) {
+    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+    if (fd < 0) throw FileError(log.string(), "cannot be opened for the run's output");
+    std::vector<std::string> storage{executable.string()};
+    storage.insert(storage.end(), words.begin(), words.end());
+    std::vector<char*> argv;
+    for (std::string& w : storage)
+        argv.push_back(w.data());
+    argv.push_back(nullptr);
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        ::dup2(fd, STDOUT_FILENO);
+        ::dup2(fd, STDERR_FILENO);
+        ::execv(argv[0], argv.data());
+        ::_exit(127);
+    }
+    ::close(fd);
+    if (pid < 0) throw FileError(executable.string(), "cannot be started (fork failed)");
+    return pid;
+}
+
+std::string log_since(const fs::path& log, std::streamoff from) {
+    std::ifstream in(log, std::ios::binary);
+    in.seekg(from);
+    std::ostringstream s;
+    s << in.rdbuf();
+    std::string text = s.str();
+    // The last lines say what went wrong; the whole log stays on disk.
+    constexpr std::size_t kTail = 2000;
+    return text.size() > kTail ? text.substr(text.size() - kTail) : text;
+}
+
+std::string last_line(const std::string& text) {
+    std::size_t end = text.find_last_not_of("\n ");
+    if (end == std::string::npos) return "";
+    const std::size_t start = text.rfind('\n', end);
+    return text.substr(start == std::string::npos ? 0 : start + 1,
+                       end - (start == std::string::npos ? 0 : start + 1) + 1);
+}
+
+}  // namespace
+
+int run_campaign_locally(const CampaignPaths& paths, const CampaignGrid& grid,
+                         const LocalExecutorOptions& o, std::ostream& out) {
+    StopSignalGuard signals;
+    const fs::path executable =
+        o.executable.empty() ? fs::read_symlink("/proc/self/exe") : o.executable;
+    const int max_failures = o.retry_failed ? 4 : 2;
+    std::deque<std::size_t> queue;
+    std::size_t done = 0, elsewhere = 0;
+    for (std::size_t i = 0; i < grid.runs.size(); ++i) {
+        const RunStatus s = run_status(paths, grid.runs[i], max_failures);
+        if (s.state == RunState::done)
+            ++done;
+        else if (s.state == RunState::failed)
+            continue;
+        else
+            queue.push_back(i);
+    }
+    std::vector<std::size_t> failed;
+    for (std::size_t i = 0; i < grid.runs.size(); ++i)
+        if (run_status(paths, grid.runs[i], max_failures).state == RunState::failed)
+            failed.push_back(i);
+    if (!o.quiet)
+        out << "campaign " << paths.dir.string() << ": " << grid.runs.size() << " runs, " << done
+            << " done, " << queue.size() << " to run, " << failed.size() << " failed; " << o.jobs
+            << " at a time on " << o.threads << " thread" << (o.threads > 1 ? "s" : "") << " each"
+            << std::endl;
+    const auto started = Clock::now();
+    std::map<pid_t, ActiveRun> active;
+    int stop_signal = 0;
+    while (!queue.empty() || !active.empty()) {
+        if (const int s = stop_signal_received(); s != 0 && stop_signal == 0) {
+            stop_signal = s;
+            queue.clear();
+            for (const auto& [pid, a] : active)
+                ::kill(pid, s);
+            if (!o.quiet)
+                out << "campaign: stopping; each run writes its checkpoint (re-run the same "
+                       "command to continue)"
+                    << std::endl;
+        }
+        while (stop_signal == 0 && static_cast<int>(active.size()) < o.jobs && !queue.empty()) {
+            const std::size_t i = queue.front();
+            queue.pop_front();
+            const CampaignRun& run = grid.runs[i];
+            RunClaim claim(paths, run);
+            if (!claim.held()) {
+                ++elsewhere;
+                if (!o.quiet)
+                    out << "campaign: " << run.id << " is run by another runner" << std::endl;
+                continue;
+            }
+            if (run_status(paths, run, max_failures).state == RunState::done) {
+                ++done;  // finished by another runner since the queue was made
+                continue;
+            }
+            std::string what;
+            const std::vector<std::string> words = run_words(paths, run, o, what);
+            const fs::path log = log_path(paths, run);
+            std::error_code ec;
+            const std::streamoff log_start =
+                fs::exists(log, ec) ? static_cast<std::streamoff>(fs::file_size(log, ec)) : 0;
+            const pid_t pid = spawn(executable, words, log);
+            active.emplace(pid, ActiveRun{i, std::move(claim), Clock::now(), log_start});
+            if (!o.quiet) out << "campaign: " << what << " " << run.id << std::endl;
+        }
+        int status = 0;
+        const pid_t pid = ::waitpid(-1, &status, WNOHANG);
+        if (pid <= 0) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+            continue;
+        }
+        const auto it = active.find(pid);
+        if (it == active.end()) continue;
+        const CampaignRun& run = grid.runs[it->second.run];
+        const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        const double seconds =
+            std::chrono::duration<double>(Clock::now() - it->second.started).count();
+        if (code == kExitOk) {
+            ++done;
+            if (!o.quiet)
+                out << "campaign: done " << run.id << " in " << format_duration(seconds) << " ("
+                    << done << "/" << grid.runs.size() << " done)" << std::endl;
+        } else if (code == kExitInterrupted || code == kExitTerminated) {
+            if (!o.quiet)
+                out << "campaign: stopped " << run.id << " (checkpoint written)" << std::endl;
+        } else {
+            const std::string message = log_since(log_path(paths, run), it->second.log_start);
+            record_failure(paths, run, code, message);
+            const RunStatus s = run_status(paths, run, max_failures);
+            if (!o.quiet)
+                out << "campaign: " << run.id << " failed (exit " << code
+                    << "): " << last_line(message) << "\n  log: " << log_path(paths, run).string()
+                    << (s.failures < max_failures ? "; retrying once" : "") << std::endl;
+            if (stop_signal == 0 && s.failures < max_failures)
+                queue.push_back(it->second.run);
+            else
+                failed.push_back(it->second.run);
+        }
+        active.erase(it);
+    }
+    const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+    if (!o.quiet) {
+        out << "campaign: " << done << "/" << grid.runs.size() << " runs done after "
+            << format_duration(seconds);
+        if (elsewhere) out << "; " << elsewhere << " run by another runner";
+        out << std::endl;
+        for (const std::size_t i : failed)
+            out << "campaign: FAILED " << grid.runs[i].id << " (log "
+                << log_path(paths, grid.runs[i]).string()
+                << "); fix the cause, then re-run with --retry-failed" << std::endl;
+    }
+    if (stop_signal) return 128 + stop_signal;
+    return failed.empty() ? kExitOk : kExitFailure;
+}
+
+}  // namespace rodsea

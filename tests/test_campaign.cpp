@@ -1,0 +1,265 @@
+// `rodsea campaign` as a user drives it: a grid of tiny runs started, interrupted with Ctrl-C,
+// continued, and collected; the collected numbers are those of analysing each run by hand.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "child_process.hpp"
+#include "rodsea/io/trajectory_reader.hpp"
+#include "scratch_dir.hpp"
+
+namespace rodsea {
+namespace {
+
+namespace fs = std::filesystem;
+
+// 4 points × 2 seeds of 6 polar rods in a 20 mm box, 0.15 s each (about 0.3 s of wall time).
+const char* const kCampaign = R"([campaign]
+name = "grid"
+replicates = 2
+
+[base.box]
+side = 20.0
+[[base.species]]
+name = "polar"
+kind = "polar_rod"
+count = 6
+[[base.species]]
+name = "medium"
+kind = "apolar_rod"
+length = 2.5
+area_fraction = 0.1
+[base.time]
+duration = 0.15
+[base.output]
+interval = 0.005
+
+[[axis]]
+key = "species.medium.area_fraction"
+values = [0.1, 0.3]
+[[axis]]
+key = "drive.gamma"
+values = [5.0, 7.0]
+
+[analysis]
+observables = ["order"]
+)";
+
+std::string read_file(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// The CSV's rows as maps from column to cell (no cell here holds a comma but the point names,
+// which are not read).
+std::vector<std::map<std::string, std::string>> csv_rows(const fs::path& path) {
+    std::ifstream in(path);
+    std::string line;
+    std::getline(in, line);  // comment
+    std::getline(in, line);
+    const auto split = [](const std::string& text) {
+        std::vector<std::string> cells;
+        std::string cell;
+        bool quoted = false;
+        for (const char c : text) {
+            if (c == '"')
+                quoted = !quoted;
+            else if (c == ',' && !quoted)
+                cells.push_back(std::exchange(cell, ""));
+            else
+                cell += c;
+        }
+        cells.push_back(cell);
+        return cells;
+    };
+    const std::vector<std::string> header = split(line);
+    std::vector<std::map<std::string, std::string>> rows;
+    while (std::getline(in, line)) {
+        const std::vector<std::string> cells = split(line);
+        std::map<std::string, std::string> row;
+        for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i)
+            row[header[i]] = cells[i];
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+int count_of(const std::string& text, const std::string& word) {
+    int n = 0;
+    for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1))
+        ++n;
+    return n;
+}
+
+TEST(Campaign, InterruptedAndContinuedWithNothingLostOrRunTwiceThenCollected) {
+    const ScratchDir scratch("campaign");
+    const fs::path file = scratch.path() / "grid.toml";
+    std::ofstream(file) << kCampaign;
+    const fs::path dir = scratch.path() / "grid";
+    const fs::path runs = dir / "runs";
+    const std::string first = "medium.area_fraction=0.1,gamma=5";
+
+    // Ctrl-C once two runs are done and a third is under way.
+    ChildOptions interrupt;
+    interrupt.interrupt_when = [&] {
+        int done = 0, running = 0;
+        std::error_code ec;
+        if (!fs::exists(runs, ec)) return false;
+        for (const auto& e : fs::recursive_directory_iterator(runs, ec)) {
+            if (e.path().filename() != "progress.txt") continue;
+            const std::string text = read_file(e.path());
+            done += text.find("state = done") != std::string::npos;
+            running += text.find("state = running") != std::string::npos;
+        }
+        return done >= 2 && running >= 1;
+    };
+    const ChildResult stopped = run_rodsea(
+        {"campaign", "run", file.string(), "--out", dir.string()}, scratch.path(), interrupt);
+    ASSERT_TRUE(stopped.interrupted) << stopped.out << stopped.err;
+    ASSERT_EQ(stopped.exit_code, 130) << stopped.out << stopped.err;
+    const ChildResult status =
+        run_rodsea({"campaign", "status", file.string(), "--out", dir.string()}, scratch.path());
+    ASSERT_EQ(status.exit_code, 0) << status.err;
+    EXPECT_NE(status.out.find("interrupted"), std::string::npos) << status.out;
+    EXPECT_NE(status.out.find("pending"), std::string::npos) << status.out;
+
+    const ChildResult resumed = run_rodsea(
+        {"campaign", "run", file.string(), "--out", dir.string(), "--jobs", "2"}, scratch.path());
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.out << resumed.err;
+    EXPECT_EQ(count_of(resumed.out, "campaign: resume "), 1) << resumed.out;
+    EXPECT_EQ(count_of(resumed.out, "campaign: done "), 6) << resumed.out;
+    // A third command has nothing to do.
+    const ChildResult again =
+        run_rodsea({"campaign", "run", file.string(), "--out", dir.string()}, scratch.path());
+    EXPECT_NE(again.out.find("8 done, 0 to run"), std::string::npos) << again.out;
+    EXPECT_EQ(count_of(again.out, "campaign: start"), 0);
+
+    // Every run whole: 0.15 s at 5 ms is 31 frames, equally spaced, none lost or doubled.
+    int resumed_runs = 0;
+    for (const auto& point : fs::directory_iterator(runs)) {
+        if (!point.is_directory()) continue;
+        for (const char* seed : {"seed1", "seed2"}) {
+            const fs::path run = point.path() / seed;
+            const std::vector<double> t = TrajectoryReader(run / "trajectory.h5").times();
+            ASSERT_EQ(t.size(), 31u) << run;
+            for (std::size_t k = 0; k < t.size(); ++k)
+                EXPECT_NEAR(t[k], 0.005 * static_cast<double>(k), 1e-12) << run;
+            const std::string log = read_file(run.string() + ".log");
+            resumed_runs += count_of(log, "rodsea: interrupted") == 1;
+        }
+    }
+    EXPECT_EQ(resumed_runs, 1);
+
+    // collect = analyse each run by hand: the same per-run P; each point's the mean of its two.
+    const ChildResult collected =
+        run_rodsea({"campaign", "collect", file.string(), "--out", dir.string()}, scratch.path());
+    ASSERT_EQ(collected.exit_code, 0) << collected.out << collected.err;
+    const fs::path by_hand = scratch.path() / "by_hand.csv";
+    std::vector<std::string> analyze{"analyze"};
+    for (const auto& point : fs::directory_iterator(runs))
+        if (point.is_directory())
+            for (const char* seed : {"seed1", "seed2"})
+                analyze.push_back((point.path() / seed).string());
+    analyze.insert(analyze.end(),
+                   {"--observables", "order", "--table", by_hand.string(), "--quiet"});
+    ASSERT_EQ(run_rodsea(analyze, scratch.path()).exit_code, 0);
+    std::map<std::string, double> hand;
+    for (const auto& row : csv_rows(by_hand))
+        if (row.at("replicates").empty())
+            hand[fs::path(row.at("run")).lexically_normal().string()] =
+                std::stod(row.at("P_polar"));
+    const auto collected_runs = csv_rows(dir / "collected" / "runs.csv");
+    int compared = 0;
+    for (const auto& row : collected_runs) {
+        if (!row.at("replicates").empty()) continue;
+        const std::string run = fs::path(row.at("run")).lexically_normal().string();
+        ASSERT_TRUE(hand.count(run)) << run;
+        EXPECT_EQ(std::stod(row.at("P_polar")), hand.at(run)) << run;
+        ++compared;
+    }
+    EXPECT_EQ(compared, 8);
+    const auto points = csv_rows(dir / "collected" / "points.csv");
+    ASSERT_EQ(points.size(), 4u);
+    for (const auto& p : points) {
+        EXPECT_EQ(p.at("runs"), "2");
+        const std::string name = p.at("point");
+        const double a = hand.at((runs / name / "seed1").lexically_normal().string());
+        const double b = hand.at((runs / name / "seed2").lexically_normal().string());
+        EXPECT_NEAR(std::stod(p.at("P_polar")), 0.5 * (a + b), 1e-12) << name;
+        // With two replicates the error is at least their spread, |a − b| / 2.
+        EXPECT_GE(std::stod(p.at("P_polar_err")), 0.5 * std::abs(a - b) * (1 - 1e-12)) << name;
+    }
+}
+
+TEST(Campaign, RunsTakeTheirThreadsFromTheCommandLineAndReportProgressInAPlainFile) {
+    const ScratchDir scratch("campaign-run");
+    const fs::path config = scratch.path() / "small.toml";
+    std::ofstream(config)
+        << "[box]\nside = 15.0\n[time]\nduration = 0.01\n[output]\ninterval = 0.005\n";
+    const fs::path dir = scratch.path() / "small";
+    const ChildResult r =
+        run_rodsea({"run", config.string(), "--out", dir.string(), "--threads", "2", "--quiet"},
+                   scratch.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    // The stored config says what ran: the same config and seed on 2 threads reproduce it.
+    EXPECT_NE(read_file(dir / "config.toml").find("threads = 2"), std::string::npos);
+    const std::string progress = read_file(dir / "progress.txt");
+    EXPECT_NE(progress.find("state = done"), std::string::npos) << progress;
+    EXPECT_NE(progress.find("step = 8000\ntotal_steps = 8000\n"), std::string::npos) << progress;
+    const ChildResult resumed =
+        run_rodsea({"run", "--resume", dir.string(), "--threads", "1"}, scratch.path());
+    EXPECT_EQ(resumed.exit_code, 2);
+    EXPECT_NE(resumed.err.find("keeps its threads"), std::string::npos) << resumed.err;
+}
+
+struct BadRun {
+    std::vector<std::string> args;
+    std::string message;
+};
+
+TEST(Campaign, BadOptionsAndChangedCampaignsAreRefusedBeforeAnyRunStarts) {
+    const ScratchDir scratch("campaign-bad");
+    const fs::path file = scratch.path() / "grid.toml";
+    std::ofstream(file) << kCampaign;
+    const std::string f = file.string();
+    const std::string dir = (scratch.path() / "grid").string();
+    const std::vector<BadRun> cases{
+        {{"campaign", "plna", f}, "did you mean 'plan'"},
+        {{"campaign", "run"}, "CAMPAIGN"},
+        {{"campaign", "run", f, "--scale", "2"}, "--scale"},
+        {{"campaign", "run", f, "--jobs", "0"}, "--jobs"},
+        {{"campaign", "status", f, "--out", dir}, "no campaign here yet"},
+    };
+    for (const BadRun& c : cases) {
+        const ChildResult r = run_rodsea(c.args, scratch.path());
+        EXPECT_EQ(r.exit_code, c.message == "no campaign here yet" ? 74 : 2) << r.err;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dir));
+    // A campaign directory keeps its scaling and its points' configs.
+    ASSERT_EQ(run_rodsea({"campaign", "run", f, "--out", dir, "--duration", "0.01", "--quiet"},
+                         scratch.path())
+                  .exit_code,
+              0);
+    const ChildResult rescaled =
+        run_rodsea({"campaign", "run", f, "--out", dir, "--duration", "0.02"}, scratch.path());
+    EXPECT_EQ(rescaled.exit_code, 2);
+    EXPECT_NE(rescaled.err.find("duration = 0.01"), std::string::npos) << rescaled.err;
+    std::string changed = kCampaign;
+    changed.replace(changed.find("side = 20.0"), 11, "side = 21.0");
+    std::ofstream(file) << changed;
+    const ChildResult edited =
+        run_rodsea({"campaign", "run", f, "--out", dir, "--duration", "0.01"}, scratch.path());
+    EXPECT_EQ(edited.exit_code, 2);
+    EXPECT_NE(edited.err.find("the campaign file or its base changed this point"),
+              std::string::npos)
+        << edited.err;
+}
+
+}  // namespace
+}  // namespace rodsea

@@ -1,0 +1,150 @@
+// Campaign files: the grid they describe (product of axes, zipped axes, overrides, replicates,
+// --scale) and the errors for bad ones, without running anything.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "rodsea/campaign/campaign_points.hpp"
+#include "rodsea/config/campaign_file.hpp"
+#include "rodsea/error.hpp"
+
+namespace rodsea {
+namespace {
+
+const char* const kBase = R"(
+[base.box]
+side = 40.0
+[[base.species]]
+name = "polar"
+kind = "polar_rod"
+count = 20
+[[base.species]]
+name = "medium"
+kind = "apolar_rod"
+length = 2.5
+area_fraction = 0.2
+[base.time]
+duration = 0.1
+)";
+
+CampaignGrid grid_of(const std::string& text, const CampaignScaling& scaling = {}) {
+    return expand_campaign(load_campaign_string(std::string(kBase) + text, "test.toml"), scaling,
+                           {});
+}
+
+TEST(CampaignFile, PointsAreTheProductOfTheAxesWithZippedKeysMovingTogether) {
+    const CampaignGrid g = grid_of(R"(
+[campaign]
+replicates = 3
+first_seed = 10
+[[axis]]
+key = "species.medium.area_fraction"
+values = [0.1, 0.3]
+[[axis]]
+keys = ["species.medium.length", "drive.gamma"]
+values = [[2.5, 7.0], [4.5, 5]]
+[[override]]
+when = { "species.medium.area_fraction" = 0.3, "species.medium.length" = 4.5 }
+set = { "time.duration" = 0.2 }
+)");
+    ASSERT_EQ(g.points.size(), 4u);  // 2 × 2, the last axis fastest
+    EXPECT_EQ(g.points[0].name, "medium.area_fraction=0.1,medium.length=2.5,gamma=7");
+    EXPECT_EQ(g.points[3].name, "medium.area_fraction=0.3,medium.length=4.5,gamma=5");
+    for (const CampaignPoint& p : g.points) {
+        // Each point's plan has its coordinates: the medium's φ within one body's area of the
+        // asked value, its length and Γ exactly.
+        const double phi = std::get<double>(p.coordinates[0].second);
+        const double length = std::get<double>(p.coordinates[1].second);
+        EXPECT_NEAR(p.plan.engine.species[1].shape.extent, length, 1e-9) << p.name;
+        EXPECT_NEAR(p.plan.requested_area_fraction[1], phi, 1e-12);
+        EXPECT_EQ(p.plan.engine.drive.gamma, length == 2.5 ? 7.0 : 5.0);
+        // Only the point matching both conditions of the override runs longer.
+        EXPECT_EQ(p.plan.control.duration, phi == 0.3 && length == 4.5 ? 0.2 : 0.1) << p.name;
+        EXPECT_EQ(p.plan.engine.seed, 10u);
+    }
+    ASSERT_EQ(g.runs.size(), 12u);
+    EXPECT_EQ(g.runs[2].seed, 12u);
+    EXPECT_EQ(g.runs[2].id, g.points[0].name + "/seed12");
+}
+
+TEST(CampaignFile, ScaleShrinksTheBoxKeepingAreaFractionsAndCountDensities) {
+    const std::string text = R"(
+[[axis]]
+key = "species.medium.area_fraction"
+values = [0.2]
+)";
+    const CampaignGrid full = grid_of(text);
+    const CampaignGrid half = grid_of(text, {.scale = 0.5, .duration = 0.05});
+    EXPECT_EQ(half.points[0].plan.engine.box.lx, 20.0);
+    EXPECT_EQ(half.points[0].plan.control.duration, 0.05);
+    EXPECT_EQ(half.points[0].plan.counts[0], 5);  // 20 polar rods × 0.5²
+    // The medium's count follows its area fraction: a quarter, to within one rod.
+    EXPECT_NEAR(static_cast<double>(half.points[0].plan.counts[1]),
+                static_cast<double>(full.points[0].plan.counts[1]) / 4.0, 1.0);
+}
+
+struct BadCampaign {
+    std::string text, message;
+};
+
+TEST(CampaignFile, BadFilesAreRefusedByKeyWithTheAllowedValues) {
+    const std::vector<BadCampaign> cases{
+        {"[campain]\nname = \"x\"\n", "did you mean 'campaign'"},
+        {"[campaign]\nreplicate = 2\n", "did you mean 'replicates'"},
+        {"[campaign]\nreplicates = 0\n", "campaign.replicates"},
+        {"[[axis]]\nkey = \"species.medium.area_fractoin\"\nvalues = [0.1]\n",
+         "did you mean 'area_fraction'"},
+        {"[[axis]]\nkey = \"drve.gamma\"\nvalues = [5.0]\n", "did you mean 'drive'"},
+        {"[[axis]]\nkey = \"species.medium.area_fraction\"\nvalues = [0.95]\n", "(0, 0.9069]"},
+        {"[[axis]]\nkey = \"species.beads.area_fraction\"\nvalues = [0.1]\n", "polar, medium"},
+        {"[[axis]]\nkey = \"species.medium.area_fraction\"\nvalues = []\n", "axis[0].values"},
+        {"[[axis]]\nkey = \"species.medium.area_fraction\"\nvalues = [0.1, 0.1]\n",
+         "each value once"},
+        {"[[axis]]\nkeys = [\"drive.gamma\", \"drive.frequency\"]\nvalues = [[5.0]]\n",
+         "an array of 2 values"},
+        {"[[axis]]\nkey = \"initial.orientation\"\nvalues = [\"isotropc\"]\n",
+         "did you mean \"isotropic\""},
+        {"[[axis]]\nkey = \"drive.gamma\"\nvalues = [5.0]\n[[figure]]\nname = \"f\"\nx = "
+         "\"drive.gama\"\ny = [\"P_polar\"]\n",
+         "did you mean 'drive.gamma'"},
+        {"[[override]]\nset = { \"time.durration\" = 1.0 }\n", "did you mean 'duration'"},
+        {"[campaign]\nbase = \"missing.toml\"\n", "missing.toml"},
+    };
+    for (const BadCampaign& c : cases) {
+        try {
+            grid_of(c.text);
+            ADD_FAILURE() << "accepted:\n" << c.text;
+        } catch (const std::exception& e) {
+            EXPECT_NE(std::string(e.what()).find(c.message), std::string::npos)
+                << c.text << "\n-> " << e.what();
+        }
+    }
+}
+
+TEST(CampaignFile, ImpossiblePackingsAreRefusedBeforeAnythingRuns) {
+    try {
+        grid_of("[[axis]]\nkey = \"species.medium.area_fraction\"\nvalues = [0.2, 0.88]\n");
+        FAIL() << "a packing of 0.88 + polar rods was accepted";
+    } catch (const InvalidParameter& e) {
+        EXPECT_NE(std::string(e.what()).find("medium.area_fraction=0.88"), std::string::npos)
+            << e.what();
+    }
+}
+
+TEST(CampaignFile, TheDocsKeyReferenceIsTheKeyTable) {
+    std::ifstream in(std::string(RODSEA_SOURCE_DIR) + "/docs/campaigns.md");
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string reference = campaign_reference_markdown();
+    const std::string doc = text.str();
+    ASSERT_GE(doc.size(), reference.size());
+    EXPECT_EQ(doc.substr(doc.size() - reference.size()), reference)
+        << "docs/campaigns.md ends with the key reference: regenerate its end with `rodsea "
+           "campaign --reference`";
+}
+
+}  // namespace
+}  // namespace rodsea
