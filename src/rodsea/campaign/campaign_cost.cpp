@@ -57,15 +57,20 @@ std::vector<PointCost> estimate_campaign_cost(const Campaign& campaign, const Ca
             CampaignScaling small = scaling;
             const double side = p.plan.engine.box.lx;
             small.scale = scaling.scale * std::min(1.0, kMeasureBox / side);
-            const RunPlan probe =
-                small.scale == scaling.scale
-                    ? p.plan
-                    : config_with_settings(campaign.base_toml, campaign.base_source, p.settings,
-                                           "campaign point " + p.name, small, epsilon);
-            c.measured_box = probe.engine.box.lx;
-            c.measured_rate =
-                measure_rate(probe, seconds_per_point, estimate_resources(probe).spheres);
-            c.core_hours = c.sphere_steps * campaign.replicates / c.measured_rate / 3600.0;
+            try {
+                const RunPlan probe =
+                    small.scale == scaling.scale
+                        ? p.plan
+                        : config_with_settings(campaign.base_toml, campaign.base_source, p.settings,
+                                               "campaign point " + p.name, small, epsilon);
+                c.measured_box = probe.engine.box.lx;
+                c.measured_rate =
+                    measure_rate(probe, seconds_per_point, estimate_resources(probe).spheres);
+                c.core_hours = c.sphere_steps * campaign.replicates / c.measured_rate / 3600.0;
+            } catch (const InvalidParameter&) {
+                // The small box cannot hold a packing that the full box can: left unmeasured.
+                c.measured_rate = 0.0;
+            }
         }
         costs.push_back(c);
     }
@@ -118,7 +123,8 @@ void describe_campaign(const Campaign& campaign, const CampaignGrid& grid,
             << format_duration(wall_hours * 3600.0)
             << " of wall time if threads scale perfectly (they do not: see docs/performance.md)";
     } else {
-        out << " (cost not measured: --no-measure)";
+        out << " (cost not measured: --no-measure, or a point's packing does not fit the "
+               "measuring box)";
     }
     out << "\n  GPU-hours: no GPU backend yet (issue 17)\n";
 }

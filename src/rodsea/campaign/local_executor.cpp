@@ -190,10 +190,11 @@ int run_campaign_locally(const CampaignPaths& paths, const CampaignGrid& grid,
                 out << "campaign: " << run.id << " failed (exit " << code
                     << "): " << last_line(message) << "\n  log: " << log_path(paths, run).string()
                     << (s.failures < max_failures ? "; retrying once" : "") << std::endl;
-            if (stop_signal == 0 && s.failures < max_failures)
-                queue.push_back(it->second.run);
-            else
+            // Once stopping, a first failure waits for the next command's retry.
+            if (s.failures >= max_failures)
                 failed.push_back(it->second.run);
+            else if (stop_signal == 0)
+                queue.push_back(it->second.run);
         }
         active.erase(it);
     }
