@@ -104,6 +104,7 @@ TEST(Replicates, MeanAndErrorFromTheSpread) {
     EXPECT_DOUBLE_EQ(r.mean, 2.5);
     EXPECT_DOUBLE_EQ(r.error, std::sqrt(5.0 / 3.0) / 2.0);
     EXPECT_DOUBLE_EQ(r.chi2_per_dof, 5.0 / 3.0);
+    EXPECT_DOUBLE_EQ(r.own_error, 0.5);  // √(4 · 1²) / 4
     // The central 95 % of χ²/3 (scipy.stats.chi2.ppf(0.025, 3) / 3 and ppf(0.975, 3) / 3).
     EXPECT_NEAR(r.chi2_low, 0.0719318, 1e-6);
     EXPECT_NEAR(r.chi2_high, 3.1161345, 1e-6);

@@ -138,11 +138,15 @@ ReplicateEstimate combine_replicates(std::span<const double> values,
     }
     r.replicates = x.size();
     if (x.empty()) {
-        r.mean = r.error = r.chi2_per_dof = nan;
+        r.mean = r.error = r.chi2_per_dof = r.own_error = nan;
         return r;
     }
-    for (double v : x)
-        r.mean += v / static_cast<double>(x.size());
+    double own = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        r.mean += x[i] / static_cast<double>(x.size());
+        own += e[i] * e[i];
+    }
+    r.own_error = errors_known ? std::sqrt(own) / static_cast<double>(x.size()) : nan;
     if (x.size() < 2) {
         r.error = r.chi2_per_dof = nan;
         return r;

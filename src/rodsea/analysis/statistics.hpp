@@ -50,6 +50,8 @@ struct ReplicateEstimate {
     std::size_t replicates = 0;
     double chi2_per_dof = 0.0;  // NaN without a finite positive σ_i for every value
     double chi2_low = 0.0, chi2_high = 0.0;
+    // √(Σ σ_i²) / n: the error of the mean from the runs' own errors; NaN as chi2_per_dof.
+    double own_error = 0.0;
 };
 ReplicateEstimate combine_replicates(std::span<const double> values,
                                      std::span<const double> errors);

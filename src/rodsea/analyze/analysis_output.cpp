@@ -15,6 +15,7 @@
 #include "rodsea/error.hpp"
 #include "rodsea/io/analysis_h5.hpp"
 #include "rodsea/io/atomic_file.hpp"
+#include "rodsea/io/csv_table.hpp"
 #include "rodsea/number_text.hpp"
 
 namespace rodsea {
@@ -25,18 +26,6 @@ namespace fs = std::filesystem;
 
 // In key order, as the analysis is read by people too. JSON has no NaN: nlohmann writes null.
 using Json = nlohmann::ordered_json;
-
-// RFC 4180: a field with a comma, quote or newline is quoted, quotes doubled.
-std::string csv_quoted(const std::string& text) {
-    if (text.find_first_of(",\"\n") == std::string::npos) return text;
-    std::string q(1, '"');
-    for (char c : text) {
-        q.push_back(c);
-        if (c == '"') q.push_back('"');
-    }
-    q.push_back('"');
-    return q;
-}
 
 std::string csv_text(const TableResult& t) {
     std::ostringstream out;
@@ -228,53 +217,10 @@ std::vector<fs::path> write_run_analysis(const RunAnalysis& a, const fs::path& o
 
 namespace {
 
-// Rows of named cells whose columns are the union, in order of first appearance.
-class SummaryTable {
-  public:
-    using Row = std::map<std::string, std::string>;
-    SummaryTable()
-        : columns_{"run",          "replicates",    "box_lx_mm",      "box_ly_mm", "gamma",
-                   "frequency_hz", "gap_mm",        "epsilon_per_mm", "dt_s",      "seed",
-                   "duration_s",   "steady_from_s", "steady_frames"} {}
-    void set(Row& row, const std::string& key, const std::string& value) {
-        if (std::find(columns_.begin(), columns_.end(), key) == columns_.end())
-            columns_.push_back(key);
-        row[key] = value;
-    }
-    void add(Row row) { rows_.push_back(std::move(row)); }
-    std::string csv() const {
-        std::ostringstream out;
-        out << "# rodsea " << RODSEA_VERSION
-            << " analysis summary: one row per run, its parameters (mm, s), then each "
-               "steady-state scalar, its error bar (<name>_err) and whether the window was "
-               "shorter than 50 tau_int (<name>_short = 1: the error is an underestimate); then, "
-               "for runs that differ "
-               "only in their seed, one row per group with the mean over the replicates, the "
-               "error from their spread (<name>_err) and chi2/dof of that spread against the "
-               "runs' own errors (<name>_chi2, ~1 when those are honest); the definitions are in "
-               "each run's analysis.json\n";
-        for (std::size_t c = 0; c < columns_.size(); ++c)
-            out << (c ? "," : "") << columns_[c];
-        out << "\n";
-        for (const Row& row : rows_) {
-            for (std::size_t c = 0; c < columns_.size(); ++c) {
-                const auto it = row.find(columns_[c]);
-                out << (c ? "," : "") << (it == row.end() ? "" : it->second);
-            }
-            out << "\n";
-        }
-        return out.str();
-    }
-
-  private:
-    std::vector<std::string> columns_;
-    std::vector<Row> rows_;
-};
-
 // The parameters of a run, shared by its replicates but for the seed and the window.
-SummaryTable::Row parameter_row(SummaryTable& table, const RunAnalysis& a) {
+CsvTable::Row parameter_row(CsvTable& table, const RunAnalysis& a) {
     const EngineParameters& e = a.run.plan.engine;
-    SummaryTable::Row row;
+    CsvTable::Row row;
     table.set(row, "box_lx_mm", exact_number(e.box.lx));
     table.set(row, "box_ly_mm", exact_number(e.box.ly));
     table.set(row, "gamma", exact_number(e.drive.gamma));
@@ -312,37 +258,43 @@ std::vector<std::vector<const RunAnalysis*>> replicate_groups(
 
 }  // namespace
 
+ReplicateSummary summarise_replicates(const std::vector<const RunAnalysis*>& group) {
+    ReplicateSummary g;
+    for (const RunAnalysis* a : group) {
+        g.runs.push_back(a->run.run_dir);
+        g.seeds.push_back(a->run.plan.engine.seed);
+    }
+    if (group.empty()) return g;
+    // The scalars of the first run, combined over every run that has them.
+    for (const ObservableResults& r : group.front()->results) {
+        for (const ScalarResult& s : r.scalars) {
+            std::vector<double> values, errors;
+            for (const RunAnalysis* a : group)
+                for (const ObservableResults& ra : a->results)
+                    for (const ScalarResult& sa : ra.scalars)
+                        if (ra.observable == r.observable && sa.name == s.name) {
+                            values.push_back(sa.estimate.mean);
+                            errors.push_back(sa.estimate.error);
+                        }
+            g.scalars.push_back({s.name, s.unit, combine_replicates(values, errors)});
+        }
+    }
+    return g;
+}
+
 std::vector<ReplicateSummary> replicate_summaries(const std::vector<RunAnalysis>& runs) {
     std::vector<ReplicateSummary> summaries;
-    for (const auto& group : replicate_groups(runs)) {
-        ReplicateSummary g;
-        for (const RunAnalysis* a : group) {
-            g.runs.push_back(a->run.run_dir);
-            g.seeds.push_back(a->run.plan.engine.seed);
-        }
-        // The scalars of the first run, combined over every run that has them.
-        for (const ObservableResults& r : group.front()->results) {
-            for (const ScalarResult& s : r.scalars) {
-                std::vector<double> values, errors;
-                for (const RunAnalysis* a : group)
-                    for (const ObservableResults& ra : a->results)
-                        for (const ScalarResult& sa : ra.scalars)
-                            if (ra.observable == r.observable && sa.name == s.name) {
-                                values.push_back(sa.estimate.mean);
-                                errors.push_back(sa.estimate.error);
-                            }
-                g.scalars.push_back({s.name, s.unit, combine_replicates(values, errors)});
-            }
-        }
-        summaries.push_back(std::move(g));
-    }
+    for (const auto& group : replicate_groups(runs))
+        summaries.push_back(summarise_replicates(group));
     return summaries;
 }
 
 std::string summary_table_csv(const std::vector<RunAnalysis>& runs) {
-    SummaryTable table;
+    CsvTable table({"run", "replicates", "box_lx_mm", "box_ly_mm", "gamma", "frequency_hz",
+                    "gap_mm", "epsilon_per_mm", "dt_s", "seed", "duration_s", "steady_from_s",
+                    "steady_frames"});
     for (const RunAnalysis& a : runs) {
-        SummaryTable::Row row = parameter_row(table, a);
+        CsvTable::Row row = parameter_row(table, a);
         table.set(row, "run", csv_quoted(a.run.run_dir.string()));
         table.set(row, "seed", std::to_string(a.run.plan.engine.seed));
         table.set(row, "steady_from_s", exact_number(a.run.window.from));
@@ -356,11 +308,9 @@ std::string summary_table_csv(const std::vector<RunAnalysis>& runs) {
             }
         table.add(std::move(row));
     }
-    const std::vector<ReplicateSummary> summaries = replicate_summaries(runs);
-    const auto groups = replicate_groups(runs);
-    for (std::size_t k = 0; k < summaries.size(); ++k) {
-        const ReplicateSummary& g = summaries[k];
-        SummaryTable::Row row = parameter_row(table, *groups[k].front());
+    for (const auto& group : replicate_groups(runs)) {
+        const ReplicateSummary g = summarise_replicates(group);
+        CsvTable::Row row = parameter_row(table, *group.front());
         std::string seeds;
         for (const std::uint64_t seed : g.seeds) {
             if (!seeds.empty()) seeds += ' ';
@@ -376,7 +326,15 @@ std::string summary_table_csv(const std::vector<RunAnalysis>& runs) {
         }
         table.add(std::move(row));
     }
-    return table.csv();
+    return table.text(
+        std::string("rodsea ") + RODSEA_VERSION +
+        " analysis summary: one row per run, its parameters (mm, s), then each steady-state "
+        "scalar, its error bar (<name>_err) and whether the window was shorter than 50 tau_int "
+        "(<name>_short = 1: the error is an underestimate); then, for runs that differ only in "
+        "their seed, one row per group with the mean over the replicates, the error from their "
+        "spread (<name>_err) and chi2/dof of that spread against the runs' own errors "
+        "(<name>_chi2, ~1 when those are honest); the definitions are in each run's "
+        "analysis.json");
 }
 
 }  // namespace rodsea

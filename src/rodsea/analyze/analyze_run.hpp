@@ -75,6 +75,8 @@ struct ReplicateSummary {
     std::vector<ReplicateScalar> scalars;
 };
 std::vector<ReplicateSummary> replicate_summaries(const std::vector<RunAnalysis>& runs);
+// The same for runs already known to be replicates (a campaign point's seeds).
+ReplicateSummary summarise_replicates(const std::vector<const RunAnalysis*>& runs);
 
 // One CSV row per run: its parameters, then every scalar and its error bar; then one row per
 // group of replicates (the mean, the error from their spread, chi²/dof).

@@ -9,6 +9,7 @@
 #include "rodsea/analyze/analyze_run.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
+#include "rodsea/io/csv_table.hpp"
 #include "rodsea/number_text.hpp"
 
 namespace rodsea {
@@ -29,19 +30,6 @@ AnalyzeRequest request_of(const CampaignAnalysis& a) {
 std::string cell(double v) {
     return std::isfinite(v) ? exact_number(v) : "nan";
 }
-
-std::string quoted_cell(const std::string& text) {
-    if (text.find_first_of(",\"\n") == std::string::npos) return text;
-    std::string q = "\"";
-    for (const char c : text)
-        q += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return q + "\"";
-}
-
-struct PointScalar {
-    std::string name, unit;
-    std::vector<double> values, errors;
-};
 
 }  // namespace
 
@@ -79,75 +67,44 @@ CollectResult collect_campaign(const CampaignPaths& paths, const Campaign& campa
     write_file_atomically(result.runs_table, summary_table_csv(analyses));
 
     // One row per point: its coordinates, then each scalar combined over its replicates.
-    std::vector<std::string> columns{"point"};
+    std::vector<std::string> first{"point"};
     for (const CampaignAxis& a : campaign.axes)
         for (const std::string& k : a.keys)
-            columns.push_back(short_key(k));
-    columns.insert(columns.end(), {"runs", "seeds"});
-    std::vector<std::map<std::string, std::string>> rows;
+            first.push_back(short_key(k));
+    first.insert(first.end(), {"runs", "seeds"});
+    CsvTable table(first);
     for (const auto& [point, runs] : by_point) {
-        std::map<std::string, std::string> row;
+        CsvTable::Row row;
         const CampaignPoint& p = grid.points[point];
-        row["point"] = quoted_cell(p.name);
+        table.set(row, "point", csv_quoted(p.name));
         for (const KeySetting& c : p.coordinates)
-            row[short_key(c.first)] = quoted_cell(setting_text(c.second));
-        row["runs"] = std::to_string(runs.size());
+            table.set(row, short_key(c.first), csv_quoted(setting_text(c.second)));
+        const ReplicateSummary summary = summarise_replicates(runs);
+        table.set(row, "runs", std::to_string(runs.size()));
         std::string seeds;
-        for (const RunAnalysis* a : runs)
-            seeds += (seeds.empty() ? "" : " ") + std::to_string(a->run.plan.engine.seed);
-        row["seeds"] = seeds;
-        std::vector<PointScalar> scalars;
-        for (const RunAnalysis* a : runs)
-            for (const ObservableResults& r : a->results)
-                for (const ScalarResult& s : r.scalars) {
-                    auto it = std::find_if(scalars.begin(), scalars.end(),
-                                           [&](const PointScalar& x) { return x.name == s.name; });
-                    if (it == scalars.end())
-                        it = scalars.insert(scalars.end(), {s.name, s.unit, {}, {}});
-                    it->values.push_back(s.estimate.mean);
-                    it->errors.push_back(s.estimate.error);
-                }
-        for (const PointScalar& s : scalars) {
-            const ReplicateEstimate e = combine_replicates(s.values, s.errors);
-            double own = 0.0;
-            std::size_t n = 0;
-            for (std::size_t i = 0; i < s.values.size(); ++i)
-                if (std::isfinite(s.values[i])) {
-                    own += std::isfinite(s.errors[i]) ? s.errors[i] * s.errors[i] : NAN;
-                    ++n;
-                }
-            own = n ? std::sqrt(own) / static_cast<double>(n) : NAN;
-            const double error = e.replicates >= 2 && std::isfinite(e.error)
-                                     ? (std::isfinite(own) ? std::max(e.error, own) : e.error)
-                                     : own;
-            for (const std::string& c : {s.name, s.name + "_err", s.name + "_chi2"})
-                if (std::find(columns.begin(), columns.end(), c) == columns.end())
-                    columns.push_back(c);
-            row[s.name] = cell(e.mean);
-            row[s.name + "_err"] = cell(error);
-            row[s.name + "_chi2"] = cell(e.chi2_per_dof);
+        for (const std::uint64_t seed : summary.seeds)
+            seeds += (seeds.empty() ? "" : " ") + std::to_string(seed);
+        table.set(row, "seeds", seeds);
+        for (const ReplicateScalar& s : summary.scalars) {
+            const ReplicateEstimate& e = s.estimate;
+            const double error =
+                e.replicates >= 2 && std::isfinite(e.error)
+                    ? (std::isfinite(e.own_error) ? std::max(e.error, e.own_error) : e.error)
+                    : e.own_error;
+            table.set(row, s.name, cell(e.mean));
+            table.set(row, s.name + "_err", cell(error));
+            table.set(row, s.name + "_chi2", cell(e.chi2_per_dof));
         }
-        rows.push_back(std::move(row));
+        table.add(std::move(row));
     }
-    std::ostringstream csv;
-    csv << "# rodsea " << RODSEA_VERSION << " campaign " << campaign.name
-        << ": one row per point with finished runs; its axis values, the runs and seeds, then "
-           "each scalar's mean over the replicates, its error (the larger of the replicates' "
-           "spread sd/sqrt(n) and their own errors sqrt(sum sigma^2)/n) and chi2/dof of the "
-           "spread against the runs' own errors (nan with one run); units as in runs.csv and "
-           "docs/analysis.md\n";
-    for (std::size_t c = 0; c < columns.size(); ++c)
-        csv << (c ? "," : "") << columns[c];
-    csv << "\n";
-    for (const auto& row : rows) {
-        for (std::size_t c = 0; c < columns.size(); ++c) {
-            const auto it = row.find(columns[c]);
-            csv << (c ? "," : "") << (it == row.end() ? "" : it->second);
-        }
-        csv << "\n";
-    }
+    const std::string comment =
+        std::string("rodsea ") + RODSEA_VERSION + " campaign " + campaign.name +
+        ": one row per point with finished runs; its axis values, the runs and seeds, then each "
+        "scalar's mean over the replicates, its error (the larger of the replicates' spread "
+        "sd/sqrt(n) and their own errors sqrt(sum sigma^2)/n) and chi2/dof of the spread against "
+        "the runs' own errors (nan with one run); units as in runs.csv and docs/analysis.md";
     result.points_table = paths.collected() / "points.csv";
-    write_file_atomically(result.points_table, csv.str());
+    write_file_atomically(result.points_table, table.text(comment));
     return result;
 }
 
