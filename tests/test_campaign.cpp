@@ -6,8 +6,10 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <thread>
 
 #include "child_process.hpp"
+#include "local_slurm_cluster.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
 #include "scratch_dir.hpp"
 
@@ -193,6 +195,141 @@ TEST(Campaign, InterruptedAndContinuedWithNothingLostOrRunTwiceThenCollected) {
         EXPECT_NEAR(std::stod(p.at("P_polar")), 0.5 * (a + b), 1e-12) << name;
         // With two replicates the error is at least their spread, |a − b| / 2.
         EXPECT_GE(std::stod(p.at("P_polar_err")), 0.5 * std::abs(a - b) * (1 - 1e-12)) << name;
+    }
+}
+
+// Three runs in a 20 mm box; the gamma = 7 one lasts 30 s of simulated time (about a minute of
+// one core here), so that with a one-minute wall time it is stopped by SLURM's signal at least
+// once and must be resubmitted; the other two take about a second each.
+const char* const kSlurmCampaign = R"([campaign]
+name = "cluster"
+
+[base.box]
+side = 20.0
+[[base.species]]
+name = "polar"
+kind = "polar_rod"
+count = 6
+[[base.species]]
+name = "medium"
+kind = "apolar_rod"
+length = 2.5
+area_fraction = 0.1
+[base.time]
+duration = 0.5
+[base.output]
+interval = 0.05
+
+[[axis]]
+key = "drive.gamma"
+values = [5.0, 6.0, 7.0]
+
+[[override]]
+when = { "drive.gamma" = 7.0 }
+set = { "time.duration" = 30.0 }
+
+[analysis]
+observables = ["order"]
+)";
+
+TEST(CampaignOnSlurm, AWallTimeHitIsResubmittedAndEveryRunFinishesExactlyOnce) {
+    if (const auto why = LocalSlurmCluster::unavailable()) GTEST_SKIP() << *why;
+    const ScratchDir scratch("campaign-slurm");
+    const LocalSlurmCluster cluster(scratch.path() / "cluster");
+    ASSERT_TRUE(cluster.ready()) << cluster.logs();
+    const fs::path file = scratch.path() / "cluster.toml";
+    std::ofstream(file) << kSlurmCampaign;
+    const fs::path dir = scratch.path() / "out";
+
+    // A dry run writes the script and submits nothing.
+    const ChildResult dry = run_rodsea({"campaign", "submit", file.string(), "--out", dir.string(),
+                                        "--time", "1", "--pack", "2", "--dry-run"},
+                                       scratch.path());
+    ASSERT_EQ(dry.exit_code, 0) << dry.out << dry.err;
+    const std::string script = read_file(dir / "slurm" / "array-1.sh");
+    EXPECT_NE(script.find("#SBATCH --array=0-1\n"), std::string::npos) << script;
+    EXPECT_NE(script.find("#SBATCH --signal=B:TERM@30\n"), std::string::npos) << script;
+    EXPECT_TRUE(cluster.queue_empty());
+    fs::remove_all(dir / "slurm");
+
+    // Two array tasks on the node's two CPUs; SIGTERM 40 s before the one-minute wall time, which
+    // SLURM's 30 s polling delivers 20 to 50 s into a task.
+    const ChildResult submitted =
+        run_rodsea({"campaign", "submit", file.string(), "--out", dir.string(), "--time", "1",
+                    "--signal-seconds", "40", "--pack", "2", "--resubmit", "6"},
+                   scratch.path());
+    ASSERT_EQ(submitted.exit_code, 0) << submitted.out << submitted.err;
+    EXPECT_NE(submitted.out.find("3 runs in 2 array tasks"), std::string::npos) << submitted.out;
+    // A second submit while the first is queued takes nothing twice.
+    const ChildResult twice =
+        run_rodsea({"campaign", "submit", file.string(), "--out", dir.string(), "--time", "1"},
+                   scratch.path());
+    ASSERT_EQ(twice.exit_code, 0) << twice.out << twice.err;
+    EXPECT_NE(twice.out.find("nothing submitted"), std::string::npos) << twice.out;
+
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(8);
+    std::string status;
+    while (std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::seconds(5));
+        status =
+            run_rodsea({"campaign", "status", file.string(), "--out", dir.string()}, scratch.path())
+                .out;
+        if (status.find("3 done") != std::string::npos && cluster.queue_empty()) break;
+    }
+    ASSERT_NE(status.find("3 runs: 0 pending, 0 running, 0 interrupted, 3 done"), std::string::npos)
+        << status << cluster.logs();
+
+    // What every task said, in order of submission.
+    std::string said;
+    for (int k = 1; fs::exists(dir / "slurm" / ("tasks-" + std::to_string(k) + ".txt")); ++k)
+        for (const auto& e : fs::directory_iterator(dir / "slurm" / "logs"))
+            if (e.path().filename().string().rfind("array-" + std::to_string(k) + "_", 0) == 0)
+                said += read_file(e.path());
+    for (const std::string id : {"gamma=5/seed1", "gamma=6/seed1", "gamma=7/seed1"}) {
+        EXPECT_EQ(count_of(said, "campaign: start " + id), 1) << id << "\n" << said;
+        EXPECT_EQ(count_of(said, "campaign: done " + id), 1) << id << "\n" << said;
+    }
+    // The long run hit the wall time at least once, checkpointed, and was resumed as often.
+    const int stops = count_of(said, "campaign: stopped gamma=7/seed1 (checkpoint written)");
+    EXPECT_GE(stops, 1) << said;
+    EXPECT_EQ(count_of(said, "campaign: resume gamma=7/seed1"), stops) << said;
+    EXPECT_EQ(count_of(said, " failed (exit"), 0) << said;
+
+    // Every run whole: its frames equally spaced from 0 to its duration, none lost or doubled.
+    for (const auto& [id, frames] : std::vector<std::pair<std::string, std::size_t>>{
+             {"gamma=5/seed1", 11}, {"gamma=6/seed1", 11}, {"gamma=7/seed1", 601}}) {
+        const std::vector<double> t = TrajectoryReader(dir / "runs" / id / "trajectory.h5").times();
+        ASSERT_EQ(t.size(), frames) << id;
+        for (std::size_t k = 0; k < t.size(); ++k)
+            EXPECT_NEAR(t[k], 0.05 * static_cast<double>(k), 1e-9) << id;
+    }
+
+    // The collected table holds what analysing each run by hand gives.
+    ASSERT_EQ(run_rodsea({"campaign", "collect", file.string(), "--out", dir.string(), "--quiet"},
+                         scratch.path())
+                  .exit_code,
+              0);
+    const fs::path by_hand = scratch.path() / "by_hand.csv";
+    ASSERT_EQ(run_rodsea({"analyze", (dir / "runs" / "gamma=5" / "seed1").string(),
+                          (dir / "runs" / "gamma=6" / "seed1").string(),
+                          (dir / "runs" / "gamma=7" / "seed1").string(), "--observables", "order",
+                          "--table", by_hand.string(), "--quiet"},
+                         scratch.path())
+                  .exit_code,
+              0);
+    std::map<std::string, double> hand;
+    for (const auto& row : csv_rows(by_hand))
+        if (row.at("replicates").empty())
+            hand[fs::path(row.at("run")).lexically_normal().string()] =
+                std::stod(row.at("P_polar"));
+    const auto points = csv_rows(dir / "collected" / "points.csv");
+    ASSERT_EQ(points.size(), 3u);
+    for (const auto& p : points) {
+        EXPECT_EQ(p.at("runs"), "1");
+        const std::string run =
+            (dir / "runs" / p.at("point") / "seed1").lexically_normal().string();
+        ASSERT_TRUE(hand.count(run)) << run;
+        EXPECT_EQ(std::stod(p.at("P_polar")), hand.at(run)) << run;
     }
 }
 

@@ -2,12 +2,14 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ostream>
 
 #include "rodsea/calibration/calibration_table.hpp"
 #include "rodsea/campaign/campaign_collect.hpp"
 #include "rodsea/campaign/campaign_cost.hpp"
 #include "rodsea/campaign/local_executor.hpp"
+#include "rodsea/campaign/slurm_executor.hpp"
 #include "rodsea/cli/exit_codes.hpp"
 #include "rodsea/cli/progress.hpp"
 #include "rodsea/config/did_you_mean.hpp"
@@ -21,8 +23,8 @@ namespace fs = std::filesystem;
 const CommandSpec& campaign_command_spec() {
     static const CommandSpec spec{
         "campaign",
-        "plan|run|status|collect CAMPAIGN [--out DIR] [--scale F] [--duration T] [--jobs N] "
-        "[--threads T]",
+        "plan|run|status|collect|submit CAMPAIGN [--out DIR] [--scale F] [--duration T] "
+        "[--jobs N] [--threads T] [submit options]",
         "a figure's grid of runs: plan its cost, run it, follow it, collect its table",
         "CAMPAIGN is a TOML file (docs/campaigns.md: a base config, axes over config keys, "
         "replicates, the analysis): every point is built and checked, packing included, before "
@@ -36,15 +38,37 @@ const CommandSpec& campaign_command_spec() {
         "  status   each run: pending, running, interrupted, done or failed, its progress and "
         "ETA (readable while a runner works)\n"
         "  collect  analyses every finished run ([analysis] of the campaign) and writes "
-        "DIR/collected/points.csv (a row per point, replicates combined) and runs.csv; names "
-        "what is missing",
+        "DIR/collected/points.csv (a row per point, replicates combined), runs.csv and the "
+        "campaign's [[figure]]s in collected/figures/; names what is missing\n"
+        "  submit   SLURM: the runs not done as one sbatch job array (a task per run, or --pack "
+        "runs per task) in DIR/slurm/; SIGTERM --signal-seconds before the wall time makes "
+        "every run checkpoint, and a follow-up job (afterany) submits what is left, --resubmit "
+        "times at most",
         {{"--out", "DIR", "the campaign's directory (default out/<campaign name>)"},
          {"--scale", "F",
           "box side times F, in (0, 1], area fractions kept (counts given as counts times F^2): "
           "run a figure small first; fixed for a campaign directory"},
          {"--duration", "T", "every run's time.duration, s; fixed for a campaign directory"},
-         {"--jobs", "N", "run: runs at a time (default 1)"},
+         {"--jobs", "N", "run, submit: runs at a time (in each array task) (default 1)"},
          {"--threads", "T", "run: threads per run (default 1); plan: for the wall-time estimate"},
+         {"--partition", "P", "submit: the SLURM partition (default: the cluster's)"},
+         {"--account", "A", "submit: the SLURM account to charge (default: yours)"},
+         {"--time", "T",
+          "submit: wall time per array task, as sbatch takes it: minutes, HH:MM:SS or "
+          "D-HH:MM:SS (default 24:00:00)"},
+         {"--signal-seconds", "S",
+          "submit: SIGTERM this long before the wall time, for the checkpoint (default "
+          "min(300, half the wall time))"},
+         {"--cpus-per-task", "C",
+          "submit: CPUs per array task, shared by its --jobs runs (default 1)"},
+         {"--gpus-per-task", "G", "submit: GPUs per array task (default 0)"},
+         {"--throttle", "K", "submit: array tasks running at a time (default: no limit)"},
+         {"--pack", "K", "submit: runs per array task, run --jobs at a time (default 1)"},
+         {"--resubmit", "N",
+          "submit: follow-up submissions of what did not finish, at most (default 3; 0: none)"},
+         {"--dry-run", "", "submit: write the script, submit nothing"},
+         {"--tasks", "FILE", "run: only the runs of one task of a submission (the array script)"},
+         {"--task", "N", "run: the line of --tasks (default $SLURM_ARRAY_TASK_ID)"},
          {"--retry-failed", "", "run: give runs that failed twice two more tries"},
          {"--measure-seconds", "S",
           "plan: seconds of stepping per point to measure its cost "
@@ -108,11 +132,63 @@ int run(const Arguments& a, std::ostream& out) {
         static_cast<int>(parse_count("--threads", a.value("--threads").value_or("1"), 1, 1024));
     o.retry_failed = a.has("--retry-failed");
     o.quiet = a.has("--quiet");
+    if (const auto tasks = a.value("--tasks")) {
+        const char* env = std::getenv("SLURM_ARRAY_TASK_ID");
+        const std::optional<std::string> task = a.value("--task");
+        if (!task && !env)
+            throw InvalidParameter("--task", "missing",
+                                   "the task's line of --tasks (or $SLURM_ARRAY_TASK_ID)");
+        o.only =
+            runs_of_task(*tasks, parse_count("--task", task ? *task : env, 0, 1'000'000), l.grid);
+    } else if (a.has("--task")) {
+        throw InvalidParameter("--task", *a.value("--task"), "--task together with --tasks");
+    }
     std::vector<RunPlan> plans;
     for (const CampaignRun& r : l.grid.runs)
         plans.push_back(run_plan(l.campaign, l.grid, r, l.scaling, calibration_table_lookup()));
     prepare_campaign_dir(l.paths, l.campaign, l.scaling, l.grid, plans);
     return run_campaign_locally(l.paths, l.grid, o, out);
+}
+
+int submit(const Arguments& a, std::ostream& out) {
+    const Loaded l = load(a);
+    SlurmOptions o;
+    o.campaign_file = fs::absolute(a.positional[1]);
+    o.scaling = l.scaling;
+    o.partition = a.value("--partition").value_or("");
+    o.account = a.value("--account").value_or("");
+    for (const auto& [flag, value] :
+         {std::pair{"--partition", o.partition}, {"--account", o.account}})
+        if (value.find_first_of(" \t\n'\"\\$`") != std::string::npos)
+            throw InvalidParameter(flag, value, "a SLURM name (no spaces, quotes or $)");
+    if (const auto t = a.value("--time")) o.time = *t;
+    o.time_seconds = parse_slurm_time(o.time);
+    if (const auto s = a.value("--signal-seconds"))
+        o.signal_seconds = parse_count("--signal-seconds", *s, 10, 86'400);
+    const auto count = [&](const char* flag, long fallback, long lo, long hi) {
+        const auto v = a.value(flag);
+        return static_cast<int>(v ? parse_count(flag, *v, lo, hi) : fallback);
+    };
+    o.cpus_per_task = count("--cpus-per-task", 1, 1, 4096);
+    o.gpus_per_task = count("--gpus-per-task", 0, 0, 64);
+    o.throttle = count("--throttle", 0, 0, 100'000);
+    o.pack = count("--pack", 1, 1, 10'000);
+    o.jobs = count("--jobs", 1, 1, 4096);
+    o.resubmit = count("--resubmit", 3, 0, 100);
+    if (o.jobs > o.pack)
+        throw InvalidParameter(
+            "--jobs", std::to_string(o.jobs),
+            "at most --pack (" + std::to_string(o.pack) + "): the runs of one array task");
+    if (o.jobs > o.cpus_per_task)
+        throw InvalidParameter("--jobs", std::to_string(o.jobs),
+                               "at most --cpus-per-task (" + std::to_string(o.cpus_per_task) + ")");
+    o.retry_failed = a.has("--retry-failed");
+    o.dry_run = a.has("--dry-run");
+    std::vector<RunPlan> plans;
+    for (const CampaignRun& r : l.grid.runs)
+        plans.push_back(run_plan(l.campaign, l.grid, r, l.scaling, calibration_table_lookup()));
+    prepare_campaign_dir(l.paths, l.campaign, l.scaling, l.grid, plans);
+    return submit_campaign_to_slurm(l.paths, l.campaign, l.grid, o, out);
 }
 
 int status(const Arguments& a, std::ostream& out) {
@@ -176,15 +252,16 @@ int campaign_command(const std::vector<std::string>& args, std::ostream& out, st
         out << campaign_reference_markdown();
         return kExitOk;
     }
-    const std::vector<std::string> subcommands{"plan", "run", "status", "collect"};
+    const std::vector<std::string> subcommands{"plan", "run", "status", "collect", "submit"};
     const std::string sub = a.positional.empty() ? "" : a.positional[0];
     if (sub == "plan") return plan(a, out);
     if (sub == "run") return run(a, out);
     if (sub == "status") return status(a, out);
     if (sub == "collect") return collect(a, out);
+    if (sub == "submit") return submit(a, out);
     const auto guess = config::closest_match(sub, subcommands);
     throw InvalidParameter("SUBCOMMAND", sub.empty() ? "none" : quoted(sub),
-                           "plan, run, status or collect",
+                           "plan, run, status, collect or submit",
                            guess ? "did you mean '" + *guess + "'?" : "rodsea campaign --help");
 }
 

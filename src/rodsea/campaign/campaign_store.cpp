@@ -48,6 +48,18 @@ void check_scaling(const CampaignPaths& paths, const CampaignScaling& scaling) {
     }
 }
 
+// Several runners (the tasks of a job array) prepare the same directory at the same moment: a
+// file that already says the same is left alone, and losing a race to an identical write is no
+// error.
+void write_unless_same(const fs::path& path, const std::string& text) {
+    if (read_text(path) == text) return;
+    try {
+        write_file_atomically(path, text);
+    } catch (const FileError&) {
+        if (read_text(path) != text) throw;
+    }
+}
+
 }  // namespace
 
 fs::path default_campaign_dir(const Campaign& campaign) {
@@ -88,18 +100,18 @@ void prepare_campaign_dir(const CampaignPaths& paths, const Campaign& campaign,
     if (ec) throw FileError(paths.dir.string(), "cannot be created: " + ec.message());
     if (!campaign.file.empty()) {
         if (const auto text = read_text(campaign.file))
-            write_file_atomically(paths.dir / "campaign.toml", *text);
+            write_unless_same(paths.dir / "campaign.toml", *text);
     }
     if (!fs::exists(paths.dir / "campaign.toml", ec))
         write_file_atomically(paths.dir / "campaign.toml", "# (given as a string)\n");
-    write_file_atomically(paths.dir / "scaling.txt", scaling_text(scaling));
+    write_unless_same(paths.dir / "scaling.txt", scaling_text(scaling));
     for (std::size_t i = 0; i < grid.runs.size(); ++i) {
         const fs::path config = paths.config(grid.runs[i]);
         if (fs::exists(config, ec)) continue;
         fs::create_directories(config.parent_path(), ec);
         if (ec)
             throw FileError(config.parent_path().string(), "cannot be created: " + ec.message());
-        write_file_atomically(config, plans[i].config_toml);
+        write_unless_same(config, plans[i].config_toml);
     }
 }
 

@@ -103,9 +103,15 @@ int run_campaign_locally(const CampaignPaths& paths, const CampaignGrid& grid,
     const fs::path executable =
         o.executable.empty() ? fs::read_symlink("/proc/self/exe") : o.executable;
     const int max_failures = o.retry_failed ? 4 : 2;
+    std::vector<std::size_t> mine;
+    if (o.only)
+        mine = *o.only;
+    else
+        for (std::size_t i = 0; i < grid.runs.size(); ++i)
+            mine.push_back(i);
     std::deque<std::size_t> queue;
     std::size_t done = 0, elsewhere = 0;
-    for (std::size_t i = 0; i < grid.runs.size(); ++i) {
+    for (const std::size_t i : mine) {
         const RunStatus s = run_status(paths, grid.runs[i], max_failures);
         if (s.state == RunState::done)
             ++done;
@@ -115,11 +121,11 @@ int run_campaign_locally(const CampaignPaths& paths, const CampaignGrid& grid,
             queue.push_back(i);
     }
     std::vector<std::size_t> failed;
-    for (std::size_t i = 0; i < grid.runs.size(); ++i)
+    for (const std::size_t i : mine)
         if (run_status(paths, grid.runs[i], max_failures).state == RunState::failed)
             failed.push_back(i);
     if (!o.quiet)
-        out << "campaign " << paths.dir.string() << ": " << grid.runs.size() << " runs, " << done
+        out << "campaign " << paths.dir.string() << ": " << mine.size() << " runs, " << done
             << " done, " << queue.size() << " to run, " << failed.size() << " failed; " << o.jobs
             << " at a time on " << o.threads << " thread" << (o.threads > 1 ? "s" : "") << " each"
             << std::endl;
@@ -178,7 +184,7 @@ int run_campaign_locally(const CampaignPaths& paths, const CampaignGrid& grid,
             ++done;
             if (!o.quiet)
                 out << "campaign: done " << run.id << " in " << format_duration(seconds) << " ("
-                    << done << "/" << grid.runs.size() << " done)" << std::endl;
+                    << done << "/" << mine.size() << " done)" << std::endl;
         } else if (code == kExitInterrupted || code == kExitTerminated) {
             if (!o.quiet)
                 out << "campaign: stopped " << run.id << " (checkpoint written)" << std::endl;
@@ -200,7 +206,7 @@ int run_campaign_locally(const CampaignPaths& paths, const CampaignGrid& grid,
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
     if (!o.quiet) {
-        out << "campaign: " << done << "/" << grid.runs.size() << " runs done after "
+        out << "campaign: " << done << "/" << mine.size() << " runs done after "
             << format_duration(seconds);
         if (elsewhere) out << "; " << elsewhere << " run by another runner";
         out << std::endl;

@@ -6,7 +6,9 @@
 // holds is left to it. SIGINT or SIGTERM is passed on to every run, which writes its checkpoint.
 #include <filesystem>
 #include <iosfwd>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "rodsea/campaign/campaign_store.hpp"
 
@@ -17,6 +19,7 @@ struct LocalExecutorOptions {
     int threads = 1;            // of each run
     bool retry_failed = false;  // give runs that failed twice two more tries
     bool quiet = false;
+    std::optional<std::vector<std::size_t>> only;  // these runs (indices into grid.runs); none: all
     std::filesystem::path executable;  // rodsea itself; empty: this process's executable
 };
 

@@ -51,8 +51,13 @@ const std::vector<CampaignTable>& campaign_tables() {
          "Keys set at the points that match: e.g. a longer duration at the densest points."},
         {"analysis", false, "What `rodsea campaign collect` runs on every finished run."},
         {"figure", true,
-         "A figure `collect` draws from the collected table: one curve per value of `series`, "
-         "error bars from the replicates."},
+         "A figure `collect` draws into collected/figures/. `kind = \"curve\"`: scalars of the "
+         "collected table against an axis, one curve per value of `series`, error bars from "
+         "the replicates. `\"map\"`: one scalar coloured over two axes (`x` and `series`), "
+         "with a contour at `level` (a phase diagram). `\"analysis\"`: one of `rodsea plot`'s "
+         "figures of each point's first replicate. `\"snapshot\"`: each point's final frame "
+         "(`rodsea render`). `\"movie\"`: the points' first replicates side by side in one "
+         "movie (`rodsea movie RUN1 RUN2 ...`). `when` picks the points."},
     };
     return tables;
 }
@@ -88,12 +93,28 @@ const std::vector<CampaignKey>& campaign_keys() {
          "The observables to compute (`rodsea analyze --observables`)."},
         {"analysis", "parameters", "table", "", "{}",
          "Analysis parameters (`rodsea analyze --param`), e.g. `{ \"flocks.eps\" = 2.25 }`."},
-        {"figure", "name", "string", "", "required", "The figure's file name, without .png."},
-        {"figure", "x", "string", "", "required", "The axis key on the horizontal axis."},
-        {"figure", "y", "array of strings", "", "required",
-         "Scalars of the analysis on the vertical axis (`P_polar`, `Sigma`, ...)."},
-        {"figure", "series", "string", "", "\"\"",
-         "An axis key: one curve per value. Empty: one curve per y."},
+        {"figure", "name", "string", "", "required",
+         "The figure's file name, without extension (a folder of PNGs for analysis and "
+         "snapshot, an .mp4 for movie)."},
+        {"figure", "kind", "string", "", "\"curve\"",
+         "One of curve, map, analysis, snapshot, movie."},
+        {"figure", "x", "string", "", "required (curve, map)",
+         "The axis key on the horizontal axis."},
+        {"figure", "y", "array of strings", "", "required (curve, map)",
+         "Scalars of the collected table (`P_polar`, `Sigma`, ...): on the vertical axis "
+         "(curve), or the one coloured (map)."},
+        {"figure", "series", "string", "", "\"\" (curve); required (map)",
+         "An axis key. Curve: one curve per value (empty: one curve per y). Map: the vertical "
+         "axis."},
+        {"figure", "level", "real", "the scalar's", "none",
+         "Map: the value whose contour is drawn, e.g. 0.5 for P = 0.5."},
+        {"figure", "plot", "string", "", "required (analysis)",
+         "Analysis: the figure of `rodsea plot` (g_r_theta, G_r_theta, autocorrelation, "
+         "flock_sizes, flocks_time, order_parameters, pair_correlation, segregation, "
+         "medium_velocity)."},
+        {"figure", "when", "table", "", "{} (every point)",
+         "The points drawn: axis keys and a value or an array of values, e.g. "
+         "`{ \"species.medium.area_fraction\" = [0.05, 0.80] }`."},
         {"figure", "xlabel", "string", "", "the key", "The horizontal axis' label."},
         {"figure", "ylabel", "string", "", "the scalars", "The vertical axis' label."},
         {"figure", "title", "string", "", "\"\"", "The figure's title."},
@@ -387,9 +408,21 @@ class CampaignReader {
         check_keys(t, "figure", path);
         CampaignFigure f;
         f.name = text(t, "name", path);
+        const std::string kind = text(t, "kind", path, "curve");
+        const std::vector<std::string> kinds{"curve", "map", "analysis", "snapshot", "movie"};
+        const auto k = std::find(kinds.begin(), kinds.end(), kind);
+        if (k == kinds.end()) {
+            const auto guess = config::closest_match(kind, kinds);
+            throw InvalidParameter(
+                path + ".kind", config::toml_literal(kind),
+                "curve, map, analysis, snapshot or movie",
+                config::join_why(guess ? "did you mean '" + *guess + "'?" : "", where(t)));
+        }
+        f.kind = static_cast<FigureKind>(k - kinds.begin());
         f.x = text(t, "x", path);
         f.y = strings(t, "y", path);
         f.series = text(t, "series", path);
+        f.plot = text(t, "plot", path);
         f.xlabel = text(t, "xlabel", path);
         f.ylabel = text(t, "ylabel", path);
         f.title = text(t, "title", path);
@@ -400,6 +433,30 @@ class CampaignReader {
                                            where(*n));
                 (std::string(flag) == "logx" ? f.logx : f.logy) = n->as_boolean()->get();
             }
+        if (const toml::node* n = t.get("level")) {
+            const auto v = n->value<double>();
+            if (!v || !std::isfinite(*v))
+                throw InvalidParameter(path + ".level", "", "a finite number", where(*n));
+            f.level = *v;
+        }
+        if (const toml::node* when = t.get("when")) {
+            if (!when->is_table())
+                throw InvalidParameter(path + ".when", "not a table", "an inline table",
+                                       where(*when));
+            for (auto&& [key, node] : *when->as_table()) {
+                const std::string wpath = path + ".when." + std::string(key.str());
+                std::vector<Value> values;
+                if (const toml::array* a = node.as_array())
+                    for (const toml::node& e : *a)
+                        values.push_back(value(e, wpath));
+                else
+                    values.push_back(value(node, wpath));
+                if (values.empty())
+                    throw InvalidParameter(wpath, "[]", "a value or a non-empty array",
+                                           where(node));
+                f.when.emplace_back(std::string(key.str()), std::move(values));
+            }
+        }
         const bool safe_name = !f.name.empty() && f.name.size() <= 100 &&
                                std::all_of(f.name.begin(), f.name.end(), [](char ch) {
                                    return std::isalnum(static_cast<unsigned char>(ch)) ||
@@ -408,9 +465,55 @@ class CampaignReader {
         if (!safe_name)
             throw InvalidParameter(path + ".name", config::toml_literal(f.name),
                                    "1 to 100 letters, digits, '_', '-' or '.'", where(t));
-        if (f.x.empty()) throw InvalidParameter(path + ".x", "missing", "an axis key", where(t));
-        if (f.y.empty())
-            throw InvalidParameter(path + ".y", "missing", "one or more scalar names", where(t));
+        const bool table_figure = f.kind == FigureKind::curve || f.kind == FigureKind::map;
+        const auto unused = [&](const char* key, bool given) {
+            if (given)
+                throw InvalidParameter(
+                    path + "." + key, "given",
+                    std::string("no ") + key + " for kind " + config::toml_literal(kind), where(t));
+        };
+        if (table_figure) {
+            if (f.x.empty())
+                throw InvalidParameter(path + ".x", "missing", "an axis key", where(t));
+            if (f.y.empty())
+                throw InvalidParameter(path + ".y", "missing", "one or more scalar names",
+                                       where(t));
+            unused("plot", !f.plot.empty());
+        } else {
+            unused("x", !f.x.empty());
+            unused("y", !f.y.empty());
+            unused("series", !f.series.empty());
+            unused("logx", t.contains("logx"));
+            unused("logy", t.contains("logy"));
+        }
+        if (f.kind == FigureKind::map) {
+            if (f.series.empty())
+                throw InvalidParameter(path + ".series", "missing",
+                                       "the axis key of the map's vertical axis", where(t));
+            if (f.y.size() != 1)
+                throw InvalidParameter(path + ".y", std::to_string(f.y.size()) + " scalars",
+                                       "the one scalar a map colours", where(t));
+        } else {
+            unused("level", f.level.has_value());
+        }
+        if (f.kind == FigureKind::analysis) {
+            const std::vector<std::string> plots{
+                "g_r_theta",        "G_r_theta",   "autocorrelation",
+                "flock_sizes",      "flocks_time", "order_parameters",
+                "pair_correlation", "segregation", "medium_velocity"};
+            if (std::find(plots.begin(), plots.end(), f.plot) == plots.end()) {
+                std::string list;
+                for (const std::string& p : plots)
+                    list += (list.empty() ? "" : ", ") + p;
+                const auto guess = config::closest_match(f.plot, plots);
+                throw InvalidParameter(
+                    path + ".plot", f.plot.empty() ? "missing" : config::toml_literal(f.plot),
+                    "one of " + list,
+                    config::join_why(guess ? "did you mean '" + *guess + "'?" : "", where(t)));
+            }
+        } else if (!table_figure) {
+            unused("plot", !f.plot.empty());
+        }
         return f;
     }
 
@@ -439,9 +542,30 @@ class CampaignReader {
             for (const KeySetting& w : c.overrides[i].when)
                 must_be_axis(w.first, "override[" + std::to_string(i) + "].when");
         for (std::size_t i = 0; i < c.figures.size(); ++i) {
-            must_be_axis(c.figures[i].x, "figure[" + std::to_string(i) + "].x");
-            if (!c.figures[i].series.empty())
-                must_be_axis(c.figures[i].series, "figure[" + std::to_string(i) + "].series");
+            const CampaignFigure& f = c.figures[i];
+            const std::string path = "figure[" + std::to_string(i) + "]";
+            if (!f.x.empty()) must_be_axis(f.x, path + ".x");
+            if (!f.series.empty()) must_be_axis(f.series, path + ".series");
+            for (const auto& [key, values] : f.when) {
+                must_be_axis(key, path + ".when");
+                const CampaignAxis& axis =
+                    *std::find_if(c.axes.begin(), c.axes.end(), [&](const CampaignAxis& a) {
+                        return std::find(a.keys.begin(), a.keys.end(), key) != a.keys.end();
+                    });
+                const std::size_t k =
+                    std::find(axis.keys.begin(), axis.keys.end(), key) - axis.keys.begin();
+                for (const Value& v : values)
+                    if (std::none_of(axis.values.begin(), axis.values.end(),
+                                     [&](const std::vector<Value>& tuple) {
+                                         return setting_text(tuple[k]) == setting_text(v);
+                                     }))
+                        throw InvalidParameter(path + ".when." + key, setting_text(v),
+                                               "a value of the axis", source_);
+            }
+            for (std::size_t j = 0; j < i; ++j)
+                if (c.figures[j].name == f.name)
+                    throw InvalidParameter(path + ".name", f.name, "a name no other figure has",
+                                           source_);
         }
     }
 
@@ -638,6 +762,22 @@ RunPlan config_with_settings(const std::string& base_toml, const std::string& ba
     } catch (const InvalidParameter& e) {
         throw e.in_context(what);
     }
+}
+
+const char* to_string(FigureKind kind) {
+    switch (kind) {
+        case FigureKind::curve:
+            return "curve";
+        case FigureKind::map:
+            return "map";
+        case FigureKind::analysis:
+            return "analysis";
+        case FigureKind::snapshot:
+            return "snapshot";
+        case FigureKind::movie:
+            return "movie";
+    }
+    return "?";
 }
 
 std::string campaign_reference_markdown() {

@@ -37,11 +37,23 @@ struct CampaignAnalysis {
     std::vector<std::pair<std::string, std::string>> parameters;  // --param KEY=VALUE
 };
 
+// What a [[figure]] draws: curves of collected scalars against an axis, a map of one scalar over
+// two axes (a phase diagram), one of `rodsea plot`'s figures of a run's analysis per point, the
+// final snapshot per point, or the points' runs side by side in one movie.
+enum class FigureKind { curve, map, analysis, snapshot, movie };
+const char* to_string(FigureKind kind);
+
 struct CampaignFigure {
-    std::string name;            // the PNG's name
-    std::string x;               // an axis key
-    std::vector<std::string> y;  // scalar names of the analysis (P_polar, Sigma, ...)
-    std::string series;          // an axis key: one curve per value; "" for one curve
+    std::string name;  // the file's name, without extension
+    FigureKind kind = FigureKind::curve;
+    std::string x;                // curve, map: an axis key
+    std::vector<std::string> y;   // curve: scalar names (P_polar, Sigma, ...); map: one
+    std::string series;           // curve: one curve per value ("" for one); map: vertical axis
+    std::optional<double> level;  // map: the contour drawn (P = 0.5 for the order boundary)
+    std::string plot;             // analysis: the `rodsea plot` figure (g_r_theta, ...)
+    // Which points (analysis, snapshot, movie, and every kind's curves): an axis key and the
+    // values it may take; empty: every point.
+    std::vector<std::pair<std::string, std::vector<config::Value>>> when;
     std::string xlabel, ylabel, title;
     bool logx = false, logy = false;
 };
