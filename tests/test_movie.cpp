@@ -42,6 +42,11 @@ class MovieCli : public ::testing::Test {
             frames.push_back(f);
         }
         write_constructed_run(run(), plan, frames, 0.01);
+        // The same rods written every 0.02 s (frames 0, 2, 4, 6), and a run that stops at 0.03 s.
+        write_constructed_run(path("every_other"), plan,
+                              {frames[0], frames[2], frames[4], frames[6]}, 0.02);
+        write_constructed_run(path("short"), plan, {frames[0], frames[1], frames[2], frames[3]},
+                              0.01);
     }
     static void TearDownTestSuite() { delete scratch_; }
     static fs::path run() { return scratch_->path() / "run"; }
@@ -53,8 +58,8 @@ class MovieCli : public ::testing::Test {
         std::vector<std::string> found;
         for (const auto& e : fs::directory_iterator(scratch_->path())) {
             const std::string name = e.path().filename().string();
-            if (name != "run" && name != keep && name.rfind("child.", 0) != 0 &&
-                name != "fake-ffmpeg")
+            if (name != "run" && name != "every_other" && name != "short" && name != keep &&
+                name.rfind("child.", 0) != 0 && name != "fake-ffmpeg")
                 found.push_back(name);
         }
         return found;
@@ -89,6 +94,57 @@ TEST_F(MovieCli, HoldsEveryRequestedFrameAsBrowserReadyH264) {
     EXPECT_NE(probe.find("nb_read_frames=4"), std::string::npos) << probe;
     EXPECT_TRUE(leftovers("every2.mp4").empty());
     fs::remove(mp4);
+}
+
+TEST_F(MovieCli, SeveralRunsSideBySideShowTheSameTimeInEveryPanel) {
+    const fs::path mp4 = path("grid.mp4");
+    const auto probe = [&](const std::string& entries) {
+        return shell_output(
+            "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+            "stream=" +
+            entries + " -of csv=p=0 '" + mp4.string() + "'");
+    };
+    // Two panels of 160 px side by side, over the 0 … 0.03 s that both runs have: 4 frames.
+    ChildResult r = run_rodsea({"movie", run().string(), path("short").string(), "-o", mp4.string(),
+                                "--size", "160", "--labels", "φ_a = 0.05,short"},
+                               scratch_->path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("4 frames (t = 0 to 0.03 s"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("2 × 1 panels"), std::string::npos) << r.out;
+    const std::string size = probe("width,height,nb_read_frames");
+    EXPECT_EQ(size.substr(0, 4), "320,") << size;
+    EXPECT_EQ(std::stoi(size.substr(4)) % 2, 0) << size;
+    EXPECT_NE(size.find(",4\n"), std::string::npos) << size;
+    fs::remove(mp4);
+
+    // Frames every 0.01 s against frames every 0.02 s are not in step; with --every 2 they are.
+    r = run_rodsea({"movie", run().string(), path("every_other").string(), "-o", mp4.string(),
+                    "--size", "160", "--quiet"},
+                   scratch_->path());
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("no frame at t = 0.01 s"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(mp4));
+    r = run_rodsea({"movie", run().string(), path("every_other").string(), "-o", mp4.string(),
+                    "--size", "160", "--every", "2", "--columns", "1", "--quiet"},
+                   scratch_->path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string stacked = probe("width,nb_read_frames");
+    EXPECT_EQ(stacked, "160,4\n") << stacked;
+    fs::remove(mp4);
+
+    // Refused before anything is drawn: a label missing, no -o for several runs, a grid option
+    // for one run.
+    for (const std::vector<std::string>& bad :
+         {std::vector<std::string>{"movie", run().string(), path("short").string(), "-o",
+                                   mp4.string(), "--labels", "one"},
+          std::vector<std::string>{"movie", run().string(), path("short").string()},
+          std::vector<std::string>{"movie", run().string(), "-o", mp4.string(), "--columns",
+                                   "1"}}) {
+        r = run_rodsea(bad, scratch_->path());
+        EXPECT_EQ(r.exit_code, 2) << r.err;
+        EXPECT_FALSE(fs::exists(mp4));
+    }
+    EXPECT_TRUE(leftovers().empty());
 }
 
 TEST_F(MovieCli, TimeWindowSelectsItsFrames) {
