@@ -38,7 +38,7 @@ EXTERNAL = {
     "fftw3.h": {"analysis"},
     "toml++/": {"config", "calibration"},
     "hdf5.h": {"io"},
-    "nlohmann/": {"analyze"},
+    "nlohmann/": {"analyze", "campaign"},
     "CLI/": {"cli"},
     "cairo": {"view"},
     "png.h": {"view"},

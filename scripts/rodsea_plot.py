@@ -3,8 +3,9 @@
 
 usage: /usr/bin/python3 scripts/rodsea_plot.py INPUT -o DIR [--dpi D] [--only F,..] [--quiet]
 
-INPUT is one run's analysis (RUN_DIR/analysis, RUN_DIR itself, or its analysis.json), or a table
-with one row per run (`rodsea analyze RUN1 RUN2 ... --table T.csv`, or a run's summary.csv).
+INPUT is one run's analysis (RUN_DIR/analysis, RUN_DIR itself, or its analysis.json), a table
+with one row per run (`rodsea analyze RUN1 RUN2 ... --table T.csv`, or a run's summary.csv), or a
+campaign's collected/figures.json (written by `rodsea campaign collect`).
 Writes PNG files into DIR (created if needed) and prints each one's path on stdout, one per
 line; notes on what was skipped go to stderr (--quiet silences them). Every input is read and
 checked before the first figure is drawn; each PNG is written under a temporary name and
@@ -59,7 +60,8 @@ def only(text, known, kind):
              for n in text.split(",") if n.strip()}
     unknown = sorted(names - set(known))
     if unknown or not names:
-        what = "a run's analysis" if kind == "run" else "a table of runs"
+        what = {"run": "a run's analysis", "table": "a table of runs",
+                "campaign": "the campaign"}[kind]
         raise PlotError(f"invalid --only = '{text}': allowed figures of {what}: "
                         + ", ".join(n[:-len(".png")] for n in known))
     return names
@@ -78,14 +80,17 @@ def main(argv):
             sys.stderr.write(f"rodsea plot: the Python module '{module}' is missing from "
                              f"{sys.executable}; {INSTALL_HINT}{other}\n")
             return EXIT_FAILURE
-    from rodsea_plots import common, inputs, run_figures, table_figures
+    from rodsea_plots import campaign_figures, common, inputs, run_figures, table_figures
 
     log = common.Log(args.quiet)
     try:
         source = inputs.classify(args.input)
-        figures = run_figures if source.kind == "run" else table_figures
+        figures = {"run": run_figures, "table": table_figures,
+                   "campaign": campaign_figures}[source.kind]
         if args.only is not None:
-            log.only = only(args.only, figures.ALL_FIGURES, source.kind)
+            known = (campaign_figures.figure_names(source.spec) if source.kind == "campaign"
+                     else figures.ALL_FIGURES)
+            log.only = only(args.only, known, source.kind)
         jobs = figures.plan(source, log)  # reads and checks everything; writes nothing
         plt = common.pyplot()
         writer = common.FigureWriter(args.output, args.dpi, plt)

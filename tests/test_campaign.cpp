@@ -48,6 +48,36 @@ values = [5.0, 7.0]
 
 [analysis]
 observables = ["order"]
+
+[[figure]]
+name = "P_vs_phi"
+x = "species.medium.area_fraction"
+y = ["P_polar", "S_medium"]
+series = "drive.gamma"
+
+[[figure]]
+name = "ordered"
+kind = "map"
+x = "species.medium.area_fraction"
+series = "drive.gamma"
+y = ["P_polar"]
+level = 0.5
+
+[[figure]]
+name = "last_frames"
+kind = "snapshot"
+when = { "drive.gamma" = 7.0 }
+
+[[figure]]
+name = "order_in_time"
+kind = "analysis"
+plot = "order_parameters"
+when = { "species.medium.area_fraction" = 0.1, "drive.gamma" = [5.0, 7.0] }
+
+[[figure]]
+name = "side_by_side"
+kind = "movie"
+when = { "drive.gamma" = 5.0 }
 )";
 
 std::string read_file(const fs::path& p) {
@@ -196,6 +226,29 @@ TEST(Campaign, InterruptedAndContinuedWithNothingLostOrRunTwiceThenCollected) {
         // With two replicates the error is at least their spread, |a − b| / 2.
         EXPECT_GE(std::stod(p.at("P_polar_err")), 0.5 * std::abs(a - b) * (1 - 1e-12)) << name;
     }
+
+    // The figures: curves and the map from points.csv, each showing the points its `when` picks.
+    const fs::path figures = dir / "collected" / "figures";
+    EXPECT_NE(collected.out.find("collect: 7 figure files"), std::string::npos) << collected.out;
+    for (const char* png : {"P_vs_phi.png", "ordered.png"})
+        EXPECT_GT(fs::file_size(figures / png), 10'000u) << png;
+    const std::string spec = read_file(dir / "collected" / "figures.json");
+    EXPECT_NE(spec.find("\"x\": \"medium.area_fraction\""), std::string::npos) << spec;
+    EXPECT_EQ(count_of(spec, "\"medium.area_fraction=0.3,gamma=7\""), 2) << spec;
+    // Snapshots and analysis figures: one per chosen point, from its first finished replicate.
+    EXPECT_TRUE(fs::exists(figures / "last_frames" / "medium.area_fraction=0.1,gamma=7.png"));
+    EXPECT_TRUE(fs::exists(figures / "last_frames" / "medium.area_fraction=0.3,gamma=7.png"));
+    EXPECT_EQ(std::distance(fs::directory_iterator(figures / "last_frames"), {}), 2);
+    for (const char* point :
+         {"medium.area_fraction=0.1,gamma=5", "medium.area_fraction=0.1,gamma=7"})
+        EXPECT_TRUE(fs::exists(figures / "order_in_time" / point / "order_parameters.png"))
+            << point;
+    // The movie: the two gamma = 5 points side by side, all 31 frames in step.
+    const std::string probe = shell_output(
+        "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+        "stream=width,nb_read_frames -of csv=p=0 '" +
+        (figures / "side_by_side.mp4").string() + "'");
+    EXPECT_EQ(probe, "960,31\n") << probe;
 }
 
 // Three runs in a 20 mm box; the gamma = 7 one lasts 30 s of simulated time (about a minute of

@@ -110,6 +110,24 @@ TEST(CampaignFile, BadFilesAreRefusedByKeyWithTheAllowedValues) {
         {"[[axis]]\nkey = \"drive.gamma\"\nvalues = [5.0]\n[[figure]]\nname = \"f\"\nx = "
          "\"drive.gama\"\ny = [\"P_polar\"]\n",
          "did you mean 'drive.gamma'"},
+        {"[[axis]]\nkey = \"drive.gamma\"\nvalues = [5.0]\n[[figure]]\nname = \"f\"\nkind = "
+         "\"snapshots\"\n",
+         "did you mean 'snapshot'"},
+        {"[[axis]]\nkey = \"drive.gamma\"\nvalues = [5.0]\n[[figure]]\nname = \"f\"\nkind = "
+         "\"map\"\nx = \"drive.gamma\"\ny = [\"P_polar\"]\n",
+         "figure[0].series"},
+        {"[[axis]]\nkey = \"drive.gamma\"\nvalues = [5.0]\n[[figure]]\nname = \"f\"\nkind = "
+         "\"analysis\"\nplot = \"g_r_teta\"\n",
+         "did you mean 'g_r_theta'"},
+        {"[[axis]]\nkey = \"drive.gamma\"\nvalues = [5.0]\n[[figure]]\nname = \"f\"\nkind = "
+         "\"snapshot\"\nx = \"drive.gamma\"\n",
+         "no x for kind \"snapshot\""},
+        {"[[axis]]\nkey = \"drive.gamma\"\nvalues = [5.0]\n[[figure]]\nname = \"f\"\nkind = "
+         "\"movie\"\nwhen = { \"drive.gamma\" = 6.0 }\n",
+         "figure[0].when.drive.gamma"},
+        {"[[axis]]\nkey = \"drive.gamma\"\nvalues = [5.0]\n[[figure]]\nname = \"f\"\nkind = "
+         "\"movie\"\n[[figure]]\nname = \"f\"\nkind = \"snapshot\"\n",
+         "a name no other figure has"},
         {"[[override]]\nset = { \"time.durration\" = 1.0 }\n", "did you mean 'duration'"},
         {"[campaign]\nbase = \"missing.toml\"\n", "missing.toml"},
     };

@@ -49,6 +49,11 @@ def classify(path):
     name = os.path.basename(path)
     if name.endswith(".json"):
         if name != "analysis.json":
+            from .campaign_figures import CampaignInput, read_spec
+
+            spec = read_spec(path)
+            if spec is not None:
+                return CampaignInput(path, spec)
             raise PlotError(
                 f"{path}: a JSON file other than a run's analysis.json "
                 "(written by `rodsea analyze`)"

@@ -229,15 +229,15 @@ def phase_diagram(runs, log, p, d_r, d_r_name):
     return [("phase_diagram.png", draw)]
 
 
-def boundary_triangles(x, y, p):
-    """A triangulation of the runs for the P = 0.5 contour, or (None, why not)."""
+def boundary_triangles(x, y, p, level=ORDERED, name="P", noun="run"):
+    """A triangulation of the points for the contour p = level, or (None, why not)."""
     from matplotlib.tri import Triangulation
 
     points = {(a, b) for a, b in zip(x, y)}
     if len(points) < 3:
         return None, "needs at least 3 distinct points"
-    if not (np.any(p > ORDERED) and np.any(p <= ORDERED)):
-        return None, f"every run is on one side of P = {ORDERED}"
+    if not (np.any(p > level) and np.any(p <= level)):
+        return None, f"every {noun} is on one side of {name} = {level}"
     span_x, span_y = np.ptp(x), np.ptp(y)
     if span_x == 0 or span_y == 0:
         return None, "the runs lie on one line"

@@ -8,6 +8,7 @@
 #include "rodsea/calibration/calibration_table.hpp"
 #include "rodsea/campaign/campaign_collect.hpp"
 #include "rodsea/campaign/campaign_cost.hpp"
+#include "rodsea/campaign/campaign_figures.hpp"
 #include "rodsea/campaign/local_executor.hpp"
 #include "rodsea/campaign/slurm_executor.hpp"
 #include "rodsea/cli/exit_codes.hpp"
@@ -239,7 +240,18 @@ int collect(const Arguments& a, std::ostream& out) {
             out << " " << id;
         out << "\n";
     }
-    return kExitOk;
+    if (l.campaign.figures.empty()) return kExitOk;
+    const FiguresDrawn drawn = draw_campaign_figures(l.paths, l.campaign, l.grid, out);
+    out << "collect: " << drawn.files.size() << " figure files in "
+        << (l.paths.collected() / "figures").string() << "\n";
+    if (!a.has("--quiet"))
+        for (const fs::path& f : drawn.files)
+            out << "  " << f.string() << "\n";
+    for (const std::string& u : drawn.unfinished)
+        out << "collect: " << u << "\n";
+    for (const std::string& p : drawn.problems)
+        out << "collect: FAILED " << p << "\n";
+    return drawn.problems.empty() ? kExitOk : kExitFailure;
 }
 
 }  // namespace
