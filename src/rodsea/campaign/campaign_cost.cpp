@@ -20,6 +20,7 @@ namespace {
 // Big enough for cells and neighbour lists to behave as in a large box, small enough to build
 // and step in a fraction of a second at the densest packings.
 constexpr double kMeasureBox = 40.0;  // mm
+constexpr double kMeasureBoxes[] = {kMeasureBox, 60.0, 90.0, 130.0};
 
 double measure_rate(const RunPlan& plan, double seconds, std::uint64_t spheres) {
     using Clock = std::chrono::steady_clock;
@@ -53,10 +54,13 @@ std::vector<PointCost> estimate_campaign_cost(const Campaign& campaign, const Ca
         c.steps = p.plan.total_steps();
         c.sphere_steps = static_cast<double>(c.spheres) * static_cast<double>(c.steps);
         c.core_hours = std::numeric_limits<double>::quiet_NaN();
-        if (seconds_per_point > 0.0) {
+        // The lattice start of a dense mixture needs room for whole rows: a box too small for
+        // the packing is replaced by a larger one, up to the point's own.
+        for (const double box : kMeasureBoxes) {
+            if (seconds_per_point <= 0.0) break;
             CampaignScaling small = scaling;
             const double side = p.plan.engine.box.lx;
-            small.scale = scaling.scale * std::min(1.0, kMeasureBox / side);
+            small.scale = scaling.scale * std::min(1.0, box / side);
             try {
                 const RunPlan probe =
                     small.scale == scaling.scale
@@ -67,10 +71,11 @@ std::vector<PointCost> estimate_campaign_cost(const Campaign& campaign, const Ca
                 c.measured_rate =
                     measure_rate(probe, seconds_per_point, estimate_resources(probe).spheres);
                 c.core_hours = c.sphere_steps * campaign.replicates / c.measured_rate / 3600.0;
+                break;
             } catch (const InvalidParameter&) {
-                // The small box cannot hold a packing that the full box can: left unmeasured.
-                c.measured_rate = 0.0;
+                c.measured_rate = 0.0;  // this box cannot hold the packing; try a larger one
             }
+            if (box >= side) break;
         }
         costs.push_back(c);
     }
@@ -90,9 +95,15 @@ void describe_campaign(const Campaign& campaign, const CampaignGrid& grid,
     if (scaling.scale != 1.0) out << "; --scale " << exact_number(scaling.scale);
     if (scaling.duration) out << "; --duration " << exact_number(*scaling.duration) << " s";
     out << "\n\n";
-    char line[512];
-    std::snprintf(line, sizeof line, "  %-40s %8s %9s %10s %9s %11s %12s %10s\n", "point", "box mm",
-                  "bodies", "spheres", "dur. s", "steps", "Msph-steps/s", "core-h");
+    std::size_t width = 5;
+    for (const CampaignPoint& p : grid.points)
+        width = std::max(width, p.name.size());
+    width = std::min<std::size_t>(width, 90);
+    const int w = static_cast<int>(width);
+    char line[640];
+    std::snprintf(line, sizeof line, "  %-*s %7s %8s %9s %7s %11s %12s %9s %8s\n", w, "point",
+                  "box mm", "bodies", "spheres", "dur. s", "steps", "Msph-steps/s", "core-h",
+                  "meas. mm");
     out << line;
     double total_sphere_steps = 0.0, total_core_hours = 0.0;
     bool all_measured = true;
@@ -102,29 +113,34 @@ void describe_campaign(const Campaign& campaign, const CampaignGrid& grid,
         total_sphere_steps += c.sphere_steps * campaign.replicates;
         all_measured = all_measured && std::isfinite(c.core_hours);
         if (std::isfinite(c.core_hours)) total_core_hours += c.core_hours;
-        const std::string name = p.name.size() > 40 ? p.name.substr(0, 37) + "..." : p.name;
-        std::snprintf(line, sizeof line, "  %-40s %8.1f %9llu %10llu %9g %11llu %12s %10s\n",
-                      name.c_str(), p.plan.engine.box.lx, static_cast<unsigned long long>(c.bodies),
-                      static_cast<unsigned long long>(c.spheres), p.plan.control.duration,
-                      static_cast<unsigned long long>(c.steps),
-                      c.measured_rate > 0 ? format_number(c.measured_rate / 1e6).c_str() : "-",
-                      std::isfinite(c.core_hours) ? format_number(c.core_hours).c_str() : "-");
+        const std::string name =
+            p.name.size() > width ? p.name.substr(0, width - 3) + "..." : p.name;
+        std::snprintf(
+            line, sizeof line, "  %-*s %7.1f %8llu %9llu %7g %11llu %12s %9s %8s\n", w,
+            name.c_str(), p.plan.engine.box.lx, static_cast<unsigned long long>(c.bodies),
+            static_cast<unsigned long long>(c.spheres), p.plan.control.duration,
+            static_cast<unsigned long long>(c.steps),
+            c.measured_rate > 0 ? format_number(std::round(c.measured_rate / 1e5) / 10).c_str()
+                                : "-",
+            std::isfinite(c.core_hours) ? format_number(std::round(c.core_hours * 10) / 10).c_str()
+                                        : "-",
+            c.measured_rate > 0 ? format_number(std::round(c.measured_box)).c_str() : "-");
         out << line;
     }
     out << "\n  total " << format_number(total_sphere_steps) << " sphere-steps";
     if (all_measured && !costs.empty()) {
         out << ", about " << format_number(total_core_hours)
-            << " core-hours on this machine (throughput measured on one thread in a box of at "
-               "most "
+            << " core-hours on this machine (throughput measured on one thread in a box of "
             << format_number(kMeasureBox)
-            << " mm at each point's area fractions, from its initial state)";
+            << " mm, larger where a dense packing needs it, at each point's area fractions, from "
+               "its initial state)";
         const double wall_hours = total_core_hours / (std::max(1, jobs) * std::max(1, threads));
         out << "\n  with --jobs " << jobs << " --threads " << threads << ": about "
             << format_duration(wall_hours * 3600.0)
             << " of wall time if threads scale perfectly (they do not: see docs/performance.md)";
     } else {
-        out << " (cost not measured: --no-measure, or a point's packing does not fit the "
-               "measuring box)";
+        out << " (cost not measured: --no-measure, or a point could not be built in a box of "
+               "up to 130 mm)";
     }
     out << "\n  GPU-hours: no GPU backend yet (issue 17)\n";
 }
