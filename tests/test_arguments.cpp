@@ -41,6 +41,8 @@ TEST(Arguments, SplitsWordsByTheFlagsTheCommandDeclares) {
     EXPECT_EQ(a.value("--frame"), "-1");      // a negative number is a value, not a flag
     EXPECT_EQ(a.values_of("--param"), (std::vector<std::string>{"a=1", "b=2"}));
     EXPECT_TRUE(a.has("--quiet"));
+    EXPECT_TRUE(a.has("--output"));  // given with a value, as -o
+    EXPECT_FALSE(parse_arguments({"in.h5"}, spec()).has("--output"));
     EXPECT_FALSE(a.help);
     EXPECT_EQ(parse_arguments({"--frame=7"}, spec()).value("--frame"), "7");
 }

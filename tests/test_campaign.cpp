@@ -424,7 +424,23 @@ TEST(Campaign, BadOptionsAndChangedCampaignsAreRefusedBeforeAnyRunStarts) {
         {{"campaign", "run", f, "--scale", "2"}, "--scale"},
         {{"campaign", "run", f, "--jobs", "0"}, "--jobs"},
         {{"campaign", "status", f, "--out", dir}, "no campaign here yet"},
+        {{"campaign", "submit", f, "--out", dir, "--dry-run", "--time", "1h"}, "--time"},
+        {{"campaign", "submit", f, "--out", dir, "--dry-run", "--time", "30", "--signal-seconds",
+          "1800"},
+         "less than the wall time (1800 s)"},
+        {{"campaign", "submit", f, "--out", dir, "--dry-run", "--pack", "2", "--jobs", "3",
+          "--cpus-per-task", "4"},
+         "at most --pack (2)"},
+        {{"campaign", "submit", f, "--out", dir, "--dry-run", "--partition", "a b"}, "--partition"},
+        {{"campaign", "run", f, "--out", dir, "--task", "0"}, "--task together with --tasks"},
     };
+    // Without SLURM's commands on PATH, submit is refused (a dry run is not).
+    {
+        const ScopedEnv no_slurm("PATH", "/nonexistent");
+        const ChildResult r = run_rodsea({"campaign", "submit", f, "--out", dir}, scratch.path());
+        EXPECT_EQ(r.exit_code, 2) << r.err;
+        EXPECT_NE(r.err.find("no sbatch on PATH"), std::string::npos) << r.err;
+    }
     for (const BadRun& c : cases) {
         const ChildResult r = run_rodsea(c.args, scratch.path());
         EXPECT_EQ(r.exit_code, c.message == "no campaign here yet" ? 74 : 2) << r.err;

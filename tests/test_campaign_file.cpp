@@ -8,6 +8,7 @@
 #include <string>
 
 #include "rodsea/campaign/campaign_points.hpp"
+#include "rodsea/campaign/slurm_executor.hpp"
 #include "rodsea/config/campaign_file.hpp"
 #include "rodsea/error.hpp"
 
@@ -162,6 +163,18 @@ TEST(CampaignFile, TheDocsKeyReferenceIsTheKeyTable) {
     EXPECT_EQ(doc.substr(doc.size() - reference.size()), reference)
         << "docs/campaigns.md ends with the key reference: regenerate its end with `rodsea "
            "campaign --reference`";
+}
+
+TEST(SlurmTime, ReadsEveryFormOfSbatchTimeAndRefusesTheRest) {
+    EXPECT_EQ(parse_slurm_time("90"), 90 * 60);                // minutes
+    EXPECT_EQ(parse_slurm_time("2:30"), 150);                  // MM:SS
+    EXPECT_EQ(parse_slurm_time("12:00:00"), 12 * 3600);        // HH:MM:SS
+    EXPECT_EQ(parse_slurm_time("2-12"), 60 * 3600);            // D-HH
+    EXPECT_EQ(parse_slurm_time("1-00:30"), 24 * 3600 + 1800);  // D-HH:MM
+    EXPECT_EQ(parse_slurm_time("1-00:00:10"), 24 * 3600 + 10);
+    // Under a minute, past a year, or not sbatch's syntax.
+    for (const char* bad : {"", "0:30", "1h", "12:00:00:00", "-5", "1:-3", "400-00", "1.5"})
+        EXPECT_THROW(parse_slurm_time(bad), InvalidParameter) << bad;
 }
 
 }  // namespace

@@ -141,7 +141,7 @@ int run(const Arguments& a, std::ostream& out) {
                                    "the task's line of --tasks (or $SLURM_ARRAY_TASK_ID)");
         o.only =
             runs_of_task(*tasks, parse_count("--task", task ? *task : env, 0, 1'000'000), l.grid);
-    } else if (a.has("--task")) {
+    } else if (a.value("--task")) {
         throw InvalidParameter("--task", *a.value("--task"), "--task together with --tasks");
     }
     std::vector<RunPlan> plans;
@@ -185,6 +185,7 @@ int submit(const Arguments& a, std::ostream& out) {
                                "at most --cpus-per-task (" + std::to_string(o.cpus_per_task) + ")");
     o.retry_failed = a.has("--retry-failed");
     o.dry_run = a.has("--dry-run");
+    check_slurm_options(o);
     std::vector<RunPlan> plans;
     for (const CampaignRun& r : l.grid.runs)
         plans.push_back(run_plan(l.campaign, l.grid, r, l.scaling, calibration_table_lookup()));

@@ -183,7 +183,11 @@ long parse_slurm_time(const std::string& text) {
     long days = 0;
     const std::size_t dash = rest.find('-');
     if (dash != std::string::npos) {
-        days = std::stol("0" + rest.substr(0, dash));
+        const std::string day_text = rest.substr(0, dash);
+        if (day_text.empty() || day_text.size() > 4 ||
+            day_text.find_first_not_of("0123456789") != std::string::npos)
+            return bad();
+        days = std::stol(day_text);
         rest = rest.substr(dash + 1);
     }
     std::vector<long> parts;
@@ -242,8 +246,7 @@ std::vector<std::size_t> runs_of_task(const fs::path& file, long index, const Ca
     return runs;
 }
 
-int submit_campaign_to_slurm(const CampaignPaths& paths, const Campaign& campaign,
-                             const CampaignGrid& grid, const SlurmOptions& o, std::ostream& out) {
+long check_slurm_options(const SlurmOptions& o) {
     if (!o.dry_run && !on_path("sbatch"))
         throw InvalidParameter("submit", "no sbatch on PATH",
                                "a machine with SLURM's commands (a cluster's login node)",
@@ -253,6 +256,12 @@ int submit_campaign_to_slurm(const CampaignPaths& paths, const Campaign& campaig
         throw InvalidParameter(
             "--signal-seconds", std::to_string(signal),
             "10 s or more and less than the wall time (" + std::to_string(o.time_seconds) + " s)");
+    return signal;
+}
+
+int submit_campaign_to_slurm(const CampaignPaths& paths, const Campaign& campaign,
+                             const CampaignGrid& grid, const SlurmOptions& o, std::ostream& out) {
+    const long signal = check_slurm_options(o);
     const fs::path executable =
         fs::absolute(o.executable.empty() ? fs::read_symlink("/proc/self/exe") : o.executable);
     fs::create_directories(slurm_dir(paths) / "logs");

@@ -42,6 +42,10 @@ struct SlurmOptions {
 // throws InvalidParameter naming `--time`.
 long parse_slurm_time(const std::string& text);
 
+// Checks what can be checked before anything is written: sbatch on PATH (unless a dry run), the
+// signal's lead time against the wall time. Returns that lead time, s; throws InvalidParameter.
+long check_slurm_options(const SlurmOptions& options);
+
 // Submits the runs not yet done (nor failed twice, nor held by a runner, nor in an array still
 // queued). Returns an ExitCode: 0 when submitted (or nothing is left), 1 when sbatch refused.
 int submit_campaign_to_slurm(const CampaignPaths& paths, const Campaign& campaign,

@@ -112,7 +112,8 @@ std::string flag_list(const CommandSpec& spec) {
 }  // namespace
 
 bool Arguments::has(std::string_view flag) const {
-    return std::find(switches.begin(), switches.end(), flag) != switches.end();
+    return std::find(switches.begin(), switches.end(), flag) != switches.end() ||
+           value(flag).has_value();
 }
 
 std::optional<std::string> Arguments::value(std::string_view flag) const {

@@ -35,6 +35,7 @@ struct Arguments {
     std::vector<std::string> switches;                        // --flag
     bool help = false;                                        // --help was given
 
+    // Whether `flag` was given, as a switch or with a value.
     bool has(std::string_view flag) const;
     // The value given for `flag` (parse_arguments refuses a flag given twice unless it repeats).
     std::optional<std::string> value(std::string_view flag) const;

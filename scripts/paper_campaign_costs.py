@@ -1,0 +1,51 @@
+#!/usr/bin/python3
+"""The cost table of docs/campaigns.md: every campaign of examples/paper/ planned at its full size
+with its throughput measured on this machine (`rodsea campaign plan`, 0.3 s of stepping per
+point; a few minutes in all), printed as a Markdown table.
+
+    /usr/bin/python3 scripts/paper_campaign_costs.py [RODSEA]    (default build/rodsea)
+"""
+import pathlib
+import re
+import subprocess
+import sys
+import tempfile
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+CORES = 64  # the "on a cluster" column: one node of a typical cluster
+
+
+def plan(rodsea, campaign, out):
+    text = subprocess.run([rodsea, "campaign", "plan", str(campaign), "--out", out],
+                          check=True, capture_output=True, text=True).stdout
+    points, replicates, runs = re.search(
+        r"(\d+) points? x (\d+) replicates? .*= (\d+) runs", text).groups()
+    steps = float(re.search(r"total ([0-9.e+]+) sphere-steps", text).group(1))
+    hours = re.search(r"about ([0-9.e+]+) core-hours", text)
+    return int(points), int(replicates), int(runs), steps, float(hours.group(1)) if hours else None
+
+
+def main():
+    rodsea = sys.argv[1] if len(sys.argv) > 1 else str(ROOT / "build" / "rodsea")
+    print("| campaign | points × replicates = runs | sphere-steps | core-hours here "
+          f"| on {CORES} cores |")
+    print("|---|---|---|---|---|")
+    total = [0, 0.0, 0.0]
+    with tempfile.TemporaryDirectory() as scratch:
+        for campaign in sorted((ROOT / "examples" / "paper").glob("*.toml")):
+            if campaign.stem.startswith("base-"):
+                continue
+            points, replicates, runs, steps, hours = plan(rodsea, campaign,
+                                                          f"{scratch}/{campaign.stem}")
+            days = "—" if hours is None else f"{hours / CORES / 24:.1f} days"
+            print(f"| `{campaign.stem}` | {points} × {replicates} = {runs} | {steps:.2g} "
+                  f"| {'not measured' if hours is None else f'{hours:,.0f}'} | {days} |")
+            total[0] += runs
+            total[1] += steps
+            total[2] += hours or 0.0
+    print(f"| **all** | {total[0]} runs | {total[1]:.2g} | {total[2]:,.0f} "
+          f"| {total[2] / CORES / 24:.0f} days |")
+
+
+if __name__ == "__main__":
+    main()
