@@ -54,6 +54,7 @@ name = "P_vs_phi"
 x = "species.medium.area_fraction"
 y = ["P_polar", "S_medium"]
 series = "drive.gamma"
+serieslabel = "Γ"
 
 [[figure]]
 name = "ordered"
@@ -235,6 +236,7 @@ TEST(Campaign, InterruptedAndContinuedWithNothingLostOrRunTwiceThenCollected) {
     const std::string spec = read_file(dir / "collected" / "figures.json");
     EXPECT_NE(spec.find("\"x\": \"medium.area_fraction\""), std::string::npos) << spec;
     EXPECT_EQ(count_of(spec, "\"medium.area_fraction=0.3,gamma=7\""), 2) << spec;
+    EXPECT_NE(spec.find("\"serieslabel\": \"Γ\""), std::string::npos) << spec;
     // Snapshots and analysis figures: one per chosen point, from its first finished replicate.
     EXPECT_TRUE(fs::exists(figures / "last_frames" / "medium.area_fraction=0.1,gamma=7.png"));
     EXPECT_TRUE(fs::exists(figures / "last_frames" / "medium.area_fraction=0.3,gamma=7.png"));
@@ -432,6 +434,7 @@ TEST(Campaign, BadOptionsAndChangedCampaignsAreRefusedBeforeAnyRunStarts) {
           "--cpus-per-task", "4"},
          "at most --pack (2)"},
         {{"campaign", "submit", f, "--out", dir, "--dry-run", "--partition", "a b"}, "--partition"},
+        {{"campaign", "submit", f, "--out", dir + " 2", "--dry-run"}, "no spaces"},
         {{"campaign", "run", f, "--out", dir, "--task", "0"}, "--task together with --tasks"},
     };
     // Without SLURM's commands on PATH, submit is refused (a dry run is not).
@@ -447,6 +450,7 @@ TEST(Campaign, BadOptionsAndChangedCampaignsAreRefusedBeforeAnyRunStarts) {
         EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
     }
     EXPECT_FALSE(fs::exists(dir));
+    EXPECT_FALSE(fs::exists(dir + " 2"));
     // A campaign directory keeps its scaling and its points' configs.
     ASSERT_EQ(run_rodsea({"campaign", "run", f, "--out", dir, "--duration", "0.01", "--quiet"},
                          scratch.path())

@@ -4,7 +4,7 @@ scalar over two axes with its contour at a level (the paper's phase diagrams).
 
 The input is collected/figures.json, written by collect:
   {"rodsea_campaign_figures": 1, "table": "points.csv",
-   "figures": [{"name", "kind": "curve"|"map", "x", "y": [...], "series", "level",
+   "figures": [{"name", "kind": "curve"|"map", "x", "y": [...], "series", "serieslabel", "level",
                 "xlabel", "ylabel", "title", "logx", "logy", "points": [point names]}]}
 x and series are columns of the table (the axes, named as collect names them); y are scalars,
 each with its <y>_err column; `points` are the rows (by their `point` column) the figure shows.
@@ -68,12 +68,13 @@ def curve(table, rows, f, log):
         log.note(f"no {f['name']}.png: the axis {f['x']} is not numeric")
         return []
     series = f.get("series") or ""
+    series_name = f.get("serieslabel") or series
     groups = []  # (label, y column, rows)
     for y in f["y"]:
         if series:
             text = table.text(series)
             for value in sorted_values([text[i] for i in rows]):
-                label = f"{series} = {value}" + (f", {y}" if len(f["y"]) > 1 else "")
+                label = f"{series_name} = {value}" + (f", {y}" if len(f["y"]) > 1 else "")
                 groups.append((label, y, [i for i in rows if text[i] == value]))
         else:
             groups.append((y if len(f["y"]) > 1 else "", y, rows))

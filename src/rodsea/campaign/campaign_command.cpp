@@ -186,6 +186,12 @@ int submit(const Arguments& a, std::ostream& out) {
     o.retry_failed = a.has("--retry-failed");
     o.dry_run = a.has("--dry-run");
     check_slurm_options(o);
+    // The scripts name the directory in #SBATCH lines, which sbatch splits at spaces.
+    const std::string dir = fs::absolute(l.paths.dir).string();
+    if (dir.find_first_of(" \t\n'\"\\$`%") != std::string::npos)
+        throw InvalidParameter("--out", dir,
+                               "a directory whose path has no spaces, quotes, $ or % (it is "
+                               "written into #SBATCH lines)");
     std::vector<RunPlan> plans;
     for (const CampaignRun& r : l.grid.runs)
         plans.push_back(run_plan(l.campaign, l.grid, r, l.scaling, calibration_table_lookup()));

@@ -94,6 +94,7 @@ FiguresDrawn draw_campaign_figures(const CampaignPaths& paths, const Campaign& c
                          {"x", short_key(f.x)},
                          {"y", f.y},
                          {"series", f.series.empty() ? "" : short_key(f.series)},
+                         {"serieslabel", f.series_label},
                          {"xlabel", f.xlabel},
                          {"ylabel", f.ylabel},
                          {"title", f.title},

@@ -117,6 +117,8 @@ const std::vector<CampaignKey>& campaign_keys() {
          "`{ \"species.medium.area_fraction\" = [0.05, 0.80] }`."},
         {"figure", "xlabel", "string", "", "the key", "The horizontal axis' label."},
         {"figure", "ylabel", "string", "", "the scalars", "The vertical axis' label."},
+        {"figure", "serieslabel", "string", "", "the series key",
+         "Curve: the series' name in the legend, e.g. \"φ_p\" for curves labelled φ_p = 0.05."},
         {"figure", "title", "string", "", "\"\"", "The figure's title."},
         {"figure", "logx", "boolean", "", "false", "A logarithmic horizontal axis."},
         {"figure", "logy", "boolean", "", "false", "A logarithmic vertical axis."},
@@ -425,6 +427,7 @@ class CampaignReader {
         f.plot = text(t, "plot", path);
         f.xlabel = text(t, "xlabel", path);
         f.ylabel = text(t, "ylabel", path);
+        f.series_label = text(t, "serieslabel", path);
         f.title = text(t, "title", path);
         for (const char* flag : {"logx", "logy"})
             if (const toml::node* n = t.get(flag)) {
@@ -483,6 +486,7 @@ class CampaignReader {
             unused("x", !f.x.empty());
             unused("y", !f.y.empty());
             unused("series", !f.series.empty());
+            unused("serieslabel", !f.series_label.empty());
             unused("logx", t.contains("logx"));
             unused("logy", t.contains("logy"));
         }

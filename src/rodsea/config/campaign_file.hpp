@@ -55,6 +55,7 @@ struct CampaignFigure {
     // values it may take; empty: every point.
     std::vector<std::pair<std::string, std::vector<config::Value>>> when;
     std::string xlabel, ylabel, title;
+    std::string series_label;  // the legend's name for the series axis ("φ_p"); "": the key
     bool logx = false, logy = false;
 };
 
