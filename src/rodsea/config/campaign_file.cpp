@@ -306,7 +306,7 @@ class CampaignReader {
             std::ostringstream s;
             s << in.rdbuf();
             c.base_toml = s.str();
-            c.base_source = path.string();
+            c.base_source = path.lexically_normal().string();
         }
     }
 
