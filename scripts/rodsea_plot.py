@@ -95,8 +95,16 @@ def main(argv):
         plt = common.pyplot()
         writer = common.FigureWriter(args.output, args.dpi, plt)
         writer.prepare()
+        failed = []
         for name, draw in jobs:
-            writer.save(draw(plt), name)
+            try:
+                writer.save(draw(plt), name)
+            except common.PlotError:
+                raise
+            except Exception as e:  # one figure's failure does not cost the others
+                failed.append(f"{name}: {type(e).__name__}: {e}")
+        if failed:
+            raise common.PlotError("could not draw " + "; ".join(failed), common.EXIT_FAILURE)
     except common.PlotError as e:
         sys.stderr.write(f"rodsea plot: {e}\n")
         return e.code

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace rodsea {
 
@@ -37,6 +38,16 @@ inline std::string read_text(const std::filesystem::path& path) {
     std::stringstream s;
     s << in.rdbuf();
     return s.str();
+}
+
+// The temporary files of an atomic write of `target` (<target>.tmp.<pid>) that are left.
+inline std::vector<std::filesystem::path> temporaries_of(const std::filesystem::path& target) {
+    std::vector<std::filesystem::path> found;
+    std::error_code ec;
+    const std::string prefix = target.filename().string() + ".tmp";
+    for (const auto& e : std::filesystem::directory_iterator(target.parent_path(), ec))
+        if (e.path().filename().string().rfind(prefix, 0) == 0) found.push_back(e.path());
+    return found;
 }
 
 }  // namespace rodsea

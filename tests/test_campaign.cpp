@@ -436,6 +436,8 @@ TEST(Campaign, BadOptionsAndChangedCampaignsAreRefusedBeforeAnyRunStarts) {
         {{"campaign", "submit", f, "--out", dir, "--dry-run", "--partition", "a b"}, "--partition"},
         {{"campaign", "submit", f, "--out", dir + " 2", "--dry-run"}, "no spaces"},
         {{"campaign", "run", f, "--out", dir, "--task", "0"}, "--task together with --tasks"},
+        {{"campaign", "status", f, "--out", dir, "--jobs", "2"}, "an option of campaign status"},
+        {{"campaign", "run", f, "--out", dir, "--partition", "x"}, "an option of campaign run"},
     };
     // Without SLURM's commands on PATH, submit is refused (a dry run is not).
     {

@@ -125,7 +125,8 @@ TEST(CampaignFile, BadFilesAreRefusedByKeyWithTheAllowedValues) {
          "no x for kind \"snapshot\""},
         {"[[axis]]\nkey = \"drive.gamma\"\nvalues = [5.0]\n[[figure]]\nname = \"f\"\nkind = "
          "\"movie\"\nwhen = { \"drive.gamma\" = 6.0 }\n",
-         "figure[0].when.drive.gamma"},
+         "figure[0].when.drive.gamma = 6: allowed a value of the axis: 5"},
+        {"[campaign]\nname = \"fig 1\"\n", "campaign.name"},
         {"[[axis]]\nkey = \"drive.gamma\"\nvalues = [5.0]\n[[figure]]\nname = \"f\"\nkind = "
          "\"movie\"\n[[figure]]\nname = \"f\"\nkind = \"snapshot\"\n",
          "a name no other figure has"},

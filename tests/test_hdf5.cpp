@@ -86,7 +86,7 @@ TEST(Checkpoint, RoundTripIsBitExact) {
         EXPECT_EQ(std::memcmp(&r.bodies.velocity[i], &c.bodies.velocity[i], sizeof(Vec3)), 0);
         EXPECT_EQ(std::memcmp(&r.bodies.spin[i], &c.bodies.spin[i], sizeof(Vec3)), 0);
     }
-    EXPECT_FALSE(std::filesystem::exists(dir.path() / "c.h5.tmp"));
+    EXPECT_TRUE(temporaries_of(dir.path() / "c.h5").empty());
 }
 
 TEST(Checkpoint, ForeignOrTruncatedFilesAreRefusedByPath) {
@@ -120,7 +120,7 @@ TEST(AtomicFile, AFailedWriteLeavesThePreviousContent) {
                                          }),
                  FileError);
     EXPECT_EQ(read_text(target), "first\n");
-    EXPECT_FALSE(std::filesystem::exists(target.string() + ".tmp"));
+    EXPECT_TRUE(temporaries_of(target).empty());
 }
 
 TEST(SeriesCsv, ReopenKeepsExactlyTheCheckpointedRows) {

@@ -224,7 +224,12 @@ TEST_F(MovieCli, CtrlCStopsCleanlyAndLeavesNoFile) {
         fake_ffmpeg(path("fake-ffmpeg"), "sleep 2\ncat > /dev/null\nexit 0\n").string());
     const fs::path mp4 = path("stopped.mp4");
     ChildOptions options;
-    options.interrupt_when = [&] { return fs::exists(mp4.string() + ".tmp.ffmpeg.log"); };
+    // ffmpeg has started once its log (beside the temporary movie) exists.
+    options.interrupt_when = [&] {
+        for (const fs::path& t : temporaries_of(mp4))
+            if (t.extension() == ".log") return true;
+        return false;
+    };
     const ChildResult r = run_rodsea({"movie", run().string(), "-o", mp4.string(), "--quiet"},
                                      scratch_->path(), options);
     ASSERT_TRUE(r.interrupted);

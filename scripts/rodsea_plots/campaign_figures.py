@@ -145,9 +145,10 @@ def scalar_map(table, rows, f, log):
         fig.colorbar(dots, ax=ax, label=y)
         for values, set_limits, log_axis in ((x, ax.set_xlim, f.get("logx")),
                                              (v, ax.set_ylim, f.get("logy"))):
+            positive = values[values > 0]
             low, high = float(np.min(values)), float(np.max(values))
-            if log_axis and low > 0:
-                set_limits(low / 1.3, high * 1.3)
+            if log_axis and positive.size:  # a log axis shows the positive values only
+                set_limits(float(positive.min()) / 1.3, float(positive.max()) * 1.3)
             else:
                 pad = 0.08 * (high - low) if high > low else max(0.05, 0.1 * abs(low))
                 set_limits(low - pad, high + pad)
@@ -155,7 +156,7 @@ def scalar_map(table, rows, f, log):
             ax.annotate(f"{z[i]:.2f}", (x[i], v[i]), textcoords="offset points", xytext=(6, 5),
                         fontsize=7, color="0.3")
         ax.set_xlabel(f.get("xlabel") or f["x"])
-        ax.set_ylabel(f.get("ylabel") or f["series"])
+        ax.set_ylabel(f.get("ylabel") or f.get("serieslabel") or f["series"])
         if f.get("logx"):
             ax.set_xscale("log")
         if f.get("logy"):
@@ -190,5 +191,13 @@ def plan(source, log):
         if not rows:
             log.note(f"no {f['name']}.png: none of its points has finished runs yet")
             continue
+        shown = {f["x"], f.get("series") or f["x"]}
+        others = [a for a in f.get("axes", []) if a not in shown and table.has(a)]
+        if others:
+            varying = [a for a in others if len({table.text(a)[i] for i in rows}) > 1]
+            if varying:
+                log.note(f"{f['name']}.png: its points also differ in {', '.join(varying)}, "
+                         "which neither x nor series shows: points of several curves are "
+                         "joined (give `when` or `series` for them)")
         jobs += (scalar_map if f["kind"] == "map" else curve)(table, rows, f, log)
     return jobs

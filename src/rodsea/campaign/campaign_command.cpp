@@ -1,5 +1,6 @@
 #include "rodsea/campaign/campaign_command.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -165,7 +166,7 @@ int submit(const Arguments& a, std::ostream& out) {
     if (const auto t = a.value("--time")) o.time = *t;
     o.time_seconds = parse_slurm_time(o.time);
     if (const auto s = a.value("--signal-seconds"))
-        o.signal_seconds = parse_count("--signal-seconds", *s, 10, 86'400);
+        o.signal_seconds = parse_count("--signal-seconds", *s, 10, 65'535);  // sbatch's limit
     const auto count = [&](const char* flag, long fallback, long lo, long hi) {
         const auto v = a.value(flag);
         return static_cast<int>(v ? parse_count(flag, *v, lo, hi) : fallback);
@@ -261,6 +262,34 @@ int collect(const Arguments& a, std::ostream& out) {
     return drawn.problems.empty() ? kExitOk : kExitFailure;
 }
 
+// Each subcommand's options: one given to another subcommand is refused, not ignored.
+void check_options_of(const std::string& sub, const Arguments& a) {
+    static const std::vector<std::pair<std::string, std::vector<std::string>>> options{
+        {"plan", {"--jobs", "--threads", "--measure-seconds", "--no-measure"}},
+        {"run", {"--jobs", "--threads", "--retry-failed", "--quiet", "--tasks", "--task"}},
+        {"status", {}},
+        {"collect", {"--quiet"}},
+        {"submit",
+         {"--jobs", "--partition", "--account", "--time", "--signal-seconds", "--cpus-per-task",
+          "--gpus-per-task", "--throttle", "--pack", "--resubmit", "--retry-failed", "--dry-run"}}};
+    const auto own =
+        std::find_if(options.begin(), options.end(), [&](const auto& o) { return o.first == sub; });
+    if (own == options.end()) return;  // an unknown subcommand is named below
+    std::vector<std::string> allowed{"--out", "--scale", "--duration"};
+    allowed.insert(allowed.end(), own->second.begin(), own->second.end());
+    std::vector<std::string> given = a.switches;
+    for (const auto& [flag, value] : a.values)
+        given.push_back(flag);
+    for (const std::string& flag : given) {
+        if (std::find(allowed.begin(), allowed.end(), flag) != allowed.end()) continue;
+        std::string list;
+        for (const std::string& f : allowed)
+            list += (list.empty() ? "" : ", ") + f;
+        throw InvalidParameter(flag, "with campaign " + sub,
+                               "an option of campaign " + sub + ": " + list);
+    }
+}
+
 }  // namespace
 
 int campaign_command(const std::vector<std::string>& args, std::ostream& out, std::ostream&) {
@@ -273,6 +302,7 @@ int campaign_command(const std::vector<std::string>& args, std::ostream& out, st
     }
     const std::vector<std::string> subcommands{"plan", "run", "status", "collect", "submit"};
     const std::string sub = a.positional.empty() ? "" : a.positional[0];
+    check_options_of(sub, a);
     if (sub == "plan") return plan(a, out);
     if (sub == "run") return run(a, out);
     if (sub == "status") return status(a, out);

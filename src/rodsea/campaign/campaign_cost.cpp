@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <ostream>
 
 #include "rodsea/builder/initial_state.hpp"
@@ -56,7 +57,9 @@ std::vector<PointCost> estimate_campaign_cost(const Campaign& campaign, const Ca
         c.core_hours = std::numeric_limits<double>::quiet_NaN();
         // The lattice start of a dense mixture needs room for whole rows: a box too small for
         // the packing is replaced by a larger one, up to the point's own.
-        for (const double box : kMeasureBoxes) {
+        std::vector<double> boxes(std::begin(kMeasureBoxes), std::end(kMeasureBoxes));
+        boxes.push_back(p.plan.engine.box.lx);  // at last the point's own
+        for (const double box : boxes) {
             if (seconds_per_point <= 0.0) break;
             CampaignScaling small = scaling;
             const double side = p.plan.engine.box.lx;
@@ -139,8 +142,8 @@ void describe_campaign(const Campaign& campaign, const CampaignGrid& grid,
             << format_duration(wall_hours * 3600.0)
             << " of wall time if threads scale perfectly (they do not: see docs/performance.md)";
     } else {
-        out << " (cost not measured: --no-measure, or a point could not be built in a box of "
-               "up to 130 mm)";
+        out << " (cost not measured: --no-measure, or a point could not be built even in its own "
+               "box)";
     }
     out << "\n  GPU-hours: no GPU backend yet (issue 17)\n";
 }

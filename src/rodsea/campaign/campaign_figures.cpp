@@ -87,6 +87,10 @@ FiguresDrawn draw_campaign_figures(const CampaignPaths& paths, const Campaign& c
 
     // Curves and maps: one call of `rodsea plot` on a description of them all.
     nlohmann::json table_figures = nlohmann::json::array();
+    std::vector<std::string> axis_columns;
+    for (const CampaignAxis& a : campaign.axes)
+        for (const std::string& k : a.keys)
+            axis_columns.push_back(short_key(k));
     for (const CampaignFigure& f : campaign.figures) {
         if (f.kind != FigureKind::curve && f.kind != FigureKind::map) continue;
         nlohmann::json j{{"name", f.name},
@@ -95,6 +99,7 @@ FiguresDrawn draw_campaign_figures(const CampaignPaths& paths, const Campaign& c
                          {"y", f.y},
                          {"series", f.series.empty() ? "" : short_key(f.series)},
                          {"serieslabel", f.series_label},
+                         {"axes", axis_columns},
                          {"xlabel", f.xlabel},
                          {"ylabel", f.ylabel},
                          {"title", f.title},
@@ -166,10 +171,15 @@ FiguresDrawn draw_campaign_figures(const CampaignPaths& paths, const Campaign& c
                 if (code == 0) drawn.files.push_back(png);
             } else {
                 const fs::path out = folder / point->name;
-                code = picture(plot_command,
-                               {(run_dir / "analysis").string(), "-o", out.string(), "--only",
-                                f.plot, "--quiet"},
-                               dir, drawn, message);
+                const std::size_t before = drawn.files.size();
+                code =
+                    picture(plot_command,
+                            {(run_dir / "analysis").string(), "-o", out.string(), "--only", f.plot},
+                            dir, drawn, message);
+                if (code == 0 && drawn.files.size() == before) {
+                    code = 1;  // the run's analysis cannot give this figure: say why
+                    if (message.empty()) message = "rodsea plot drew nothing";
+                }
             }
             if (code != 0)
                 drawn.problems.push_back("figure " + f.name + " at " + point->name + ": " +

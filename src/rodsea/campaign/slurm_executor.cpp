@@ -1,9 +1,12 @@
 #include "rodsea/campaign/slurm_executor.hpp"
 
+#include <fcntl.h>
 #include <pwd.h>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cstdlib>
 #include <fstream>
 #include <ostream>
@@ -117,8 +120,11 @@ void record_job(const CampaignPaths& paths, const JobRecord& r) {
 // The job ids (array base ids) this user has in the queue, from squeue.
 std::set<std::string> queued_jobs() {
     const passwd* user = ::getpwuid(::getuid());
-    const Captured c = capture(
-        {"squeue", "-h", "-o", "%F", "-u", user ? user->pw_name : std::to_string(::getuid())});
+    // COMPLETING is left out: a follow-up job (afterany) may start while its array's tasks are
+    // still completing, and must then see their unfinished runs as free.
+    const Captured c = capture({"squeue", "-h", "-o", "%F", "-t",
+                                "PENDING,RUNNING,SUSPENDED,CONFIGURING,REQUEUED,RESIZING", "-u",
+                                user ? user->pw_name : std::to_string(::getuid())});
     if (c.exit_code != 0)
         throw FileError("squeue", "failed (exit " + std::to_string(c.exit_code) + "): " + c.output);
     std::set<std::string> ids;
@@ -162,11 +168,15 @@ std::string sbatch(const std::vector<std::string>& options, const fs::path& scri
     const Captured c = capture(words);
     message = c.output;
     if (c.exit_code != 0) return "";
-    // --parsable prints "id" or "id;cluster", possibly after warnings.
+    // --parsable prints "id" or "id;cluster"; warnings (stderr, merged here) are other lines.
     std::istringstream lines(c.output);
     std::string id;
-    for (std::string line; std::getline(lines, line);)
-        if (!line.empty()) id = line.substr(0, line.find(';'));
+    for (std::string line; std::getline(lines, line);) {
+        const std::string first = line.substr(0, line.find(';'));
+        if (!first.empty() && first.find_first_not_of("0123456789") == std::string::npos)
+            id = first;
+    }
+    if (id.empty()) message = "no job id in sbatch's answer:\n" + c.output;
     return id;
 }
 
@@ -268,6 +278,16 @@ int submit_campaign_to_slurm(const CampaignPaths& paths, const Campaign& campaig
 
     // What is queued already: runs of arrays still in the queue are theirs; a follow-up job
     // already queued will submit what is left, so this one need not.
+    // One submit at a time per campaign (a user's and a follow-up job's): each reads what the
+    // other recorded.
+    const fs::path lock_path = slurm_dir(paths) / "submit.lock";
+    const int lock = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (lock < 0) throw FileError(lock_path.string(), "cannot be created");
+    struct Unlock {
+        int fd;
+        ~Unlock() { ::close(fd); }
+    } unlock{lock};
+    if (::flock(lock, LOCK_EX) != 0) throw FileError(lock_path.string(), "cannot be locked");
     std::set<std::string> queued;
     if (!o.dry_run) queued = queued_jobs();
     const char* own = std::getenv("SLURM_JOB_ID");
@@ -329,7 +349,10 @@ int submit_campaign_to_slurm(const CampaignPaths& paths, const Campaign& campaig
     }
     write_file_atomically(tasks_file(paths, k), task_lines);
 
-    const std::string name = "rodsea-" + campaign.name;
+    std::string name = "rodsea-" + campaign.name;
+    for (char& ch : name)  // a job name is one word of letters, digits, '.', '_', '-'
+        if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '.' && ch != '_' && ch != '-')
+            ch = '_';
     const int threads = std::max(1, o.cpus_per_task / o.jobs);
     std::string array = "0-" + std::to_string(tasks - 1);
     if (o.throttle > 0) array += "%" + std::to_string(o.throttle);
@@ -342,7 +365,7 @@ int submit_campaign_to_slurm(const CampaignPaths& paths, const Campaign& campaig
                        std::to_string(threads)});
     if (o.retry_failed) task_words.push_back("--retry-failed");
     const fs::path logs = fs::absolute(slurm_dir(paths) / "logs");
-    std::string script = "#!/bin/bash\n# rodsea campaign " + campaign.name + ", submission " +
+    std::string script = "#!/bin/bash\n# rodsea campaign " + name.substr(7) + ", submission " +
                          std::to_string(k) + ": " + std::to_string(to_submit.size()) + " runs in " +
                          std::to_string(tasks) + " array tasks (tasks-" + std::to_string(k) +
                          ".txt: one line per task). Written by `rodsea campaign submit`.\n"
@@ -387,7 +410,7 @@ int submit_campaign_to_slurm(const CampaignPaths& paths, const Campaign& campaig
         if (!o.partition.empty()) words.insert(words.end(), {"--partition", o.partition});
         if (!o.account.empty()) words.insert(words.end(), {"--account", o.account});
         if (o.retry_failed) words.push_back("--retry-failed");
-        std::string text = "#!/bin/bash\n# rodsea campaign " + campaign.name +
+        std::string text = "#!/bin/bash\n# rodsea campaign " + name.substr(7) +
                            ": submits what submission " + std::to_string(k) +
                            " left unfinished, once its array has ended (" +
                            std::to_string(o.resubmit - 1) + " more follow-ups after this).\n";
@@ -402,7 +425,8 @@ int submit_campaign_to_slurm(const CampaignPaths& paths, const Campaign& campaig
 
     if (o.dry_run) {
         out << "submit: dry run, nothing submitted; `sbatch " << array_script.string()
-            << "` submits it";
+            << "` submits it (an array submitted by hand is not recorded in jobs.txt: a later "
+               "submit may take its runs too, and the locks then keep each run to one task)";
         if (!resubmit_script.empty())
             out << ", then `sbatch --dependency=afterany:<its job id> " << resubmit_script
                 << "` the follow-up";

@@ -291,6 +291,16 @@ class CampaignReader {
     void read_campaign(const toml::table& t, Campaign& c) const {
         check_keys(t, "campaign", "campaign");
         c.name = text(t, "name", "campaign");
+        const bool safe_name = c.name.size() <= 100 && c.name != "." && c.name != ".." &&
+                               std::all_of(c.name.begin(), c.name.end(), [](char ch) {
+                                   return std::isalnum(static_cast<unsigned char>(ch)) ||
+                                          ch == '_' || ch == '-' || ch == '.';
+                               });
+        if (t.contains("name") && (c.name.empty() || !safe_name))
+            throw InvalidParameter("campaign.name", config::toml_literal(c.name),
+                                   "1 to 100 letters, digits, '_', '-' or '.' (it names the "
+                                   "output directory and the cluster's jobs)",
+                                   where(*t.get("name")));
         c.description = text(t, "description", "campaign");
         c.replicates = static_cast<int>(integer(t, "replicates", "campaign", 1, 1, 1000));
         c.first_seed = static_cast<std::uint64_t>(
@@ -438,8 +448,13 @@ class CampaignReader {
             }
         if (const toml::node* n = t.get("level")) {
             const auto v = n->value<double>();
-            if (!v || !std::isfinite(*v))
-                throw InvalidParameter(path + ".level", "", "a finite number", where(*n));
+            if (!v || !std::isfinite(*v)) {
+                const std::string given =
+                    n->is_string() ? config::toml_literal(std::string(n->as_string()->get()))
+                    : v            ? std::to_string(*v)
+                                   : "not a number";
+                throw InvalidParameter(path + ".level", given, "a finite number", where(*n));
+            }
             f.level = *v;
         }
         if (const toml::node* when = t.get("when")) {
@@ -448,6 +463,11 @@ class CampaignReader {
                                        where(*when));
             for (auto&& [key, node] : *when->as_table()) {
                 const std::string wpath = path + ".when." + std::string(key.str());
+                if (node.is_table())
+                    throw InvalidParameter(wpath, "a table",
+                                           "keys in quotes with their dots: { \"" +
+                                               std::string(key.str()) + ".name\" = ... }",
+                                           where(node));
                 std::vector<Value> values;
                 if (const toml::array* a = node.as_array())
                     for (const toml::node& e : *a)
@@ -489,6 +509,9 @@ class CampaignReader {
             unused("serieslabel", !f.series_label.empty());
             unused("logx", t.contains("logx"));
             unused("logy", t.contains("logy"));
+            unused("xlabel", !f.xlabel.empty());
+            unused("ylabel", !f.ylabel.empty());
+            unused("title", !f.title.empty());
         }
         if (f.kind == FigureKind::map) {
             if (f.series.empty())
@@ -562,9 +585,13 @@ class CampaignReader {
                     if (std::none_of(axis.values.begin(), axis.values.end(),
                                      [&](const std::vector<Value>& tuple) {
                                          return setting_text(tuple[k]) == setting_text(v);
-                                     }))
+                                     })) {
+                        std::string list;
+                        for (const std::vector<Value>& tuple : axis.values)
+                            list += (list.empty() ? "" : ", ") + setting_text(tuple[k]);
                         throw InvalidParameter(path + ".when." + key, setting_text(v),
-                                               "a value of the axis", source_);
+                                               "a value of the axis: " + list, source_);
+                    }
             }
             for (std::size_t j = 0; j < i; ++j)
                 if (c.figures[j].name == f.name)

@@ -22,7 +22,9 @@ void sync_file(const std::filesystem::path& path) {
 
 void replace_file_atomically(const std::filesystem::path& path,
                              const std::function<void(const std::filesystem::path&)>& write) {
-    const std::filesystem::path tmp = path.string() + ".tmp";
+    // Unique per process: runners that write the same file at the same moment (the tasks of a
+    // job array preparing one campaign directory) must not truncate each other's temporary.
+    const std::filesystem::path tmp = path.string() + ".tmp." + std::to_string(::getpid());
     try {
         write(tmp);
         sync_file(tmp);

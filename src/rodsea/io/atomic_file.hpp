@@ -1,6 +1,7 @@
 #pragma once
-// Files that are never seen half-written: written to a temporary name in the same directory,
-// flushed to disk, then renamed over the target (rename is atomic on POSIX file systems).
+// Files that are never seen half-written: written to a temporary name in the same directory
+// (<path>.tmp.<pid>), flushed to disk, then renamed over the target (rename is atomic on POSIX
+// file systems).
 #include <filesystem>
 #include <functional>
 #include <string>

@@ -73,6 +73,23 @@ std::string default_label(const std::string& run_dir) {
                                                              : (parent / p.filename()).string();
 }
 
+// Cairo draws UTF-8 only; a label of other bytes would fail the first frame.
+bool valid_utf8(const std::string& text) {
+    for (std::size_t i = 0; i < text.size();) {
+        const auto byte = static_cast<unsigned char>(text[i]);
+        const std::size_t length = byte < 0x80           ? 1
+                                   : (byte >> 5) == 0x6  ? 2
+                                   : (byte >> 4) == 0xE  ? 3
+                                   : (byte >> 3) == 0x1E ? 4
+                                                         : 0;
+        if (length == 0 || i + length > text.size()) return false;
+        for (std::size_t k = 1; k < length; ++k)
+            if ((static_cast<unsigned char>(text[i + k]) & 0xC0) != 0x80) return false;
+        i += length;
+    }
+    return true;
+}
+
 std::vector<std::string> split_labels(const std::string& text) {
     std::vector<std::string> labels;
     std::string label;
@@ -142,6 +159,12 @@ int movie_command(const std::vector<std::string>& words, std::ostream& out, std:
         for (const std::string& p : args.positional)
             labels.push_back(default_label(p));
     }
+    for (std::size_t i = 0; i < labels.size(); ++i)
+        if (!valid_utf8(labels[i]))
+            throw InvalidParameter(
+                args.value("--labels") ? "--labels" : "RUN_DIR",
+                args.value("--labels") ? "label " + std::to_string(i + 1) : args.positional[i],
+                "labels in UTF-8 text", args.value("--labels") ? "" : "give --labels");
     const int columns = static_cast<int>(
         args.value("--columns")
             ? parse_count("--columns", *args.value("--columns"), 1, static_cast<long long>(n))
