@@ -276,8 +276,6 @@ int submit_campaign_to_slurm(const CampaignPaths& paths, const Campaign& campaig
         fs::absolute(o.executable.empty() ? fs::read_symlink("/proc/self/exe") : o.executable);
     fs::create_directories(slurm_dir(paths) / "logs");
 
-    // What is queued already: runs of arrays still in the queue are theirs; a follow-up job
-    // already queued will submit what is left, so this one need not.
     // One submit at a time per campaign (a user's and a follow-up job's): each reads what the
     // other recorded.
     const fs::path lock_path = slurm_dir(paths) / "submit.lock";
@@ -288,6 +286,8 @@ int submit_campaign_to_slurm(const CampaignPaths& paths, const Campaign& campaig
         ~Unlock() { ::close(fd); }
     } unlock{lock};
     if (::flock(lock, LOCK_EX) != 0) throw FileError(lock_path.string(), "cannot be locked");
+    // What is queued already: runs of arrays still in the queue are theirs; a follow-up job
+    // already queued will submit what is left, so this one need not.
     std::set<std::string> queued;
     if (!o.dry_run) queued = queued_jobs();
     const char* own = std::getenv("SLURM_JOB_ID");
