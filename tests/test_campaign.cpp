@@ -18,12 +18,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// 4 points × 2 seeds of 6 polar rods in a 20 mm box, 0.15 s each (about 0.3 s of wall time).
-const char* const kCampaign = R"([campaign]
-name = "grid"
-replicates = 2
-
-[base.box]
+// The base of the campaigns here: 6 polar rods and a sparse medium in a 20 mm box.
+const std::string kTinyRods = R"([base.box]
 side = 20.0
 [[base.species]]
 name = "polar"
@@ -34,7 +30,14 @@ name = "medium"
 kind = "apolar_rod"
 length = 2.5
 area_fraction = 0.1
-[base.time]
+)";
+
+// 4 points × 2 seeds, 0.15 s each (about 0.3 s of wall time).
+const std::string kCampaign = R"([campaign]
+name = "grid"
+replicates = 2
+
+)" + kTinyRods + R"([base.time]
 duration = 0.15
 [base.output]
 interval = 0.005
@@ -256,21 +259,10 @@ TEST(Campaign, InterruptedAndContinuedWithNothingLostOrRunTwiceThenCollected) {
 // Three runs in a 20 mm box; the gamma = 7 one lasts 30 s of simulated time (about a minute of
 // one core here), so that with a one-minute wall time it is stopped by SLURM's signal at least
 // once and must be resubmitted; the other two take about a second each.
-const char* const kSlurmCampaign = R"([campaign]
+const std::string kSlurmCampaign = R"([campaign]
 name = "cluster"
 
-[base.box]
-side = 20.0
-[[base.species]]
-name = "polar"
-kind = "polar_rod"
-count = 6
-[[base.species]]
-name = "medium"
-kind = "apolar_rod"
-length = 2.5
-area_fraction = 0.1
-[base.time]
+)" + kTinyRods + R"([base.time]
 duration = 0.5
 [base.output]
 interval = 0.05

@@ -62,6 +62,18 @@ def sorted_values(values):
     return distinct
 
 
+def finish_axes(ax, f, default_ylabel):
+    """The figure's labels, log scales and title, as its [[figure]] gives them."""
+    ax.set_xlabel(f.get("xlabel") or f["x"])
+    ax.set_ylabel(f.get("ylabel") or default_ylabel)
+    if f.get("logx"):
+        ax.set_xscale("log")
+    if f.get("logy"):
+        ax.set_yscale("log")
+    if f.get("title"):
+        ax.set_title(f["title"], fontsize=10)
+
+
 def curve(table, rows, f, log):
     x_all = numeric(table.text(f["x"]))
     if x_all is None:
@@ -89,14 +101,7 @@ def curve(table, rows, f, log):
             ax.errorbar(x_all[members], ys[members], yerr=errs[members],
                         marker=MARKERS[k % len(MARKERS)], ms=5, capsize=3, lw=1.2,
                         label=label or None)
-        ax.set_xlabel(f.get("xlabel") or f["x"])
-        ax.set_ylabel(f.get("ylabel") or ", ".join(f["y"]))
-        if f.get("logx"):
-            ax.set_xscale("log")
-        if f.get("logy"):
-            ax.set_yscale("log")
-        if f.get("title"):
-            ax.set_title(f["title"], fontsize=10)
+        finish_axes(ax, f, ", ".join(f["y"]))
         if any(label for label, _, _ in groups):
             ax.legend(loc="best", fontsize=8)
         return fig
@@ -155,14 +160,7 @@ def scalar_map(table, rows, f, log):
         for i in range(len(z)):
             ax.annotate(f"{z[i]:.2f}", (x[i], v[i]), textcoords="offset points", xytext=(6, 5),
                         fontsize=7, color="0.3")
-        ax.set_xlabel(f.get("xlabel") or f["x"])
-        ax.set_ylabel(f.get("ylabel") or f.get("serieslabel") or f["series"])
-        if f.get("logx"):
-            ax.set_xscale("log")
-        if f.get("logy"):
-            ax.set_yscale("log")
-        if f.get("title"):
-            ax.set_title(f["title"], fontsize=10)
+        finish_axes(ax, f, f.get("serieslabel") or f["series"])
         return fig
 
     return [(name + ".png", draw)]

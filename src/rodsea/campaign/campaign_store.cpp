@@ -49,15 +49,9 @@ void check_scaling(const CampaignPaths& paths, const CampaignScaling& scaling) {
 }
 
 // Several runners (the tasks of a job array) prepare the same directory at the same moment: a
-// file that already says the same is left alone, and losing a race to an identical write is no
-// error.
+// file that already says the same is left alone (each writer has its own temporary file).
 void write_unless_same(const fs::path& path, const std::string& text) {
-    if (read_text(path) == text) return;
-    try {
-        write_file_atomically(path, text);
-    } catch (const FileError&) {
-        if (read_text(path) != text) throw;
-    }
+    if (read_text(path) != text) write_file_atomically(path, text);
 }
 
 }  // namespace

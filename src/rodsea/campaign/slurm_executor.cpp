@@ -3,7 +3,6 @@
 #include <fcntl.h>
 #include <pwd.h>
 #include <sys/file.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cctype>
@@ -14,6 +13,7 @@
 #include <sstream>
 #include <vector>
 
+#include "rodsea/cli/child_process.hpp"
 #include "rodsea/cli/exit_codes.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
@@ -27,36 +27,16 @@ namespace {
 
 struct Captured {
     int exit_code = 127;
-    std::string output;  // stdout and stderr together
+    std::string output, errors;  // what it printed on stdout, on stderr
 };
 
-// Runs a program found on PATH and captures what it prints; exit 127 when it cannot be started.
+// Runs a program found on PATH and captures what it prints.
 Captured capture(const std::vector<std::string>& words) {
-    int pipe_fds[2];
-    if (::pipe(pipe_fds) != 0) return {};
-    std::vector<std::string> storage = words;
-    std::vector<char*> argv;
-    for (std::string& w : storage)
-        argv.push_back(w.data());
-    argv.push_back(nullptr);
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-        ::dup2(pipe_fds[1], STDOUT_FILENO);
-        ::dup2(pipe_fds[1], STDERR_FILENO);
-        ::close(pipe_fds[0]);
-        ::close(pipe_fds[1]);
-        ::execvp(argv[0], argv.data());
-        ::_exit(127);
-    }
-    ::close(pipe_fds[1]);
+    std::ostringstream out, err;
     Captured c;
-    char buffer[4096];
-    for (ssize_t n; (n = ::read(pipe_fds[0], buffer, sizeof buffer)) > 0;)
-        c.output.append(buffer, static_cast<std::size_t>(n));
-    ::close(pipe_fds[0]);
-    int status = 0;
-    if (pid > 0 && ::waitpid(pid, &status, 0) == pid)
-        c.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    c.exit_code = run_program(words, out, err);
+    c.output = out.str();
+    c.errors = err.str();
     return c;
 }
 
@@ -126,7 +106,7 @@ std::set<std::string> queued_jobs() {
                                 "PENDING,RUNNING,SUSPENDED,CONFIGURING,REQUEUED,RESIZING", "-u",
                                 user ? user->pw_name : std::to_string(::getuid())});
     if (c.exit_code != 0)
-        throw FileError("squeue", "failed (exit " + std::to_string(c.exit_code) + "): " + c.output);
+        throw FileError("squeue", "failed (exit " + std::to_string(c.exit_code) + "): " + c.errors);
     std::set<std::string> ids;
     std::istringstream lines(c.output);
     for (std::string id; lines >> id;)
@@ -166,9 +146,9 @@ std::string sbatch(const std::vector<std::string>& options, const fs::path& scri
     words.insert(words.end(), options.begin(), options.end());
     words.push_back(script.string());
     const Captured c = capture(words);
-    message = c.output;
+    message = c.errors + c.output;
     if (c.exit_code != 0) return "";
-    // --parsable prints "id" or "id;cluster"; warnings (stderr, merged here) are other lines.
+    // --parsable prints "id" or "id;cluster" on its standard output.
     std::istringstream lines(c.output);
     std::string id;
     for (std::string line; std::getline(lines, line);) {
