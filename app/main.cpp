@@ -79,9 +79,10 @@ std::string usage() {
   --version   the version
 
 Units everywhere: mm, s (and rad, Hz); masses in an arbitrary unit. Examples: examples/*.toml.
-Exit codes: 0 done; 1 unexpected failure; 2 bad input (nothing done); 74 a file could not be
-read or written (a run in progress keeps its last checkpoint; the message says what to do);
-130/143 stopped by SIGINT/SIGTERM (a checkpoint was written).
+Exit codes: 0 done; 1 unexpected failure; 2 bad input (nothing done); 3 the simulation blew
+up (a checkpoint of the last good frame; the message says what to change); 74 a file could not
+be read or written (a run in progress keeps its last checkpoint; the message says what to do);
+130/143 stopped by SIGINT/SIGTERM/SIGHUP (a checkpoint was written).
 )";
     return s;
 }

@@ -78,7 +78,10 @@ struct GoldenRun {
 
 GoldenRun golden_run(int threads) {
     const EngineParameters p = golden_parameters();
-    GoldenRun run{Simulation(p, golden_bodies(p), {.threads = threads})};
+    // Neighbouring rods start overlapping (rows are packed by extent, not by shape), deeper than
+    // the blow-up guard allows: the scene and its hash predate the guard, which never changes a
+    // trajectory, only stops one.
+    GoldenRun run{Simulation(p, golden_bodies(p), {.threads = threads, .stop_on_blow_up = false})};
     for (std::uint64_t k = 0; k < kGoldenSteps; ++k) {
         run.sim.step();
         run.body_contacts += run.sim.last_step().body_contacts;

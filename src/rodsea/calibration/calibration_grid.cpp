@@ -126,7 +126,7 @@ CalibrationGrid parse_calibration_grid(std::string_view text, const std::string&
         throw InvalidParameter(key("species"), "'" + kind + "'",
                                "\"polar_rod\", \"apolar_rod\" or \"bead\"");
     }
-    g.epsilon = number_list(*t, "epsilon", 0.0, 1000.0, "1/mm", g.epsilon);
+    g.epsilon = number_list(*t, "epsilon", 0.0, kMaxNoiseEpsilon, "1/mm", g.epsilon);
     // The largest sphere must fit between the plates (MODEL.md §1), with room to move.
     const double thickest = 2.0 * g.species.shape.max_radius;
     g.gap = number_list(*t, "gap", 0.0, 20.0, "mm", g.gap);

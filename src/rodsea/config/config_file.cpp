@@ -1,4 +1,5 @@
 #include "rodsea/config/config_file.hpp"
+#include "rodsea/text_file.hpp"
 
 #include <fstream>
 #include <sstream>
@@ -21,16 +22,7 @@ ConfigSyntaxError::ConfigSyntaxError(const std::string& source, long line, long 
       column_(column) {}
 
 RunPlan load_config_file(const std::filesystem::path& path, const EpsilonLookup& epsilon) {
-    std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) throw FileError(path.string(), "no such file");
-    if (std::filesystem::is_directory(path, ec))
-        throw FileError(path.string(), "is a directory, not a config file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw FileError(path.string(), "cannot be opened for reading");
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) throw FileError(path.string(), "read failed");
-    return load_config_string(text.str(), path.string(), epsilon);
+    return load_config_string(read_text_file(path), path.string(), epsilon);
 }
 
 RunPlan load_config_string(std::string_view toml, std::string_view source_name,

@@ -160,12 +160,14 @@ std::vector<KeySpec> make_keys() {
     k.push_back(real("noise", "epsilon")
                     .unit("1/mm")
                     .def(engine.noise_epsilon)
-                    .range(closed(0.0, 1000.0))
+                    .range(closed(0.0, kMaxNoiseEpsilon))
                     .alternative("rotational_diffusion")
                     .choice("the kick is added to ω_z (not set), scaled by the pre-collision "
                             "normal speed |u_n|; MODEL.md §3")
                     .doc("ε: at each collision of a polar rod with a plate, ω_z += ε |u_n| η, "
-                         "η = ±1."));
+                         "η = ±1. D_r grows as ε²: 0.05 /mm gives ~5 rad²/s "
+                         "(data/calibration.csv); above 0.5 /mm the rods spin up without "
+                         "bound."));
     k.push_back(real("noise", "rotational_diffusion")
                     .unit("rad²/s")
                     .def_text("none")

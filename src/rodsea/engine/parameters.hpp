@@ -38,6 +38,10 @@ struct Species {
 
 // Masses in an arbitrary unit: only ratios matter, and the paper's m_apolar / m_polar = 0.20
 // (MODEL.md CHOICE: kept for every ℓ_a and for beads).
+// The largest noise.epsilon (1/mm): 10× the calibrated range (0.05 /mm gives D_r ≈ 5 rad²/s);
+// at 1 /mm polar rods spin up without bound, at 3 /mm a run blows up within 20 ms.
+inline constexpr double kMaxNoiseEpsilon = 0.5;
+
 inline constexpr double kPolarRodMass = 1.0;
 inline constexpr double kMediumMass = 0.2;
 

@@ -6,17 +6,15 @@
 #include <string>
 
 #include "rodsea/engine/cpu/cpu_backend.hpp"
+#include "rodsea/engine/state_check.hpp"
 #include "rodsea/error.hpp"
 
 namespace rodsea {
 
 namespace {
 
-bool finite(const Vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-void validate_bodies(const EngineParameters& params, BodyState& bodies, bool fresh_start) {
+void validate_bodies(const EngineParameters& params, BodyState& bodies, bool fresh_start,
+                     double time) {
     if (bodies.size() == 0) throw InvalidParameter("bodies", "0 bodies", ">= 1 body");
     const size_t n = bodies.size();
     if (bodies.position.size() != n || bodies.orientation.size() != n ||
@@ -24,41 +22,13 @@ void validate_bodies(const EngineParameters& params, BodyState& bodies, bool fre
         throw InvalidParameter("bodies", "arrays of different lengths",
                                "one entry per body in each");
     }
-    const physics::PlateState plates = physics::plate_state(params.drive.motion(), 0.0);
-    for (size_t b = 0; b < n; ++b) {
-        const std::string key = "bodies[" + std::to_string(b) + "]";
-        if (bodies.species[b] >= params.species.size()) {
-            throw InvalidParameter(key + ".species", std::to_string(bodies.species[b]),
-                                   "[0, " + std::to_string(params.species.size() - 1) + "]");
-        }
-        const Quat& q = bodies.orientation[b];
-        const double qn = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
-        if (!std::isfinite(qn) || qn == 0.0) {
-            throw InvalidParameter(key + ".orientation", "a zero or non-finite quaternion",
-                                   "a non-zero quaternion");
-        }
-        // A resumed state is taken as it is: renormalising would change its last bits.
-        if (fresh_start) bodies.orientation[b] = normalized(q);
-        if (!finite(bodies.position[b]) || !finite(bodies.velocity[b]) || !finite(bodies.spin[b])) {
-            throw InvalidParameter(key, "a non-finite position, velocity or spin", "finite values");
-        }
-        if (!fresh_start) continue;  // a resumed body may touch a plate
-        const Species& sp = params.species[bodies.species[b]];
-        for (size_t s = 0; s < sp.shape.sphere_count(); ++s) {
-            const double z =
-                bodies.position[b].z + rotate(bodies.orientation[b], sp.shape.offsets[s]).z;
-            const double r = sp.shape.radii[s];
-            if (z - r < plates.base_z || z + r > plates.lid_z) {
-                throw InvalidParameter(
-                    key + ".position.z", format_number(bodies.position[b].z) + " mm",
-                    "every sphere between the base (z = " + format_number(plates.base_z) +
-                        " mm at t = 0) and the lid (z = " + format_number(plates.lid_z) + " mm)",
-                    std::string(to_string(sp.kind)) + " sphere " + std::to_string(s) +
-                        " spans z = " + format_number(z - r) + " .. " + format_number(z + r) +
-                        " mm");
-            }
-        }
-    }
+    const StateOrigin origin = fresh_start ? StateOrigin::fresh : StateOrigin::resumed;
+    if (const auto p = find_state_problem(params, bodies, time, origin))
+        throw InvalidParameter("bodies[" + std::to_string(p->body) + "]." + p->field, p->value,
+                               p->allowed, p->detail);
+    if (!fresh_start) return;  // a resumed state is taken as it is, to the last bit
+    for (Quat& q : bodies.orientation)
+        q = normalized(q);
     for (Vec3& x : bodies.position) {
         x.x = PeriodicBox2D::wrap(x.x, params.box.lx);
         x.y = PeriodicBox2D::wrap(x.y, params.box.ly);
@@ -85,7 +55,8 @@ Simulation::Simulation(EngineParameters params, BodyState bodies, std::uint64_t 
     validate(params_);
     if (options_.threads < 1)
         throw InvalidParameter("threads", std::to_string(options_.threads), ">= 1");
-    validate_bodies(params_, bodies, fresh_start);
+    validate_bodies(params_, bodies, fresh_start, time());
+    bounds_ = BlowUpBounds::of(params_, bodies.size());
     species_ = std::make_unique<SpeciesTable>(SpeciesTable::from(params_));
     backend_ = std::make_unique<cpu::CpuBackend>(*species_, std::move(bodies), options_.threads);
 }
@@ -124,6 +95,8 @@ void Simulation::step() {
     totals_.max_sweeps = std::max(totals_.max_sweeps, last_.sweeps);
     totals_.max_overlap_fraction =
         std::max(totals_.max_overlap_fraction, last_.max_overlap_fraction);
+    if (!options_.stop_on_blow_up) return;
+    if (auto blown = detect_blow_up(bounds_, last_)) throw BlowUpError(*blown, step_count_, time());
 }
 
 void Simulation::run(std::uint64_t steps) {

@@ -17,6 +17,7 @@
 #include "rodsea/engine/physics/contact.hpp"
 #include "rodsea/engine/physics/plates.hpp"
 #include "rodsea/engine/species_table.hpp"
+#include "rodsea/engine/state_check.hpp"
 #include "rodsea/engine/step_backend.hpp"
 
 namespace rodsea {
@@ -40,10 +41,11 @@ class Simulation {
     Simulation(EngineParameters params, BodyState bodies, BackendOptions options = {});
 
     // Continues a run from a checkpointed state after `step_count` steps. The state came from
-    // the engine, so a body may touch a plate within the usual small overlap: only the species
-    // indices and finiteness are checked, not the gap. Stepping on gives the same trajectory,
-    // bit for bit, as the run that was never stopped (all inter-step state is in the bodies and
-    // the step counter; noise signs hash the step number).
+    // the engine, so a body may touch a plate within the usual small overlap: it is checked as
+    // find_state_problem(resumed) checks it (not for overlaps between bodies: the caller does
+    // that where it costs nothing to wait for, find_gross_overlap). Stepping on gives the same
+    // trajectory, bit for bit, as the run that was never stopped (all inter-step state is in the
+    // bodies and the step counter; noise signs hash the step number).
     static Simulation resume(EngineParameters params, BodyState bodies, std::uint64_t step_count,
                              BackendOptions options = {});
 
@@ -51,6 +53,9 @@ class Simulation {
     Simulation& operator=(Simulation&&) noexcept;
     ~Simulation();
 
+    // Throws BlowUpError (state_check.hpp) after a step that crossed a blow-up bound: a speed
+    // the time step cannot resolve, a gross overlap, or too many unresolved contacts. The state
+    // is then meaningless; keep a copy of the last one you trust.
     void step();
     void run(std::uint64_t steps);
 
@@ -87,6 +92,7 @@ class Simulation {
     std::unique_ptr<SpeciesTable> species_;
     std::unique_ptr<StepBackend> backend_;
     std::uint64_t step_count_ = 0;
+    BlowUpBounds bounds_;
 
     StepStatistics last_;
     RunTotals totals_;

@@ -24,9 +24,12 @@ struct StepStatistics {
     std::size_t impulses = 0;
     std::size_t body_collisions = 0;   // impulses at approach speeds above kCollisionSpeed
     std::size_t plate_collisions = 0;  // the same with a plate
+    // Contacts still approaching after the sweep cap, and contacts deeper than
+    // kGrossOverlapFraction (state_check.hpp): impulses cannot undo an overlap that deep.
     std::size_t unresolved = 0;
     std::size_t noise_kicks = 0;
     double max_overlap_fraction = 0.0;  // largest overlap / smaller radius found this step
+    double max_planar_speed = 0.0;      // mm/s, a bound on every sphere's in-plane speed
 };
 
 // Wall-clock seconds spent in each stage.
@@ -44,6 +47,9 @@ struct StageProfile {
 // How the step is executed; the trajectory does not depend on it.
 struct BackendOptions {
     int threads = 1;  // OpenMP threads of the CPU backend, >= 1
+    // Simulation::step throws BlowUpError after a step that crosses a blow-up bound
+    // (state_check.hpp). Off only for tests that start from deliberately impossible states.
+    bool stop_on_blow_up = true;
 };
 
 // Every sphere of every body in body order: body b owns spheres first_of[b] .. first_of[b+1]−1,

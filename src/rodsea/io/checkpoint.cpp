@@ -1,5 +1,8 @@
 #include "rodsea/io/checkpoint.hpp"
 
+#include <cmath>
+#include <cstdio>
+
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
 #include "rodsea/io/detail/hdf5.hpp"
@@ -9,7 +12,8 @@ namespace rodsea {
 namespace {
 
 constexpr const char* kGroup = "rodsea_checkpoint";
-constexpr const char* kFormat = "rodsea checkpoint 1";
+constexpr const char* kFormat = "rodsea checkpoint 2";
+constexpr const char* kFormatBeforeRunIds = "rodsea checkpoint 1";
 
 std::vector<double> flatten(const std::vector<Vec3>& v) {
     std::vector<double> out;
@@ -39,6 +43,10 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& c) {
             h5::Handle g = h5::create_group(f, f.id(), kGroup);
             h5::write_attribute(f, g.get(), "format", std::string(kFormat));
             h5::write_attribute(f, g.get(), "version", std::string(RODSEA_VERSION));
+            h5::write_attribute(f, g.get(), "run_id", c.run_id);
+            h5::write_attribute(f, g.get(), "config_fingerprint",
+                                config_fingerprint(c.config_toml));
+            h5::write_attribute(f, g.get(), "extending_from", c.extending_from);
             h5::write_string_dataset(f, g.get(), "config", c.config_toml);
             h5::write_dataset(
                 f, g.get(), "counters",
@@ -69,10 +77,25 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
     if (!h5::exists(f.id(), kGroup))
         throw FileError(path.string(), "not a rodsea checkpoint (no /" + std::string(kGroup) + ")");
     h5::Handle g = h5::open_group(f, f.id(), kGroup);
-    if (h5::read_string_attribute(f, g.get(), "format") != kFormat)
-        throw FileError(path.string(), "checkpoint format is not '" + std::string(kFormat) + "'");
+    const std::string format = h5::read_string_attribute(f, g.get(), "format");
+    if (format != kFormat && format != kFormatBeforeRunIds)
+        throw FileError(path.string(), "checkpoint format is '" + format + "', not '" +
+                                           std::string(kFormat) + "'");
     Checkpoint c;
     c.config_toml = h5::read_string_dataset(f, g.get(), "config");
+    if (format == kFormat) {
+        c.run_id = h5::read_string_attribute(f, g.get(), "run_id");
+        c.extending_from = h5::read_string_attribute(f, g.get(), "extending_from");
+        const std::string stored = h5::read_string_attribute(f, g.get(), "config_fingerprint");
+        if (stored != config_fingerprint(c.config_toml))
+            throw FileError(path.string(),
+                            "its config was changed after it was written "
+                            "(fingerprint " +
+                                config_fingerprint(c.config_toml) + ", written with " + stored +
+                                "): a checkpoint is resumed with the config it "
+                                "was written with; extend a run with "
+                                "rodsea run --resume DIR --duration T");
+    }
     const std::vector<std::uint64_t> counters = h5::read_uint64s(f, g.get(), "counters");
     if (counters.size() != 3) throw FileError(path.string(), "damaged checkpoint counters");
     c.step = counters[0];
@@ -84,6 +107,11 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
     c.interval_accumulators = h5::read_doubles(f, g.get(), "interval_accumulators");
     const std::vector<std::int32_t> species = h5::read_ints(f, g.get(), "species");
     const size_t n = species.size();
+    for (size_t i = 0; i < n; ++i)
+        if (species[i] < 0)
+            throw FileError(path.string(), "damaged: dataset species gives body " +
+                                               std::to_string(i) + " the species index " +
+                                               std::to_string(species[i]));
     c.bodies.species.assign(species.begin(), species.end());
     c.bodies.position = unflatten(h5::read_doubles(f, g.get(), "position"), n, "position", path);
     c.bodies.velocity = unflatten(h5::read_doubles(f, g.get(), "velocity"), n, "velocity", path);
@@ -94,7 +122,25 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
     c.bodies.orientation.resize(n);
     for (size_t i = 0; i < n; ++i)
         c.bodies.orientation[i] = {q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]};
+    for (double x : c.interval_accumulators)
+        if (!std::isfinite(x))
+            throw FileError(path.string(),
+                            "damaged: a time-series accumulator is " + format_number(x));
+    if (!std::isfinite(c.wall_seconds) || c.wall_seconds < 0.0)
+        throw FileError(path.string(),
+                        "damaged: wall_seconds is " + format_number(c.wall_seconds) + " s");
     return c;
+}
+
+std::string config_fingerprint(const std::string& config_toml) {
+    std::uint64_t h = 14695981039346656037ULL;
+    for (const unsigned char ch : config_toml) {
+        h ^= ch;
+        h *= 1099511628211ULL;
+    }
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
+    return text;
 }
 
 }  // namespace rodsea

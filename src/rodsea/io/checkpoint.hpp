@@ -16,6 +16,12 @@ namespace rodsea {
 
 struct Checkpoint {
     std::string config_toml;
+    // What identifies the run it belongs to: the trajectory's run id (TrajectoryFile::run_id),
+    // and, during an extension (--duration) whose files are not all rewritten yet, the
+    // fingerprint of the config the trajectory and config.toml may still hold. Resume refuses
+    // a checkpoint whose run id or config is not its directory's.
+    std::string run_id;
+    std::string extending_from;
     std::uint64_t step = 0;
     std::uint64_t frames_written = 0;  // trajectory frames and time-series rows on disk
     BodyState bodies;
@@ -25,7 +31,12 @@ struct Checkpoint {
 };
 
 void write_checkpoint(const std::filesystem::path& path, const Checkpoint& checkpoint);
-// Throws FileError for a missing, truncated or foreign file.
+// Throws FileError for a missing, truncated, foreign or edited file (the config's fingerprint is
+// stored with it), or a state that is not finite. Checkpoints of format 1 (before run ids) are
+// read with an empty run_id.
 Checkpoint read_checkpoint(const std::filesystem::path& path);
+
+// A fingerprint of a config's text (FNV-1a, 16 hex digits): equal texts, equal fingerprints.
+std::string config_fingerprint(const std::string& config_toml);
 
 }  // namespace rodsea

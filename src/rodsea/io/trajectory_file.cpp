@@ -7,8 +7,10 @@
 
 #include <array>
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <random>
 
 #include "rodsea/error.hpp"
 #include "rodsea/io/detail/hdf5.hpp"
@@ -93,6 +95,25 @@ h5::Handle write_box(const h5::File& f, hid_t bodies) {
     return box;
 }
 
+// 128 random bits: two runs never share an id, whatever their configs and seeds.
+std::string new_run_id() {
+    std::random_device device;
+    std::string id;
+    char digits[9];
+    for (int i = 0; i < 4; ++i) {
+        std::snprintf(digits, sizeof digits, "%08x", static_cast<unsigned>(device()));
+        id += digits;
+    }
+    return id;
+}
+
+std::string stored_run_id(const h5::File& f) {
+    h5::Handle rodsea = h5::open_group(f, f.id(), "/parameters/rodsea");
+    return H5Aexists(rodsea.get(), "run_id") > 0
+               ? h5::read_string_attribute(f, rodsea.get(), "run_id")
+               : std::string();
+}
+
 void write_species(const h5::File& f, hid_t parent, const EngineParameters& p) {
     h5::Handle all = h5::create_group(f, parent, "species");
     for (size_t s = 0; s < p.species.size(); ++s) {
@@ -128,6 +149,7 @@ struct TrajectoryFile::Impl {
     std::vector<Element> series;
     std::vector<float> scratch;
     std::uint64_t complete_frames = 0;
+    std::string run_id;
 };
 
 TrajectoryFile::TrajectoryFile(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -172,6 +194,8 @@ TrajectoryFile TrajectoryFile::create(const std::filesystem::path& path,
     h5::Handle parameters = h5::create_group(f, f.id(), "parameters");
     h5::Handle rodsea = h5::create_group(f, parameters.get(), "rodsea");
     h5::write_attribute(f, rodsea.get(), "version", std::string(RODSEA_VERSION));
+    impl->run_id = new_run_id();
+    h5::write_attribute(f, rodsea.get(), "run_id", impl->run_id);
     h5::write_attribute(f, rodsea.get(), "units",
                         std::string("lengths mm, time s, velocities mm/s, angular velocities "
                                     "rad/s, masses in the config's arbitrary unit"));
@@ -202,6 +226,7 @@ TrajectoryFile TrajectoryFile::reopen(const std::filesystem::path& path, std::ui
     for (const SeriesColumn& c : columns)
         impl->series.push_back(Element::open(f, observables.get(), c.name, frames));
     impl->complete_frames = frames;
+    impl->run_id = stored_run_id(f);
     f.flush();
     return TrajectoryFile(std::move(impl));
 }
@@ -248,6 +273,10 @@ void TrajectoryFile::append_frame(std::uint64_t step, double time, const BodySta
 
 std::uint64_t TrajectoryFile::frames() const {
     return impl_->complete_frames;
+}
+
+const std::string& TrajectoryFile::run_id() const {
+    return impl_->run_id;
 }
 
 void TrajectoryFile::reserve(std::uint64_t bytes) {
@@ -308,6 +337,10 @@ std::string read_stored_config(const std::filesystem::path& path) {
     const h5::File f = h5::File::open(path, false);
     h5::Handle rodsea = h5::open_group(f, f.id(), "/parameters/rodsea");
     return h5::read_string_dataset(f, rodsea.get(), "config");
+}
+
+std::string read_run_id(const std::filesystem::path& path) {
+    return stored_run_id(h5::File::open(path, false));
 }
 
 }  // namespace rodsea

@@ -52,6 +52,10 @@ class TrajectoryFile {
     void append_frame(std::uint64_t step, double time, const BodyState& bodies,
                       const std::vector<double>& series_row);
     std::uint64_t frames() const;
+    // The identity of this trajectory (/parameters/rodsea attribute run_id: 32 random hex
+    // digits drawn at create); a checkpoint carries it so that resume can refuse a checkpoint
+    // copied from another run. Empty for a file written before run ids existed.
+    const std::string& run_id() const;
     // Makes sure the file can grow by `bytes` before a frame is written, by claiming that many
     // disk blocks beyond its end (fallocate, keeping the size) and checking the process's
     // file-size limit: a full disk, a quota or a limit then fails here, cleanly, and not in the
@@ -74,5 +78,7 @@ class TrajectoryFile {
 
 // The config stored in a trajectory or checkpoint file (for `--resume` and for analysis).
 std::string read_stored_config(const std::filesystem::path& path);
+// A trajectory's run id (see TrajectoryFile::run_id), read without opening it for writing.
+std::string read_run_id(const std::filesystem::path& path);
 
 }  // namespace rodsea

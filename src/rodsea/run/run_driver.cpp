@@ -13,6 +13,7 @@
 #include "rodsea/cli/stop_signal.hpp"
 #include "rodsea/config/config_file.hpp"
 #include "rodsea/engine/simulation.hpp"
+#include "rodsea/engine/state_check.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
 #include "rodsea/io/checkpoint.hpp"
@@ -24,6 +25,7 @@
 #include "rodsea/run/run_lock.hpp"
 #include "rodsea/run/series_recorder.hpp"
 #include "rodsea/run/steady_stop.hpp"
+#include "rodsea/text_file.hpp"
 
 namespace rodsea {
 
@@ -76,6 +78,18 @@ class Session {
         recorder_.start_interval();
         ++frames_written_;
         if (steady_.active()) steady_.add_row(row);
+        last_good_ = {sim_.step_count(), frames_written_, sim_.bodies(),
+                      recorder_.interval_state()};
+    }
+
+    // A state the engine should never produce (a value not finite, a body outside the plates or
+    // the box) is a blow-up that the step's own bounds missed: it never reaches a frame.
+    std::optional<BlowUp> invalid_state() const {
+        const auto p =
+            find_state_problem(plan_.engine, sim_.bodies(), sim_.time(), StateOrigin::resumed);
+        if (!p) return std::nullopt;
+        return BlowUp{"body " + std::to_string(p->body) + "'s " + p->field, p->value, p->allowed,
+                      "a smaller time.dt, a smaller noise.epsilon or a less dense packing"};
     }
 
     // The frames it counts are first forced to disk, so that no crash can leave a checkpoint
@@ -85,6 +99,7 @@ class Session {
         sync_file(dir_ / kSeriesFile);
         Checkpoint c;
         c.config_toml = plan_.config_toml;
+        c.run_id = trajectory_.run_id();
         c.step = sim_.step_count();
         c.frames_written = frames_written_;
         c.bodies = sim_.bodies();
@@ -129,10 +144,21 @@ class Session {
         if (const int signal = stop_signal_received(); signal != 0)  // during the build
             return stop_on_signal(signal, out, err);
         while (sim_.step_count() < total) {
-            sim_.step();
+            try {
+                sim_.step();
+            } catch (const BlowUpError& e) {
+                progress.finish(e.step(), last_polar_order_);
+                return stop_after_blow_up(e.blow_up(), e.step(), out, err);
+            }
             recorder_.accumulate(sim_.last_step());
             const std::uint64_t step = sim_.step_count();
             const bool on_grid = step % per_output == 0;
+            if (on_grid || step == total) {
+                if (const std::optional<BlowUp> b = invalid_state()) {
+                    progress.finish(step, last_polar_order_);
+                    return stop_after_blow_up(*b, step, out, err);
+                }
+            }
             try {
                 if (step == total && !on_grid) open_interval_at_end_ = recorder_.interval_state();
                 if (on_grid || step == total) write_frame(progress.steps_per_second());
@@ -221,6 +247,38 @@ class Session {
         return signal == SIGINT ? kExitInterrupted : kExitTerminated;
     }
 
+    // The state after a blow-up is meaningless: the checkpoint holds the last frame's state,
+    // which passed every check, and the files end with that frame.
+    int stop_after_blow_up(const BlowUp& b, std::uint64_t step, std::ostream& out,
+                           std::ostream& err) {
+        const double dt = plan_.engine.dt;
+        err << "rodsea: the simulation blew up at step " << step
+            << " (t = " << format_number(static_cast<double>(step) * dt) << " s): " << b.what
+            << " is " << b.value << ", beyond " << b.bound << ".\n  what to change: " << b.advice
+            << ".\n";
+        try {
+            trajectory_.close();
+            Checkpoint c;
+            c.config_toml = plan_.config_toml;
+            c.step = last_good_.step;
+            c.frames_written = last_good_.frames;
+            c.bodies = last_good_.bodies;
+            c.interval_accumulators = last_good_.interval;
+            c.wall_seconds = wall_before_ + seconds_since(started_);
+            c.run_id = trajectory_.run_id();
+            write_checkpoint(dir_ / kCheckpointFile, c);
+            write_progress("blown_up", rate_());
+            err << "  the last good state (frame " << last_good_.frames - 1
+                << ", t = " << format_number(static_cast<double>(last_good_.step) * dt)
+                << " s) is checkpointed and the trajectory ends there; resuming would repeat the "
+                   "same steps: change the config and start again with --overwrite\n";
+        } catch (const FileError& e) {
+            err << "  and the last good state could not be checkpointed: " << e.what() << "\n";
+        }
+        out.flush();
+        return kExitBlownUp;
+    }
+
     int stop_after_write_failure(const FileError& e, std::ostream& out, std::ostream& err) {
         // HDF5 cannot be trusted to close a file whose writes failed: it is left as it is.
         trajectory_.abandon();
@@ -270,6 +328,12 @@ class Session {
     std::uint64_t frames_written_;
     double last_polar_order_ = 0.0;
     std::optional<std::vector<double>> open_interval_at_end_;  // before the off-grid last row
+    // The state at the last frame written, for a checkpoint after a blow-up.
+    struct GoodState {
+        std::uint64_t step = 0, frames = 0;
+        BodyState bodies;
+        std::vector<double> interval;
+    } last_good_;
     Clock::time_point started_ = Clock::now();
     Clock::time_point last_checkpoint_ = Clock::now();
     Clock::time_point last_progress_ = Clock::now();
@@ -385,6 +449,84 @@ void check_checkpoint(const Checkpoint& c, const RunPlan& plan, const std::files
         throw FileError(path.string(), "damaged: wrong time-series interval state");
 }
 
+// The first line where two config texts differ, as "`a` here, `b` there".
+std::string first_difference(const std::string& here, const std::string& there) {
+    std::istringstream a(here), b(there);
+    std::string la, lb;
+    while (true) {
+        const bool more_a = static_cast<bool>(std::getline(a, la));
+        const bool more_b = static_cast<bool>(std::getline(b, lb));
+        if (!more_a && !more_b) return "they differ";
+        if (!more_a) la = "(nothing)";
+        if (!more_b) lb = "(nothing)";
+        if (la != lb || !more_a || !more_b) return "`" + la + "` against `" + lb + "`";
+    }
+}
+
+// A checkpoint resumes only the run it was written by: the trajectory's run id, the config
+// stored in the trajectory and in config.toml (or, during an extension not yet written to
+// every file, the config it extends), the frames it counts, and a state that the engine could
+// have produced. Checked before any file is touched; every refusal names the file and what
+// differs.
+void check_belongs_here(const std::filesystem::path& dir, const Checkpoint& c,
+                        const RunPlan& plan) {
+    const std::filesystem::path checkpoint = dir / kCheckpointFile,
+                                trajectory = dir / kTrajectoryFile, config = dir / kConfigFile;
+    if (!std::filesystem::exists(trajectory))
+        throw FileError(trajectory.string(),
+                        "missing: the checkpoint continues the frames it holds (start the run "
+                        "again with rodsea run CONFIG --out DIR --overwrite)");
+    const std::string id = read_run_id(trajectory);
+    if (id != c.run_id)
+        throw FileError(checkpoint.string(),
+                        "belongs to another run: its run id is " +
+                            (c.run_id.empty() ? std::string("none (an older rodsea)") : c.run_id) +
+                            ", trajectory.h5's is " + (id.empty() ? std::string("none") : id) +
+                            " (copied from another run directory?); nothing was changed");
+    const std::string mine = config_fingerprint(c.config_toml);
+    const auto check_config = [&](const std::filesystem::path& file, const std::string& text) {
+        const std::string theirs = config_fingerprint(text);
+        if (theirs == mine || (!c.extending_from.empty() && theirs == c.extending_from)) return;
+        throw FileError(file.string(),
+                        "holds another config than the checkpoint (" +
+                            first_difference(text, c.config_toml) +
+                            "): a run resumes with the config it started with (extend it with "
+                            "--duration T); restore the file or start again with --overwrite");
+    };
+    check_config(trajectory.string() + ":/parameters/rodsea/config",
+                 read_stored_config(trajectory));
+    if (std::filesystem::exists(config)) check_config(config, read_text_file(config));
+    const TrajectoryReader reader(trajectory);
+    if (reader.frames() < c.frames_written)
+        throw FileError(trajectory.string(), "holds " + std::to_string(reader.frames()) +
+                                                 " frames but the checkpoint " + "counts " +
+                                                 std::to_string(c.frames_written) +
+                                                 " (the file was replaced or damaged)");
+    if (c.frames_written > 0) {
+        const std::uint64_t k = c.frames_written - 1;
+        const std::uint64_t expected = std::min(k * plan.steps_per_output(), plan.total_steps());
+        const std::int64_t stored = reader.steps()[k];
+        if (stored != static_cast<std::int64_t>(expected))
+            throw FileError(trajectory.string(),
+                            "frame " + std::to_string(k) + " is at step " + std::to_string(stored) +
+                                " where the checkpoint's config puts it at step " +
+                                std::to_string(expected));
+    }
+    const double time = static_cast<double>(c.step) * plan.engine.dt;
+    std::optional<StateProblem> problem =
+        find_state_problem(plan.engine, c.bodies, time, StateOrigin::resumed);
+    if (!problem) problem = find_gross_overlap(plan.engine, c.bodies);
+    if (problem) {
+        const std::string dataset = problem->field.substr(0, problem->field.find('.'));
+        throw FileError(checkpoint.string(),
+                        "impossible state: dataset " + dataset + ", body " +
+                            std::to_string(problem->body) + " at step " + std::to_string(c.step) +
+                            ": " + problem->field + " " + problem->value +
+                            "; allowed: " + problem->allowed +
+                            (problem->detail.empty() ? "" : " (" + problem->detail + ")"));
+    }
+}
+
 // The plan of a run given a new length (--duration, --steady-samples), checked against what the
 // run has done.
 RunPlan extended_plan(const Checkpoint& c, const RunOptions& options,
@@ -416,6 +558,7 @@ void commit_extension(const std::filesystem::path& dir, const RunPlan& plan, Che
                                            ": not a checkpoint of this run's config");
     if (extra_last_frame) c.frames_written = due;
     c.complete = false;
+    if (c.config_toml != plan.config_toml) c.extending_from = config_fingerprint(c.config_toml);
     c.config_toml = plan.config_toml;
     write_checkpoint(path, c);
     write_file_atomically(dir / kConfigFile, plan.config_toml);
@@ -435,6 +578,7 @@ int resume_run(const std::filesystem::path& dir, const RunOptions& options, std:
     const RunPlan stored =
         load_config_string(c.config_toml, checkpoint_path.string() + " [config]");
     check_checkpoint(c, stored, checkpoint_path);
+    check_belongs_here(dir, c, stored);
     const bool extending = options.duration || options.steady_samples;
     const RunPlan plan = extending ? extended_plan(c, options, checkpoint_path) : stored;
     if (c.complete && (!extending || plan.total_steps() == c.step)) {
@@ -470,7 +614,11 @@ int resume_run(const std::filesystem::path& dir, const RunOptions& options, std:
     }
     TrajectoryFile trajectory =
         TrajectoryFile::reopen(dir / kTrajectoryFile, c.frames_written, columns.columns());
-    if (extending) trajectory.replace_config(plan.config_toml);
+    // An extension interrupted before every file said its new length is finished here.
+    if (read_stored_config(dir / kTrajectoryFile) != plan.config_toml)
+        trajectory.replace_config(plan.config_toml);
+    if (!extending && read_text_file(dir / kConfigFile) != plan.config_toml)
+        write_file_atomically(dir / kConfigFile, plan.config_toml);
     Session session(plan, std::move(sim), std::move(trajectory), std::move(csv), dir,
                     c.wall_seconds);
     session.recorder().restore_interval(c.interval_accumulators);

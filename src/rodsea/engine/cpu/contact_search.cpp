@@ -5,6 +5,7 @@
 
 #include "rodsea/engine/cpu/detail/parallel.hpp"
 #include "rodsea/engine/physics/contact_geometry.hpp"
+#include "rodsea/engine/state_check.hpp"
 
 namespace rodsea::cpu {
 
@@ -18,10 +19,19 @@ struct SearchInput {
     const physics::PlateState& plates;
 };
 
-// The contacts of the listed sphere pairs [range) in list order, appended to `found`; raises
-// `deepest` to their largest overlap over the smaller radius.
+}  // namespace
+
+void ContactFinder::Depth::add(double overlap_fraction) {
+    deepest = std::max(deepest, overlap_fraction);
+    if (overlap_fraction > kGrossOverlapFraction) ++gross;
+}
+
+namespace {
+
+// The contacts of the listed sphere pairs [range) in list order, appended to `found`; `depth`
+// takes each one's overlap over the smaller radius.
 void find_body_contacts(const VerletPairList& pairs, const SearchInput& in, Chunk range,
-                        std::vector<Contact>& found, double& deepest) {
+                        std::vector<Contact>& found, ContactFinder::Depth& depth) {
     const SphereTable& spheres = in.spheres;
     pairs.for_each_pair(
         spheres.position, range.begin, range.end,
@@ -36,14 +46,14 @@ void find_body_contacts(const VerletPairList& pairs, const SearchInput& in, Chun
                 in.species.pair_coefficients(in.bodies.species[bi], in.bodies.species[bj]);
             c.friction = k.friction;
             c.restitution = k.restitution;
-            deepest = std::max(deepest, c.overlap / std::min(spheres.radius[i], spheres.radius[j]));
+            depth.add(c.overlap / std::min(spheres.radius[i], spheres.radius[j]));
             found.push_back(c);
         });
 }
 
 // The contacts of spheres [range) with the base and the lid, in sphere order.
 void find_plate_contacts(const SearchInput& in, Chunk range, std::vector<Contact>& found,
-                         double& deepest) {
+                         ContactFinder::Depth& depth) {
     const SphereTable& spheres = in.spheres;
     const auto add = [&](size_t s, bool base, double overlap) {
         const std::uint32_t b = spheres.body[s];
@@ -51,7 +61,7 @@ void find_plate_contacts(const SearchInput& in, Chunk range, std::vector<Contact
         found.push_back(physics::plate_contact(b, spheres.position[s], r, in.bodies.position[b],
                                                base, overlap,
                                                in.species.plate[in.bodies.species[b]]));
-        deepest = std::max(deepest, overlap / r);
+        depth.add(overlap / r);
     };
     for (size_t s = range.begin; s < range.end; ++s) {
         const physics::PlateOverlaps o =
@@ -71,30 +81,35 @@ ContactSearchStats ContactFinder::find(const SphereTable& spheres, BodyView bodi
     ContactSearchStats stats;
     if (threads <= 1) {  // straight into `out`: no copies
         out.clear();
-        find_body_contacts(pairs_, in, {0, pairs_.size()}, out, stats.max_overlap_fraction);
+        Depth depth;
+        find_body_contacts(pairs_, in, {0, pairs_.size()}, out, depth);
         stats.body_contacts = out.size();
-        find_plate_contacts(in, {0, spheres.size()}, out, stats.max_overlap_fraction);
+        find_plate_contacts(in, {0, spheres.size()}, out, depth);
         stats.plate_contacts = out.size() - stats.body_contacts;
+        stats.max_overlap_fraction = depth.deepest;
+        stats.gross_overlaps = depth.gross;
         return stats;
     }
     const auto slots = static_cast<size_t>(threads);
     body_chunks_.resize(slots);
     plate_chunks_.resize(slots);
-    max_overlap_.assign(slots, 0.0);
+    depth_.assign(slots, Depth{});
 #pragma omp parallel num_threads(threads)
     {
         const int team = team_size(), t = thread_index();
         body_chunks_[t].clear();
         plate_chunks_[t].clear();
         find_body_contacts(pairs_, in, chunk_of(pairs_.size(), t, team), body_chunks_[t],
-                           max_overlap_[t]);
-        find_plate_contacts(in, chunk_of(spheres.size(), t, team), plate_chunks_[t],
-                            max_overlap_[t]);
+                           depth_[t]);
+        find_plate_contacts(in, chunk_of(spheres.size(), t, team), plate_chunks_[t], depth_[t]);
     }
     // Body contacts then plate contacts, each in chunk order: the serial list.
     stats.body_contacts = gather(body_chunks_, out, 0);
     stats.plate_contacts = gather(plate_chunks_, out, stats.body_contacts);
-    stats.max_overlap_fraction = *std::max_element(max_overlap_.begin(), max_overlap_.end());
+    for (const Depth& d : depth_) {
+        stats.max_overlap_fraction = std::max(stats.max_overlap_fraction, d.deepest);
+        stats.gross_overlaps += d.gross;
+    }
     return stats;
 }
 

@@ -21,6 +21,7 @@ struct ContactSearchStats {
     size_t body_contacts = 0;
     size_t plate_contacts = 0;
     double max_overlap_fraction = 0.0;  // overlap / smaller radius, largest in this step
+    size_t gross_overlaps = 0;          // contacts deeper than kGrossOverlapFraction
 };
 
 // Verlet-list skin (mm). Bodies move micrometres per step, so a list lasts hundreds of steps; a
@@ -39,15 +40,23 @@ class ContactFinder {
                             double travel = std::numeric_limits<double>::infinity());
     std::uint64_t pair_list_builds() const { return pairs_.builds(); }
 
+    // The overlaps one chunk of the search found: the deepest, over the smaller radius, and how
+    // many were gross.
+    struct Depth {
+        double deepest = 0.0;
+        size_t gross = 0;
+        void add(double overlap_fraction);
+    };
+
   private:
     // Appends the chunks to `out`, which holds `at` contacts, and returns how many they had.
     static size_t gather(const std::vector<std::vector<Contact>>& chunks, std::vector<Contact>& out,
                          size_t at);
 
     VerletPairList pairs_{kVerletSkin};
-    // Per thread: its chunk's body contacts and plate contacts, and its largest overlap.
+    // Per thread: its chunk's body contacts and plate contacts, and their overlaps.
     std::vector<std::vector<Contact>> body_chunks_, plate_chunks_;
-    std::vector<double> max_overlap_;
+    std::vector<Depth> depth_;
 };
 
 }  // namespace rodsea::cpu

@@ -62,11 +62,16 @@ void CpuBackend::step(const StepContext& context, StepStatistics& stats, StagePr
         StageTimer t(profile.noise);
         kicks = apply_plate_noise(plate_hits_, bodies, species_, context, threads_);
     }
-    stats = {found.body_contacts,       found.plate_contacts,
-             resolved.sweeps,           resolved.impulses,
-             resolved.body_collisions,  resolved.plate_collisions,
-             resolved.unresolved,       kicks,
-             found.max_overlap_fraction};
+    stats = {found.body_contacts,
+             found.plate_contacts,
+             resolved.sweeps,
+             resolved.impulses,
+             resolved.body_collisions,
+             resolved.plate_collisions,
+             resolved.unresolved + found.gross_overlaps,
+             kicks,
+             found.max_overlap_fraction,
+             fastest};
 }
 
 }  // namespace rodsea::cpu
