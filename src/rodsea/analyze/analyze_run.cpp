@@ -22,17 +22,12 @@ namespace fs = std::filesystem;
 // The order series of the run that it recorded (runs from before Σ and N_m were recorded
 // have only P and S).
 std::vector<NamedSeries> recorded_order_series(const TrajectoryReader& reader,
-                                               const AnalysisSetup& setup, std::size_t frames,
-                                               const fs::path& trajectory) {
+                                               const AnalysisSetup& setup, std::size_t frames) {
     std::vector<NamedSeries> series;
     for (const std::string& column : steady_series_columns(setup)) {
         if (!reader.has_series(column)) continue;
         series.push_back({column, reader.series(column)});
-        if (series.back().values.size() != frames)
-            throw FileError(trajectory.string(), "the time series " + column + " has " +
-                                                     std::to_string(series.back().values.size()) +
-                                                     " rows for " + std::to_string(frames) +
-                                                     " frames");
+        series.back().values.resize(frames);  // series() checked that it has every frame
     }
     return series;
 }
@@ -49,25 +44,31 @@ PreparedRun prepare_run(const fs::path& run, const AnalyzeRequest& request) {
     p.setup = analysis_setup(p.plan);
     p.setup.blocks = request.options.blocks;
     p.times = reader.times();
-    const std::size_t frames = p.times.size();
-    if (frames >= 2) {
-        p.setup.frame_interval =
-            (p.times.back() - p.times.front()) / static_cast<double>(frames - 1);
-        for (std::size_t k = 1; k < frames; ++k)
-            // Times are multiples of the output step: anything beyond rounding is not a rodsea run.
-            if (std::abs(p.times[k] - p.times[k - 1] - p.setup.frame_interval) >
-                1e-6 * p.setup.frame_interval)
-                throw FileError(
-                    p.trajectory.string(),
-                    "frames are not equally spaced in time (frame " + std::to_string(k) + ")");
-    } else {
-        p.setup.frame_interval = p.plan.control.output_interval;
-    }
+    // A run whose duration is not a whole number of output intervals ends with a frame off the
+    // grid: the averages and correlations need equally spaced frames, so it is left out.
+    const std::size_t frames = stored.grid_frames();
+    if (frames < p.times.size())
+        p.skipped.push_back("the last frame (t = " + format_number(p.times.back()) +
+                            " s): the run ended there, off the " +
+                            format_number(p.plan.control.output_interval) +
+                            " s output grid, so it is not equally spaced with the others");
+    p.times.resize(frames);
+    p.setup.frame_interval = static_cast<double>(p.plan.steps_per_output()) * p.plan.engine.dt;
+    for (std::size_t k = 1; k < frames; ++k)
+        // Times are multiples of the output step: anything beyond rounding is not a rodsea run.
+        if (std::abs(p.times[k] - p.times[k - 1] - p.setup.frame_interval) >
+            1e-6 * p.setup.frame_interval)
+            throw FileError(p.trajectory.string(),
+                            "frames are not equally spaced in time: frame " + std::to_string(k) +
+                                " at " + format_number(p.times[k]) + " s follows frame " +
+                                std::to_string(k - 1) + " at " + format_number(p.times[k - 1]) +
+                                " s, where the output interval is " +
+                                format_number(p.setup.frame_interval) + " s");
 
     // Every frame must be complete before any work starts: the last one is read in full (a
     // file cut short fails here, not halfway through a multi-run analysis), and its body count
     // must be the config's.
-    const BodyState last = reader.frame(frames - 1);
+    const BodyState last = stored.frame(frames - 1);
     if (static_cast<long long>(last.size()) != p.setup.total_count())
         throw FileError(p.trajectory.string(), "frames hold " + std::to_string(last.size()) +
                                                    " bodies, the stored config " +
@@ -89,7 +90,7 @@ PreparedRun prepare_run(const fs::path& run, const AnalyzeRequest& request) {
     } else {
         w.automatic = true;
         const SteadyChoice choice =
-            latest_steady_start(recorded_order_series(reader, p.setup, frames, p.trajectory));
+            latest_steady_start(recorded_order_series(reader, p.setup, frames));
         w.first_frame = choice.first;
         w.basis = choice.decided_by;
         w.series = choice.series;
@@ -143,13 +144,14 @@ RunAnalysis analyze_run(const PreparedRun& run, std::ostream& log, bool quiet) {
     }
     std::vector<double> seconds(observables.size(), 0.0);
     std::vector<std::size_t> computed(observables.size(), 0);
-    const TrajectoryReader reader(run.trajectory);
+    const StoredRun stored = open_stored_run(run.trajectory);
+    const TrajectoryReader& reader = stored.reader;
     const std::size_t first = any_transient ? 0 : run.window.first_frame;
     std::size_t next_report = 1;
     for (std::size_t k = first; k < frames; ++k) {
         const bool steady = k >= run.window.first_frame;
         const AnalysisFrame frame =
-            make_analysis_frame(reader.frame(k), run.setup.box, k, run.times[k], reader.steps()[k]);
+            make_analysis_frame(stored.frame(k), run.setup.box, k, run.times[k], reader.steps()[k]);
         const int block = steady ? run.setup.block_of(k - run.window.first_frame) : 0;
         const FrameContext context(frame, run.setup.species, steady, block);
         for (std::size_t o = 0; o < observables.size(); ++o) {

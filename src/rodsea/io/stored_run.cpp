@@ -1,8 +1,10 @@
 #include "rodsea/io/stored_run.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "rodsea/config/config_file.hpp"
+#include "rodsea/engine/state_check.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/trajectory_file.hpp"
 
@@ -30,18 +32,29 @@ long long StoredRun::total_bodies() const {
     return n;
 }
 
+std::size_t StoredRun::grid_frames() const {
+    const std::size_t n = frames();
+    const auto per = static_cast<std::int64_t>(plan.steps_per_output());
+    return n > 1 && reader.steps()[n - 1] % per != 0 ? n - 1 : n;
+}
+
 BodyState StoredRun::frame(std::size_t k) const {
     BodyState bodies = reader.frame(k);
     if (static_cast<long long>(bodies.size()) != total_bodies())
         throw FileError(trajectory.string(),
                         "frame " + std::to_string(k) + " holds " + std::to_string(bodies.size()) +
                             " bodies, the stored config " + std::to_string(total_bodies()));
-    for (std::uint32_t s : bodies.species)
-        if (s >= plan.engine.species.size())
-            throw FileError(trajectory.string(), "frame " + std::to_string(k) +
-                                                     " has a body of species " + std::to_string(s) +
-                                                     "; the config has " +
-                                                     std::to_string(plan.engine.species.size()));
+    const double time = reader.times()[k];
+    if (const auto p = find_state_problem(plan.engine, bodies, time, StateOrigin::stored_frame)) {
+        const std::string field = p->field.substr(0, p->field.find('.'));
+        const std::string dataset = field == "species" ? "/particles/bodies/species"
+                                                       : "/particles/bodies/" + field + "/value";
+        throw FileError(trajectory.string(), dataset + ", frame " + std::to_string(k) +
+                                                 " (t = " + format_number(time) + " s), body " +
+                                                 std::to_string(p->body) + ": " + p->field + " " +
+                                                 p->value + "; allowed: " + p->allowed +
+                                                 (p->detail.empty() ? "" : " (" + p->detail + ")"));
+    }
     return bodies;
 }
 
@@ -57,6 +70,17 @@ StoredRun open_stored_run(const fs::path& run) {
     }
     RunPlan plan = load_config_string(config, trajectory.string() + ":/parameters/rodsea/config");
     if (reader.frames() == 0) throw FileError(trajectory.string(), "holds no frames yet");
+    // Frame k's time is its step × dt; anything beyond rounding is not what rodsea wrote.
+    const double dt = plan.engine.dt;
+    for (std::size_t k = 0; k < reader.frames(); ++k) {
+        const double expected = static_cast<double>(reader.steps()[k]) * dt;
+        if (std::abs(reader.times()[k] - expected) > 1e-9 * std::max(expected, dt))
+            throw FileError(trajectory.string(),
+                            "/particles/bodies/position/time, frame " + std::to_string(k) + ": " +
+                                format_number(reader.times()[k]) + " s, but its step " +
+                                std::to_string(reader.steps()[k]) + " × dt is " +
+                                format_number(expected) + " s");
+    }
     const fs::path dir = fs::is_directory(run)              ? run
                          : trajectory.parent_path().empty() ? fs::path(".")
                                                             : trajectory.parent_path();

@@ -18,6 +18,10 @@ struct StoredRun {
     TrajectoryReader reader;
 
     std::size_t frames() const { return reader.times().size(); }
+    // The frames on the output grid (t = k × output interval): all of them, or all but the
+    // last when the run's duration is not a whole number of intervals and its last frame was
+    // written at its end. Analyses that need equally spaced frames use these.
+    std::size_t grid_frames() const;
     const std::vector<double>& times() const { return reader.times(); }
     long long total_bodies() const;
     // Frame k, checked against the stored config (body count, species indices): a damaged

@@ -1,11 +1,25 @@
 #include "rodsea/io/trajectory_reader.hpp"
 
+#include <cmath>
+#include <utility>
+
 #include "rodsea/error.hpp"
 #include "rodsea/io/detail/hdf5.hpp"
 
 namespace rodsea {
 
 namespace {
+
+// The frame count and per-frame shape of an [frames, n, width] dataset.
+std::vector<hsize_t> dataset_dims(const h5::File& f, const std::string& name) {
+    h5::Handle set(H5Dopen2(f.id(), name.c_str(), H5P_DEFAULT));
+    if (set.get() < 0) h5::fail(f.path(), "no dataset " + name + " (not a rodsea trajectory?)");
+    h5::Handle space(H5Dget_space(set.get()));
+    const int rank = H5Sget_simple_extent_ndims(space.get());
+    std::vector<hsize_t> dims(static_cast<std::size_t>(rank < 0 ? 0 : rank));
+    if (rank > 0) H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
+    return dims;
+}
 
 // Frame `index` of an [frames, n, width] float dataset.
 std::vector<float> read_frame(const h5::File& f, const std::string& name, std::uint64_t index,
@@ -35,9 +49,53 @@ TrajectoryReader::TrajectoryReader(const std::filesystem::path& path)
     if (!h5::exists(f.id(), "h5md") || !h5::exists(f.id(), "particles/bodies/position"))
         throw FileError(path.string(), "not a rodsea trajectory (no H5MD /particles/bodies)");
     h5::Handle position = h5::open_group(f, f.id(), "particles/bodies/position");
-    std::vector<double> steps = h5::read_doubles(f, position.get(), "step");
-    steps_.assign(steps.begin(), steps.end());
+    const std::vector<double> steps = h5::read_doubles(f, position.get(), "step");
     times_ = h5::read_doubles(f, position.get(), "time");
+    const std::string where = path.string();
+    // A writer killed within a frame leaves its step without its time (TrajectoryFile writes
+    // value, step, time in that order): such a frame is not complete and is not read.
+    times_.resize(std::min(steps.size(), times_.size()));
+    for (std::size_t k = 0; k < times_.size(); ++k) {
+        const auto bad = [&](const std::string& what, double value) {
+            throw FileError(where, "/particles/bodies/position/" + what + ", frame " +
+                                       std::to_string(k) + ": " + format_number(value) +
+                                       "; allowed: finite, >= 0 and increasing from frame to "
+                                       "frame");
+        };
+        // Steps are whole numbers below 2^53: exact in a double, as h5py reads them too.
+        if (!std::isfinite(steps[k]) || steps[k] < 0.0 || steps[k] > 9.0e15 ||
+            steps[k] != std::floor(steps[k]) || (k > 0 && steps[k] <= steps[k - 1]))
+            bad("step", steps[k]);
+        if (!std::isfinite(times_[k]) || times_[k] < 0.0 || (k > 0 && times_[k] <= times_[k - 1]))
+            bad("time", times_[k]);
+        steps_.push_back(static_cast<std::int64_t>(steps[k]));
+    }
+    h5::Handle bodies = h5::open_group(f, f.id(), "particles/bodies");
+    const std::vector<std::int32_t> species = h5::read_ints(f, bodies.get(), "species");
+    h5::Handle stored = h5::open_group(f, f.id(), "parameters/rodsea/species");
+    H5G_info_t info{};
+    if (H5Gget_info(stored.get(), &info) < 0)
+        h5::fail(path, "cannot list /parameters/rodsea/species");
+    const auto kinds = static_cast<std::int64_t>(info.nlinks);
+    for (std::size_t b = 0; b < species.size(); ++b)
+        if (species[b] < 0 || species[b] >= kinds)
+            throw FileError(where, "/particles/bodies/species, body " + std::to_string(b) + ": " +
+                                       std::to_string(species[b]) + "; allowed: [0, " +
+                                       std::to_string(kinds - 1) + "] (the file stores " +
+                                       std::to_string(kinds) + " species)");
+    species_.assign(species.begin(), species.end());
+    const hsize_t n = species_.size(), frames = steps_.size();
+    for (const auto& [name, width] : {std::pair<const char*, hsize_t>{"position", 3},
+                                      {"orientation", 4},
+                                      {"velocity", 3},
+                                      {"angular_velocity", 3}}) {
+        const std::string dataset = std::string("particles/bodies/") + name + "/value";
+        const std::vector<hsize_t> dims = dataset_dims(f, dataset);
+        if (dims.size() != 3 || dims[0] < frames || dims[1] != n || dims[2] != width)
+            throw FileError(where, "/" + dataset + " is not [" + std::to_string(frames) + ", " +
+                                       std::to_string(n) + ", " + std::to_string(width) +
+                                       "] (frames, bodies, components)");
+    }
 }
 
 TrajectoryReader::TrajectoryReader(TrajectoryReader&&) noexcept = default;
@@ -48,8 +106,7 @@ BodyState TrajectoryReader::frame(std::uint64_t index) const {
     if (index >= frames())
         throw FileError(f.path().string(), "frame " + std::to_string(index) + " of " +
                                                std::to_string(frames()) + " requested");
-    h5::Handle bodies = h5::open_group(f, f.id(), "particles/bodies");
-    const std::vector<std::int32_t> species = h5::read_ints(f, bodies.get(), "species");
+    const std::vector<std::uint32_t>& species = species_;
     const size_t n = species.size();
     const auto x = read_frame(f, "particles/bodies/position/value", index, n, 3);
     const auto q = read_frame(f, "particles/bodies/orientation/value", index, n, 4);
@@ -57,7 +114,7 @@ BodyState TrajectoryReader::frame(std::uint64_t index) const {
     const auto w = read_frame(f, "particles/bodies/angular_velocity/value", index, n, 3);
     BodyState b;
     for (size_t i = 0; i < n; ++i)
-        b.add(static_cast<std::uint32_t>(species[i]), {x[3 * i], x[3 * i + 1], x[3 * i + 2]},
+        b.add(species[i], {x[3 * i], x[3 * i + 1], x[3 * i + 2]},
               {q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]},
               {v[3 * i], v[3 * i + 1], v[3 * i + 2]}, {w[3 * i], w[3 * i + 1], w[3 * i + 2]});
     return b;
@@ -69,7 +126,18 @@ std::vector<double> TrajectoryReader::series(const std::string& column) const {
     if (!h5::exists(f.id(), group))
         throw FileError(f.path().string(), "no time-series column " + column);
     h5::Handle g = h5::open_group(f, f.id(), group);
-    return h5::read_doubles(f, g.get(), "value");
+    std::vector<double> values = h5::read_doubles(f, g.get(), "value");
+    const std::string dataset = "/" + group + "/value";
+    if (values.size() < frames())
+        throw FileError(f.path().string(), dataset + " has " + std::to_string(values.size()) +
+                                               " rows for " + std::to_string(frames()) + " frames");
+    values.resize(frames());
+    for (std::size_t k = 0; k < values.size(); ++k)
+        if (!std::isfinite(values[k]))
+            throw FileError(f.path().string(), dataset + ", frame " + std::to_string(k) + ": " +
+                                                   format_number(values[k]) +
+                                                   "; allowed: finite values");
+    return values;
 }
 
 bool TrajectoryReader::has_series(const std::string& column) const {

@@ -1,7 +1,12 @@
 #pragma once
 // Reads what TrajectoryFile wrote: frame steps and times, one frame's bodies (single precision
-// as stored), and any time-series column. Throws FileError for a file that is not a rodsea
-// trajectory.
+// as stored), and any time-series column. Everything read is checked before it is returned, as
+// a config value would be: opening checks the frame steps and times (finite, increasing,
+// as many as frames), the body count of every per-body dataset and the species indices
+// (against the species stored in the file); series() checks its length and that every value
+// is finite. Values within a frame are checked against the run's config by StoredRun::frame
+// (engine/state_check.hpp). Every failure is a FileError naming the file, the dataset, and the
+// frame, body or row with its value.
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -30,6 +35,7 @@ class TrajectoryReader {
     std::unique_ptr<Impl> impl_;
     std::vector<std::int64_t> steps_;
     std::vector<double> times_;
+    std::vector<std::uint32_t> species_;
 };
 
 }  // namespace rodsea
