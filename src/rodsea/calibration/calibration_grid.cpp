@@ -147,6 +147,19 @@ CalibrationGrid parse_calibration_grid(std::string_view text, const std::string&
         n && std::floor(number(*n, "copies")) != number(*n, "copies"))
         throw InvalidParameter(key("copies"), format_number(number(*n, "copies")),
                                "a whole number");
+    // Every point × copy is one simulation held in memory while it runs, and a row of results.
+    constexpr double kMaxSimulations = 1e5;
+    const double simulations = static_cast<double>(g.epsilon.size()) *
+                               static_cast<double>(g.gap.size()) *
+                               static_cast<double>(g.dt.size()) * g.copies;
+    if (simulations > kMaxSimulations)
+        throw InvalidParameter(
+            key("copies"), std::to_string(g.copies),
+            "at most " + format_number(kMaxSimulations) + " simulations in all (points × copies)",
+            format_number(simulations) + " from " + std::to_string(g.epsilon.size()) +
+                " epsilon × " + std::to_string(g.gap.size()) + " gap × " +
+                std::to_string(g.dt.size()) + " dt points × " + std::to_string(g.copies) +
+                " copies");
     return g;
 }
 

@@ -296,14 +296,7 @@ void build_the_rest(ConfigValues& c, RunPlan& plan, const EpsilonLookup& epsilon
 // Checks across keys, each naming the key the user wrote.
 void check_across_keys(const ConfigValues& c, const RunPlan& plan) {
     const EngineParameters& e = plan.engine;
-    long long total = 0;
-    for (const long long n : plan.counts)
-        total += n;
-    if (total < 1) {
-        throw InvalidParameter("species", "0 bodies in total", "at least one body",
-                               "every species has count 0 or rounds to 0 bodies");
-    }
-
+    // The box first: a box too small for its bodies also rounds every count to 0.
     const Species* longest = &e.species.front();
     for (const Species& s : e.species)
         if (s.shape.extent > longest->shape.extent) longest = &s;
@@ -317,6 +310,31 @@ void check_across_keys(const ConfigValues& c, const RunPlan& plan) {
                          longest->name + "' (" + format_number(longest->shape.extent) +
                          " mm), so that no body meets two images of another",
                      box.where(key, c.source)));
+    }
+
+    long long total = 0;
+    for (const long long n : plan.counts)
+        total += n;
+    if (total > kMaxBodies) {
+        const auto& all = c.all("species");
+        std::size_t largest = 0;
+        for (std::size_t s = 1; s < plan.counts.size(); ++s)
+            if (plan.counts[s] > plan.counts[largest]) largest = s;
+        const TableValues& s = all[largest];
+        const std::string key = s.has("area_fraction") ? "area_fraction" : "count";
+        throw InvalidParameter(
+            s.key_path(key), shown(s, "species", key),
+            "at most " + std::to_string(kMaxBodies) + " bodies in all species together",
+            join_why(std::to_string(total) + " bodies in a " + format_number(e.box.lx) + " × " +
+                         format_number(e.box.ly) + " mm box (" +
+                         std::to_string(plan.counts[largest]) + " of them " +
+                         e.species[largest].name +
+                         "): a smaller box.side or smaller area fractions",
+                     s.where(key, c.source)));
+    }
+    if (total < 1) {
+        throw InvalidParameter("species", "0 bodies in total", "at least one body",
+                               "every species has count 0 or rounds to 0 bodies");
     }
 
     const TableValues& time = c.one("time");

@@ -102,7 +102,7 @@ std::vector<KeySpec> make_keys() {
     k.push_back(integer("species", "count")
                     .unit("bodies")
                     .def_text("(from area_fraction)")
-                    .integers(0, 100'000'000)
+                    .integers(0, kMaxBodies)
                     .alternative("area_fraction")
                     .doc("The number of bodies."));
     k.push_back(
@@ -393,7 +393,7 @@ std::string KeySpec::allowed_text() const {
             return "an integer in [" + std::to_string(min_integer) + ", " +
                    std::to_string(max_integer) + "]";
         case ValueType::text:
-            return name == "name" ? "letters, digits, _ and -" : "any string";
+            return name == "name" ? "1 to 64 letters, digits, _ and -" : "any string";
         case ValueType::option: {
             std::string s;
             for (size_t i = 0; i < options.size(); ++i) {

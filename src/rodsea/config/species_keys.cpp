@@ -18,11 +18,15 @@ std::string kinds_text(KindMask kinds) {
     return s;
 }
 
+// Names become column names, file names and plot labels: 64 characters is plenty.
+constexpr std::size_t kMaxNameLength = 64;
+
 bool valid_name(const std::string& name) {
-    return !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
-        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-               c == '_' || c == '-';
-    });
+    return !name.empty() && name.size() <= kMaxNameLength &&
+           std::all_of(name.begin(), name.end(), [](char c) {
+               return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                      c == '_' || c == '-';
+           });
 }
 
 std::string at_table(const TableValues& t, const std::string& source) {
@@ -82,7 +86,9 @@ void complete_species(TableValues& t, const std::string& source) {
     if (!valid_name(t.text("name"))) {
         throw InvalidParameter(t.key_path("name"), toml_literal(t.at("name")),
                                find_key("species", "name")->allowed_text(),
-                               join_why("a non-empty name", t.where("name", source)));
+                               join_why("a non-empty name of at most " +
+                                            std::to_string(kMaxNameLength) + " characters",
+                                        t.where("name", source)));
     }
     const std::int64_t spheres = t.integer("spheres");
     if (kind == BodyKind::polar_rod && spheres < 2) {

@@ -42,6 +42,10 @@ struct Species {
 // at 1 /mm polar rods spin up without bound, at 3 /mm a run blows up within 20 ms.
 inline constexpr double kMaxNoiseEpsilon = 0.5;
 
+// The most bodies one run may hold, in all species together: 250× the paper's largest system,
+// ~100 GB of memory.
+inline constexpr long long kMaxBodies = 100'000'000;
+
 inline constexpr double kPolarRodMass = 1.0;
 inline constexpr double kMediumMass = 0.2;
 

@@ -3,12 +3,15 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
 #include <ostream>
 #include <string>
 
 #include "rodsea/builder/initial_state.hpp"
+#include "rodsea/cli/machine_memory.hpp"
 #include "rodsea/cli/progress.hpp"
 #include "rodsea/engine/physics/contact.hpp"
+#include "rodsea/error.hpp"
 #include "rodsea/run/steady_stop.hpp"
 
 namespace rodsea {
@@ -60,6 +63,18 @@ ResourceEstimate estimate_resources(const RunPlan& plan) {
     e.checkpoint_bytes =
         e.bodies * (3 + 3 + 3 + 4) * sizeof(double) + e.bodies * 4 + plan.config_toml.size() + 4096;
     return e;
+}
+
+void check_fits_in_memory(const RunPlan& plan) {
+    const ResourceEstimate e = estimate_resources(plan);
+    const std::optional<std::uint64_t> available = available_memory_bytes();
+    if (!available || e.memory_bytes <= *available) return;
+    throw InvalidParameter(
+        "species",
+        std::to_string(e.bodies) + " bodies (" + std::to_string(e.spheres) + " spheres), about " +
+            format_bytes(e.memory_bytes) + " of memory",
+        "what this machine has available, " + format_bytes(*available),
+        "a smaller box.side or smaller area fractions, or a machine with more memory");
 }
 
 void describe_plan(const RunPlan& plan, std::ostream& out, bool brief) {
@@ -114,7 +129,11 @@ void describe_plan(const RunPlan& plan, std::ostream& out, bool brief) {
         << " frames of " << format_bytes(e.frame_bytes) << " = " << format_bytes(e.trajectory_bytes)
         << "; checkpoint " << format_bytes(e.checkpoint_bytes) << " every "
         << format_duration(plan.control.checkpoint_interval * 60.0) << " of wall time\n";
-    out << "memory   about " << format_bytes(e.memory_bytes) << "\n";
+    out << "memory   about " << format_bytes(e.memory_bytes);
+    if (const std::optional<std::uint64_t> available = available_memory_bytes())
+        out << " of the " << format_bytes(*available) << " available here"
+            << (e.memory_bytes > *available ? ": TOO LARGE for this machine, run refuses it" : "");
+    out << "\n";
     const PackingCheck packing = check_packing(p, plan.counts);
     out << "packing  " << (packing.ok ? "feasible" : "IMPOSSIBLE: " + packing.message) << "\n";
     if (packing.ok) out << "start    " << planned_start(p, plan.counts, plan.builder) << "\n";

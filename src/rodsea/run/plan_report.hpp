@@ -20,6 +20,10 @@ struct ResourceEstimate {
 };
 ResourceEstimate estimate_resources(const RunPlan& plan);
 
+// Throws InvalidParameter (naming the system's size, what it needs and what the machine has)
+// when the run's memory exceeds what this machine has available (cli/machine_memory.hpp).
+void check_fits_in_memory(const RunPlan& plan);
+
 // The full report (`rodsea info`); `brief` drops the CHOICE list (the header of `rodsea run`).
 void describe_plan(const RunPlan& plan, std::ostream& out, bool brief = false);
 

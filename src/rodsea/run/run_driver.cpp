@@ -352,10 +352,12 @@ bool is_empty_directory(const std::filesystem::path& dir) {
     return std::filesystem::is_directory(dir) && std::filesystem::is_empty(dir);
 }
 
-// Refuses a directory that holds anything unless --overwrite, and creates it.
-void prepare_output_directory(const std::filesystem::path& dir, bool overwrite) {
+// Refuses a directory that holds anything unless --overwrite, and creates it. True when it
+// did not exist.
+bool prepare_output_directory(const std::filesystem::path& dir, bool overwrite) {
     std::error_code ec;
-    if (std::filesystem::exists(dir, ec)) {
+    const bool existed = std::filesystem::exists(dir, ec);
+    if (existed) {
         if (!std::filesystem::is_directory(dir, ec))
             throw FileError(dir.string(), "exists and is not a directory");
         if (!is_empty_directory(dir) && !overwrite)
@@ -367,14 +369,17 @@ void prepare_output_directory(const std::filesystem::path& dir, bool overwrite) 
     }
     std::filesystem::create_directories(dir, ec);
     if (ec) throw FileError(dir.string(), "cannot create the output directory: " + ec.message());
+    return !existed;
 }
 
-// --overwrite removes only the files a run writes; anything else in the directory stays.
+// --overwrite removes only the files a run writes and the analysis of them (rodsea analyze's
+// RUN_DIR/analysis/, which would otherwise describe the old run); anything else stays.
 void remove_run_files(const std::filesystem::path& dir) {
     std::error_code ec;
     for (const char* name :
          {kConfigFile, kTrajectoryFile, kSeriesFile, kCheckpointFile, kProgressFile})
         std::filesystem::remove(dir / name, ec);
+    std::filesystem::remove_all(dir / "analysis", ec);
 }
 
 }  // namespace
@@ -388,10 +393,21 @@ int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out,
     if (!packing.ok)
         throw InvalidParameter("species", "these counts", "a packing that fits", packing.message);
     check_steady_series(plan);
-    prepare_output_directory(options.out_dir, options.overwrite);
+    check_fits_in_memory(plan);
+    const bool created = prepare_output_directory(options.out_dir, options.overwrite);
     const std::filesystem::path& dir = options.out_dir;
     const RunDirectoryLock lock(dir);
     if (options.overwrite) remove_run_files(dir);
+    // A start that fails before its first checkpoint (the build runs out of memory, a signal
+    // during the build) leaves nothing to resume: a directory it created goes with it.
+    struct RemoveUnlessStarted {
+        const std::filesystem::path& dir;
+        bool armed;
+        ~RemoveUnlessStarted() {
+            std::error_code ignored;
+            if (armed) std::filesystem::remove_all(dir, ignored);
+        }
+    } cleanup{dir, created};
     // Flushed at once: with stdout going to a file, the plan and the start would otherwise
     // appear only with the first progress line, minutes later.
     if (!options.quiet) {
@@ -426,6 +442,7 @@ int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out,
     try {
         session.write_frame(0.0);
         session.checkpoint(false);
+        cleanup.armed = false;
     } catch (const FileError& e) {
         err << "rodsea: cannot write the run's first frame and checkpoint: " << e.what()
             << "\n  there is nothing to resume: make room and start again with --overwrite\n";
@@ -581,6 +598,7 @@ int resume_run(const std::filesystem::path& dir, const RunOptions& options, std:
     check_belongs_here(dir, c, stored);
     const bool extending = options.duration || options.steady_samples;
     const RunPlan plan = extending ? extended_plan(c, options, checkpoint_path) : stored;
+    check_fits_in_memory(plan);
     if (c.complete && (!extending || plan.total_steps() == c.step)) {
         if (!options.quiet)
             out << "rodsea: the run in " << dir.string() << " is already complete (step " << c.step
