@@ -219,20 +219,18 @@ TEST_F(MovieCli, FfmpegFailingAfterTheLastFrameLeavesNoFile) {
 TEST_F(MovieCli, CtrlCStopsCleanlyAndLeavesNoFile) {
     // An ffmpeg that is slow to start reading: rodsea is blocked writing the first frame (a
     // 2.5 MB frame does not fit the pipe) when Ctrl-C arrives.
-    const ScopedEnv env(
-        "RODSEA_FFMPEG",
-        fake_ffmpeg(path("fake-ffmpeg"), "sleep 2\ncat > /dev/null\nexit 0\n").string());
+    const fs::path started = path("ffmpeg-started");
+    const ScopedEnv env("RODSEA_FFMPEG", fake_ffmpeg(path("fake-ffmpeg"),
+                                                     "touch '" + started.string() +
+                                                         "'\nsleep 2\ncat > /dev/null\nexit 0\n")
+                                             .string());
     const fs::path mp4 = path("stopped.mp4");
     ChildOptions options;
-    // ffmpeg has started once its log (beside the temporary movie) exists.
-    options.interrupt_when = [&] {
-        for (const fs::path& t : temporaries_of(mp4))
-            if (t.extension() == ".log") return true;
-        return false;
-    };
+    options.interrupt_when = [&] { return fs::exists(started); };
     const ChildResult r = run_rodsea({"movie", run().string(), "-o", mp4.string(), "--quiet"},
                                      scratch_->path(), options);
     ASSERT_TRUE(r.interrupted);
+    fs::remove(started);  // the test's own marker
     EXPECT_EQ(r.exit_code, 130) << r.err;
     EXPECT_FALSE(fs::exists(mp4));
     EXPECT_TRUE(leftovers().empty()) << leftovers().front();

@@ -1,14 +1,16 @@
 #include "rodsea/calibration/calibration_table.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
 #include <string>
 
+#include "rodsea/engine/parameters.hpp"
 #include "rodsea/error.hpp"
+#include "rodsea/text_file.hpp"
 
 namespace rodsea {
 
@@ -39,9 +41,7 @@ std::string joined(const std::set<double>& values) {
 }  // namespace
 
 CalibrationTable CalibrationTable::read(const std::filesystem::path& path, double gap, double dt) {
-    std::ifstream in(path);
-    if (!in)
-        throw FileError(path.string(), "cannot be read (a calibration.csv from rodsea calibrate)");
+    std::istringstream in(read_text_file(path));
     std::string line;
     std::vector<std::string> header;
     std::map<std::string, std::size_t> column;
@@ -68,16 +68,25 @@ CalibrationTable CalibrationTable::read(const std::filesystem::path& path, doubl
                             "row " + std::to_string(row) + " has " + std::to_string(cells.size()) +
                                 " cells, the header " + std::to_string(header.size()));
         if (cells[column["species"]] != "polar_rod") continue;
-        try {
-            const double g = std::stod(cells[column["gap"]]), s = std::stod(cells[column["dt"]]);
-            gaps.insert(g);
-            steps.insert(s);
-            if (same(g, gap) && same(s, dt))
-                table.points_.push_back(
-                    {std::stod(cells[column["epsilon"]]), std::stod(cells[column["D_r"]])});
-        } catch (const std::logic_error&) {
-            throw FileError(path.string(), "row " + std::to_string(row) + " holds a non-number");
-        }
+        // Values from a file meet the ranges their config keys have.
+        const auto value = [&](const char* name, double lo, double hi) {
+            const std::string& text = cells[column[name]];
+            double v = 0.0;
+            const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v);
+            if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(v) ||
+                v < lo || v > hi)
+                throw FileError(path.string(), "row " + std::to_string(row) + ", column " + name +
+                                                   ": '" + text + "'; allowed: a number in [" +
+                                                   format_number(lo) + ", " + format_number(hi) +
+                                                   "]");
+            return v;
+        };
+        const double g = value("gap", 1e-6, 1e3), s = value("dt", 1e-12, 1.0);
+        gaps.insert(g);
+        steps.insert(s);
+        if (same(g, gap) && same(s, dt))
+            table.points_.push_back(
+                {value("epsilon", 0.0, kMaxNoiseEpsilon), value("D_r", 0.0, 1e6)});
     }
     std::sort(table.points_.begin(), table.points_.end(),
               [](const Point& a, const Point& b) { return a.epsilon < b.epsilon; });

@@ -5,6 +5,7 @@
 
 #include "rodsea/analysis/statistics.hpp"
 #include "rodsea/builder/placement.hpp"
+#include "rodsea/cli/stop_signal.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/random.hpp"
 
@@ -73,13 +74,19 @@ SingleBodyTrace run_single_body_copy(const SingleBodyExperiment& e, int index) {
     const auto steps = static_cast<std::uint64_t>(std::llround(period / e.dt));
     const auto warmup = static_cast<std::uint64_t>(std::llround(e.warmup / period));
     const auto periods = static_cast<std::size_t>(std::llround(e.duration / period));
-    sim.run(steps * warmup);
-
     SingleBodyTrace trace;
+    // A stop signal ends the copy within a drive period (its partial trace is then discarded by
+    // the caller), so that Ctrl-C answers in well under a second, not after the copy.
+    for (std::uint64_t p = 0; p < warmup; ++p) {
+        if (stop_signal_received() != 0) return trace;
+        sim.run(steps);
+    }
+
     const PeriodicBox2D box{kBoxSide, kBoxSide};
     Vec3 last = sim.bodies().position[0];
     double previous_angle = 0.0;
     for (std::size_t p = 0; p < periods; ++p) {
+        if (stop_signal_received() != 0) return trace;
         sim.run(steps);
         const Vec3 now = sim.bodies().position[0];
         const Vec3 d = box.minimum_image(now - last);

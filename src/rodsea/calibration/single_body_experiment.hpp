@@ -47,7 +47,8 @@ struct SingleBodyResult {
 };
 
 // Runs copy `index` (start angle, tilt, spin and noise seed drawn from experiment.seed and
-// index). Throws InvalidParameter for parameters the engine refuses.
+// index). Throws InvalidParameter for parameters the engine refuses. Returns early, with a
+// partial trace, once a stop signal (cli/stop_signal.hpp) has arrived.
 SingleBodyTrace run_single_body_copy(const SingleBodyExperiment& experiment, int index);
 
 // Combines the copies' traces. `period` is the sampling interval, s.

@@ -7,7 +7,7 @@ namespace rodsea {
 namespace {
 
 volatile std::sig_atomic_t received = 0;
-struct sigaction previous_int, previous_term, previous_xfsz;
+struct sigaction previous_int, previous_term, previous_hup, previous_xfsz;
 
 extern "C" void on_stop_signal(int signal) {
     received = signal;
@@ -24,6 +24,7 @@ StopSignalGuard::StopSignalGuard() {
     sigemptyset(&action.sa_mask);
     sigaction(SIGINT, &action, &previous_int);
     sigaction(SIGTERM, &action, &previous_term);
+    sigaction(SIGHUP, &action, &previous_hup);  // the terminal closed, or an ssh session died
     struct sigaction ignore {};
     ignore.sa_handler = SIG_IGN;
     sigemptyset(&ignore.sa_mask);
@@ -33,11 +34,16 @@ StopSignalGuard::StopSignalGuard() {
 StopSignalGuard::~StopSignalGuard() {
     sigaction(SIGINT, &previous_int, nullptr);
     sigaction(SIGTERM, &previous_term, nullptr);
+    sigaction(SIGHUP, &previous_hup, nullptr);
     sigaction(SIGXFSZ, &previous_xfsz, nullptr);
 }
 
 int stop_signal_received() {
     return received;
+}
+
+int StopRequested::exit_code() const {
+    return 128 + (signal == SIGHUP ? SIGTERM : signal);
 }
 
 }  // namespace rodsea

@@ -1,7 +1,7 @@
 #pragma once
-// SIGINT and SIGTERM ask a run to stop at the end of the current step (the handler only sets a
-// flag; the run loop writes the checkpoint). SIGXFSZ is ignored so that a file-size limit shows
-// up as a failed write, handled like a full disk, instead of killing the process.
+// SIGINT, SIGTERM and SIGHUP ask a run to stop at the end of the current step (the handler only
+// sets a flag; the run loop writes the checkpoint). SIGXFSZ is ignored so that a file-size limit
+// shows up as a failed write, handled like a full disk, instead of killing the process.
 namespace rodsea {
 
 // Installs the handlers for its lifetime and restores the previous ones afterwards.
@@ -20,7 +20,8 @@ int stop_signal_received();
 // signal arrived: it unwinds through replace_file_atomically, which removes the unfinished file.
 struct StopRequested {
     int signal = 0;
-    int exit_code() const { return 128 + signal; }  // 130 for SIGINT, 143 for SIGTERM
+    // 130 for SIGINT, 143 for SIGTERM and SIGHUP (both mean "the session is going away")
+    int exit_code() const;
 };
 
 }  // namespace rodsea

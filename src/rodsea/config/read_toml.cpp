@@ -185,7 +185,8 @@ std::string table_header(const TableSpec& t) {
             }
         }
     }
-    throw InvalidParameter(path, node_text(node), allowed, join_why("unknown key; " + hint, where));
+    throw InvalidParameter(path, node_text(node), allowed,
+                           join_why(hint.empty() ? "unknown key" : "unknown key; " + hint, where));
 }
 
 void read_table(const toml::table& source, std::string_view table, const std::string& prefix,

@@ -1,5 +1,7 @@
 #include "rodsea/io/detail/hdf5.hpp"
 
+#include <cerrno>
+#include <cstdlib>
 #include <cstring>
 
 #include "rodsea/error.hpp"
@@ -28,11 +30,33 @@ herr_t collect(unsigned n, const H5E_error2_t* e, void* data) {
     return 0;
 }
 
+// HDF5's innermost message for a failed system call lists the call's raw arguments ("errno =
+// 28, error message = 'No space left on device', ..., bytes actually written =
+// 18446744073709551615"): the error number, in words, is what a user needs.
+std::string in_words(const std::string& cause) {
+    const std::size_t at = cause.find("errno = ");
+    if (at == std::string::npos) return cause;
+    const int error = std::atoi(cause.c_str() + at + 8);
+    switch (error) {
+        case ENOSPC:
+            return "the disk is full (" + std::string(std::strerror(error)) + ")";
+        case EDQUOT:
+            return "the disk quota is exhausted (" + std::string(std::strerror(error)) + ")";
+        case EFBIG:
+            return "the file-size limit was reached (" + std::string(std::strerror(error)) + ")";
+        case EIO:
+            return "the device reported an input/output error (" +
+                   std::string(std::strerror(error)) + ")";
+        default:
+            return "the system refused: " + std::string(std::strerror(error));
+    }
+}
+
 std::string library_cause() {
     std::string cause;
     H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, collect, &cause);
     H5Eclear2(H5E_DEFAULT);
-    return cause;
+    return in_words(cause);
 }
 
 template <class Id>

@@ -150,6 +150,7 @@ struct TrajectoryFile::Impl {
     std::vector<float> scratch;
     std::uint64_t complete_frames = 0;
     std::string run_id;
+    std::uint64_t reserved_end = 0;  // the file offset up to which reserve() claimed blocks
 };
 
 TrajectoryFile::TrajectoryFile(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -300,13 +301,31 @@ void TrajectoryFile::reserve(std::uint64_t bytes) {
         ::fallocate(fd, FALLOC_FL_KEEP_SIZE, static_cast<off_t>(size), static_cast<off_t>(bytes));
     const int error = errno;
     ::close(fd);
-    if (status == 0) return;
+    if (status == 0) {
+        impl_->reserved_end = size + bytes;
+        return;
+    }
     if (error != EOPNOTSUPP && error != ENOSYS) no_room(std::strerror(error));
     // File systems without fallocate: the free space must at least be there.
     struct statvfs fs {};
     if (::statvfs(path.parent_path().c_str(), &fs) == 0 &&
         static_cast<std::uint64_t>(fs.f_bavail) * fs.f_frsize < bytes)
         no_room(std::strerror(ENOSPC));
+}
+
+void TrajectoryFile::release_reserve() noexcept {
+    const std::filesystem::path& path = impl_->file.path();
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec || impl_->reserved_end <= size) return;
+    // Blocks beyond the end hold nothing: HDF5 wrote none of them (they lie past its size).
+    const int fd = ::open(path.c_str(), O_WRONLY);
+    if (fd < 0) return;
+    if (::fallocate(fd, FALLOC_FL_PUNCH_HOLE | FALLOC_FL_KEEP_SIZE, static_cast<off_t>(size),
+                    static_cast<off_t>(impl_->reserved_end - size)) != 0)
+        (void)::ftruncate(fd, static_cast<off_t>(size));  // file systems without hole punching
+    ::close(fd);
+    impl_->reserved_end = 0;
 }
 
 void TrajectoryFile::flush() {

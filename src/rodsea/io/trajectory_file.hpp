@@ -62,6 +62,9 @@ class TrajectoryFile {
     // middle of HDF5's own writes, which would leave a file HDF5 cannot open again. Throws
     // FileError naming the file and the reason.
     void reserve(std::uint64_t bytes);
+    // Gives back the disk blocks reserve() claimed beyond the file's end: after a failed write,
+    // so that a full disk still has room for the checkpoint of the step where the run stopped.
+    void release_reserve() noexcept;
     // Replaces the stored config (/parameters/rodsea/config): an extended run's new length.
     void replace_config(const std::string& config_toml);
     void flush();  // makes every appended frame durable before a checkpoint refers to it

@@ -61,13 +61,17 @@ Eigenvalues block_eigenvalues(const MeanFieldParameters& p, double d) {
 
 }  // namespace
 
+// Bounds far beyond any physical rate (the paper's are of order 1/s), so that products such as
+// α λ / Γ_f stay finite and a huge value is refused by name, not as an unstable --dt.
+constexpr double kLargest = 1e12, kSmallest = 1e-12;
+
 void check_mean_field_parameters(const MeanFieldParameters& p, const std::string& prefix) {
-    require_finite(prefix + "a", p.a, "1/s");
-    require_non_negative(prefix + "lambda", p.lambda, "1/mm");
-    require_non_negative(prefix + "b", p.b, "1/s");
-    require_positive(prefix + "friction", p.friction, "M mm^-2 s^-1");
-    require_non_negative(prefix + "alpha", p.alpha, "M mm^-1 s^-2");
-    require_positive(prefix + "rho", p.rho, "M mm^-2");
+    require_in_closed_range(prefix + "a", p.a, -kLargest, kLargest, "1/s");
+    require_in_closed_range(prefix + "lambda", p.lambda, 0.0, kLargest, "1/mm");
+    require_in_closed_range(prefix + "b", p.b, 0.0, kLargest, "1/s");
+    require_in_closed_range(prefix + "friction", p.friction, kSmallest, kLargest, "M mm^-2 s^-1");
+    require_in_closed_range(prefix + "alpha", p.alpha, 0.0, kLargest, "M mm^-1 s^-2");
+    require_in_closed_range(prefix + "rho", p.rho, kSmallest, kLargest, "M mm^-2");
 }
 
 double effective_growth_rate(const MeanFieldParameters& p) {
@@ -305,7 +309,8 @@ struct MeanfieldPlan {
 
 MeanfieldPlan make_plan(const MeanfieldOptions& o) {
     check_mean_field_parameters(o.model, "--");
-    require_non_negative("--p0", o.p0);
+    require_in_closed_range("--p0", o.p0, 0.0, kLargest);
+    require_in_closed_range("--v0", o.v0, -kLargest, kLargest, "mm/s");
     require_positive("--duration", o.duration, "s");
     require_positive("--dt", o.dt, "s");
     MeanfieldPlan plan;

@@ -227,7 +227,9 @@ class Session {
     }
 
     int stop_on_signal(int signal, std::ostream& out, std::ostream& err) {
-        const char* what = signal == SIGINT ? "interrupted (SIGINT)" : "terminated (SIGTERM)";
+        const char* what = signal == SIGINT   ? "interrupted (SIGINT)"
+                           : signal == SIGHUP ? "hung up (SIGHUP)"
+                                              : "terminated (SIGTERM)";
         try {
             checkpoint(false);
             trajectory_.close();
@@ -280,8 +282,10 @@ class Session {
     }
 
     int stop_after_write_failure(const FileError& e, std::ostream& out, std::ostream& err) {
-        // HDF5 cannot be trusted to close a file whose writes failed: it is left as it is.
+        // HDF5 cannot be trusted to close a file whose writes failed: it is left as it is. The
+        // room claimed for the frame goes back, for the checkpoint.
         trajectory_.abandon();
+        trajectory_.release_reserve();
         write_progress("stopped", rate_());
         err << "rodsea: cannot write output at step " << sim_.step_count()
             << " (t = " << sim_.time() << " s): " << e.what() << "\n";
@@ -360,12 +364,18 @@ bool prepare_output_directory(const std::filesystem::path& dir, bool overwrite) 
     if (existed) {
         if (!std::filesystem::is_directory(dir, ec))
             throw FileError(dir.string(), "exists and is not a directory");
-        if (!is_empty_directory(dir) && !overwrite)
-            throw InvalidParameter("--out", dir.string(), "a new or empty directory",
-                                   "it exists and is not empty: choose another --out, add "
-                                   "--overwrite to replace its run files, or continue it with "
-                                   "rodsea run --resume " +
-                                       dir.string());
+        if (!is_empty_directory(dir) && !overwrite) {
+            // Without a checkpoint there is nothing --resume could continue.
+            const bool resumable = std::filesystem::exists(dir / kCheckpointFile, ec);
+            throw InvalidParameter(
+                "--out", dir.string(), "a new or empty directory",
+                resumable ? "it exists and is not empty: choose another --out, add --overwrite "
+                            "to replace its run files, or continue it with rodsea run --resume " +
+                                dir.string()
+                          : "it exists and is not empty, and has no checkpoint to resume (a run "
+                            "stopped before its first checkpoint?): choose another --out, or add "
+                            "--overwrite to start again there");
+        }
     }
     std::filesystem::create_directories(dir, ec);
     if (ec) throw FileError(dir.string(), "cannot create the output directory: " + ec.message());
@@ -589,7 +599,12 @@ int resume_run(const std::filesystem::path& dir, const RunOptions& options, std:
     const std::filesystem::path checkpoint_path = dir / kCheckpointFile;
     if (!std::filesystem::exists(checkpoint_path))
         throw FileError(checkpoint_path.string(),
-                        "no checkpoint here: is this a directory made by rodsea run?");
+                        std::filesystem::exists(dir / kConfigFile)
+                            ? "no checkpoint here: the run stopped before its first checkpoint, "
+                              "so there is nothing to resume; start it again with rodsea run " +
+                                  (dir / kConfigFile).string() + " --out " + dir.string() +
+                                  " --overwrite"
+                            : "no checkpoint here: is this a directory made by rodsea run?");
     const RunDirectoryLock lock(dir);
     Checkpoint c = read_checkpoint(checkpoint_path);
     const RunPlan stored =

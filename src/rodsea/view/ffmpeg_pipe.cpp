@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/mman.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -40,10 +41,7 @@ std::optional<fs::path> find_ffmpeg() {
 FfmpegEncoder::FfmpegEncoder(const fs::path& ffmpeg, const fs::path& output,
                              const fs::path& shown_as, const VideoSettings& settings,
                              std::function<int()> stop_signal)
-    : shown_as_(shown_as),
-      log_(output.string() + ".ffmpeg.log"),
-      settings_(settings),
-      stop_signal_(std::move(stop_signal)) {
+    : shown_as_(shown_as), settings_(settings), stop_signal_(std::move(stop_signal)) {
     const std::string size = std::to_string(settings.width) + "x" + std::to_string(settings.height);
     const std::string fps = format_number(settings.fps);
     // Cairo's ARGB32 is B, G, R, A in memory on little-endian machines: ffmpeg's bgra.
@@ -83,11 +81,13 @@ FfmpegEncoder::FfmpegEncoder(const fs::path& ffmpeg, const fs::path& output,
 
     int fds[2];
     if (::pipe(fds) != 0) throw FileError(ffmpeg.string(), "cannot create a pipe to ffmpeg");
-    const int log_fd = ::open(log_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    // ffmpeg's messages go to memory, not to a file beside the movie: on a full disk a log
+    // file stays empty, and its error ("No space left on device") is what the user needs.
+    const int log_fd = ::memfd_create("rodsea-ffmpeg-log", MFD_CLOEXEC);
     if (log_fd < 0) {
         ::close(fds[0]);
         ::close(fds[1]);
-        throw FileError(log_.string(), std::string("cannot write: ") + std::strerror(errno));
+        throw FileError("ffmpeg", std::string("cannot keep its log: ") + std::strerror(errno));
     }
     child_ = ::fork();
     if (child_ == 0) {
@@ -106,10 +106,9 @@ FfmpegEncoder::FfmpegEncoder(const fs::path& ffmpeg, const fs::path& output,
         ::_exit(127);
     }
     ::close(fds[0]);
-    ::close(log_fd);
+    log_fd_ = log_fd;
     if (child_ < 0) {
         ::close(fds[1]);
-        fs::remove(log_);
         throw FileError(ffmpeg.string(), "cannot start ffmpeg (fork failed)");
     }
     pipe_ = fds[1];
@@ -120,8 +119,7 @@ FfmpegEncoder::FfmpegEncoder(const fs::path& ffmpeg, const fs::path& output,
 
 FfmpegEncoder::~FfmpegEncoder() {
     stop_child();
-    std::error_code ignored;
-    fs::remove(log_, ignored);
+    if (log_fd_ >= 0) ::close(log_fd_);
     ::signal(SIGPIPE, previous_sigpipe_);
 }
 
@@ -139,10 +137,12 @@ void FfmpegEncoder::stop_child() {
 
 void FfmpegEncoder::fail(const std::string& what) {
     stop_child();
-    std::ifstream in(log_);
-    std::stringstream log;
-    log << in.rdbuf();
-    std::string tail = log.str();
+    std::string tail;
+    char buffer[4096];
+    ssize_t n = 0;
+    ::lseek(log_fd_, 0, SEEK_SET);
+    while ((n = ::read(log_fd_, buffer, sizeof buffer)) > 0)
+        tail.append(buffer, static_cast<std::size_t>(n));
     if (tail.size() > 2000) tail = "…" + tail.substr(tail.size() - 2000);
     throw FileError(shown_as_.string(), what + (tail.empty() ? "" : "; ffmpeg said:\n" + tail));
 }

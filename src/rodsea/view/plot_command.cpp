@@ -105,7 +105,15 @@ int plot_command(const std::vector<std::string>& args, std::ostream& out, std::o
     if (a.has("--quiet")) argv.emplace_back("--quiet");
     argv.emplace_back("--");  // INPUT is never taken for an option, whatever its name
     argv.push_back(input);
-    return run_program(std::move(argv), out, err, kExitFailure);
+    const std::string command = python + " " + script.string();
+    const int code = run_program(std::move(argv), out, err, kExitFailure);
+    // The script's own messages, if any, came first; the failure is always said.
+    if (code != kExitOk && code != kExitBadInput)
+        err << "rodsea plot: " << command << " failed ("
+            << (code > 128 ? "killed by signal " + std::to_string(code - 128)
+                           : "exit code " + std::to_string(code))
+            << "); nothing more was drawn\n";
+    return code;
 }
 
 }  // namespace rodsea

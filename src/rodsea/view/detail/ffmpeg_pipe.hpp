@@ -44,7 +44,8 @@ class FfmpegEncoder {
     void check_stop();  // throws StopRequested after stopping ffmpeg
     void stop_child();
 
-    std::filesystem::path shown_as_, log_;
+    std::filesystem::path shown_as_;
+    int log_fd_ = -1;  // ffmpeg's stdout and stderr, kept in memory (memfd)
     VideoSettings settings_;
     std::function<int()> stop_signal_;
     pid_t child_ = -1;
