@@ -61,6 +61,12 @@ Simulation::Simulation(EngineParameters params, BodyState bodies, std::uint64_t 
     backend_ = std::make_unique<cpu::CpuBackend>(*species_, std::move(bodies), options_.threads);
 }
 
+void Simulation::set_threads(int threads) {
+    if (threads < 1) throw InvalidParameter("threads", std::to_string(threads), ">= 1");
+    options_.threads = threads;
+    backend_->set_threads(threads);
+}
+
 Simulation Simulation::resume(EngineParameters params, BodyState bodies, std::uint64_t step_count,
                               BackendOptions options) {
     return Simulation(std::move(params), std::move(bodies), step_count, options, false);

@@ -60,6 +60,9 @@ class Simulation {
     void run(std::uint64_t steps);
 
     const BackendOptions& options() const { return options_; }
+    // Between steps: the trajectory is the same bit for bit on any number of threads, so a run
+    // may use fewer when other processes take its cores. Throws InvalidParameter below 1.
+    void set_threads(int threads);
     const char* backend_name() const { return backend_->name(); }
 
     double time() const { return static_cast<double>(step_count_) * params_.dt; }

@@ -78,6 +78,8 @@ class StepBackend {
     virtual const std::vector<Contact>& contacts() const = 0;
     // How often the neighbour list was built since construction.
     virtual std::uint64_t pair_list_builds() const = 0;
+    // Changes the CPU threads between steps (the trajectory does not depend on them).
+    virtual void set_threads(int threads) = 0;
 };
 
 }  // namespace rodsea

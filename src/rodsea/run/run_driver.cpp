@@ -7,8 +7,10 @@
 #include <optional>
 #include <ostream>
 #include <sstream>
+#include <thread>
 
 #include "rodsea/builder/initial_state.hpp"
+#include "rodsea/cli/free_cores.hpp"
 #include "rodsea/cli/progress.hpp"
 #include "rodsea/cli/stop_signal.hpp"
 #include "rodsea/config/config_file.hpp"
@@ -132,6 +134,24 @@ class Session {
         last_progress_ = Clock::now();
     }
 
+    // Steps on as many of run.threads as other processes leave cores free (FreeCoreMonitor):
+    // more threads than free cores spin against each other. Said once when it first differs.
+    void adapt_threads(std::ostream& out, ProgressStyle style) {
+        const int requested = plan_.control.threads;
+        if (requested <= 1) return;
+        const int use = threads_for_free_cores(requested, cores_.sample());
+        if (use == sim_.options().threads) return;
+        sim_.set_threads(use);
+        if (style != ProgressStyle::quiet && !told_threads_) {
+            out << "\nthreads: stepping on " << use << " of run.threads = " << requested
+                << ", as other processes leave " << use << " core" << (use == 1 ? "" : "s")
+                << " free (rechecked every " << kProgressSeconds
+                << " s; the trajectory does not depend on it)\n"
+                << std::flush;
+            told_threads_ = true;
+        }
+    }
+
     // Steps to the end, or until a signal or a write failure. Returns an ExitCode.
     int run(std::ostream& out, std::ostream& err, ProgressStyle style) {
         const std::uint64_t total = plan_.total_steps();
@@ -143,6 +163,10 @@ class Session {
         write_progress("running", 0.0);
         if (const int signal = stop_signal_received(); signal != 0)  // during the build
             return stop_on_signal(signal, out, err);
+        if (plan_.control.threads > 1) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));  // a first measure
+            adapt_threads(out, style);
+        }
         while (sim_.step_count() < total) {
             try {
                 sim_.step();
@@ -177,8 +201,10 @@ class Session {
                 progress.finish(step, last_polar_order_);
                 return stop_on_signal(signal, out, err);
             }
-            if ((step & 63u) == 0 && seconds_since(last_progress_) >= kProgressSeconds)
+            if ((step & 63u) == 0 && seconds_since(last_progress_) >= kProgressSeconds) {
                 write_progress("running", progress.steps_per_second());
+                adapt_threads(out, style);
+            }
             if ((step & 63u) == 0 && seconds_since(last_checkpoint_) >= checkpoint_seconds) {
                 try {
                     checkpoint(false);
@@ -341,6 +367,8 @@ class Session {
     Clock::time_point started_ = Clock::now();
     Clock::time_point last_checkpoint_ = Clock::now();
     Clock::time_point last_progress_ = Clock::now();
+    FreeCoreMonitor cores_;
+    bool told_threads_ = false;
     static constexpr double kProgressSeconds = 2.0;      // wall time between progress.txt updates
     std::function<double()> rate_ = [] { return 0.0; };  // this session's steps/s
 };

@@ -24,6 +24,7 @@ class CpuBackend final : public StepBackend {
     const BodyState& bodies() const override { return bodies_; }
     SphereView spheres() const override { return spheres_.view(); }
     const std::vector<Contact>& contacts() const override { return contacts_; }
+    void set_threads(int threads) override { threads_ = threads; }
     std::uint64_t pair_list_builds() const override { return finder_.pair_list_builds(); }
 
   private:
