@@ -31,7 +31,8 @@ struct ChildResult {
 
 struct ChildOptions {
     long long file_size_limit = -1;        // bytes, RLIMIT_FSIZE; < 0 for none
-    std::function<bool()> interrupt_when;  // polled every 10 ms; SIGINT once it returns true
+    std::function<bool()> interrupt_when;  // polled every 10 ms; a signal once it returns true
+    int interrupt_signal = SIGINT;         // the signal interrupt_when sends
     double timeout_seconds = 120.0;
 };
 
@@ -75,7 +76,7 @@ inline ChildResult run_rodsea(const std::vector<std::string>& args,
     } reaper{pid};
     while (waitpid(pid, &status, WNOHANG) == 0) {
         if (options.interrupt_when && !result.interrupted && options.interrupt_when()) {
-            kill(pid, SIGINT);
+            kill(pid, options.interrupt_signal);
             result.interrupted = true;
         }
         if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >

@@ -126,7 +126,8 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
         if (!std::isfinite(x))
             throw FileError(path.string(),
                             "damaged: a time-series accumulator is " + format_number(x));
-    if (!std::isfinite(c.wall_seconds) || c.wall_seconds < 0.0)
+    // 10^10 s is three centuries of wall time.
+    if (!std::isfinite(c.wall_seconds) || c.wall_seconds < 0.0 || c.wall_seconds > 1e10)
         throw FileError(path.string(),
                         "damaged: wall_seconds is " + format_number(c.wall_seconds) + " s");
     return c;

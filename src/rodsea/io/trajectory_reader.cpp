@@ -1,6 +1,7 @@
 #include "rodsea/io/trajectory_reader.hpp"
 
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "rodsea/error.hpp"
@@ -132,11 +133,20 @@ std::vector<double> TrajectoryReader::series(const std::string& column) const {
         throw FileError(f.path().string(), dataset + " has " + std::to_string(values.size()) +
                                                " rows for " + std::to_string(frames()) + " frames");
     values.resize(frames());
+    // Order parameters lie in [0, 1]; every other column but the mean velocities (signed) is a
+    // rate, a count, an energy or an overlap: never negative.
+    const bool order =
+        column.rfind("polar_order_", 0) == 0 || column.rfind("nematic_order_", 0) == 0;
+    const bool signed_column = column.rfind("mean_velocity_", 0) == 0;
+    const double lo = signed_column ? -std::numeric_limits<double>::infinity() : 0.0;
+    const double hi = order ? 1.0 + 1e-9 : std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < values.size(); ++k)
-        if (!std::isfinite(values[k]))
+        if (!std::isfinite(values[k]) || values[k] < lo || values[k] > hi)
             throw FileError(f.path().string(), dataset + ", frame " + std::to_string(k) + ": " +
-                                                   format_number(values[k]) +
-                                                   "; allowed: finite values");
+                                                   format_number(values[k]) + "; allowed: " +
+                                                   (order           ? "[0, 1]"
+                                                    : signed_column ? "finite values"
+                                                                    : "finite, >= 0"));
     return values;
 }
 

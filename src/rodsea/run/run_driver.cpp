@@ -500,8 +500,11 @@ void check_checkpoint(const Checkpoint& c, const RunPlan& plan, const std::files
         throw FileError(path.string(), "holds " + std::to_string(c.bodies.size()) +
                                            " bodies but its config asks for " +
                                            std::to_string(expected));
-    if (c.interval_accumulators.size() != SeriesRecorder(plan).interval_state().size())
-        throw FileError(path.string(), "damaged: wrong time-series interval state");
+    const std::string interval = SeriesRecorder(plan).interval_problem(c.interval_accumulators);
+    if (!interval.empty())
+        throw FileError(
+            path.string(),
+            "damaged: dataset interval_accumulators (the time series' open interval): " + interval);
 }
 
 // The first line where two config texts differ, as "`a` here, `b` there".

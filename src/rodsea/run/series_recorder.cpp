@@ -1,14 +1,21 @@
 #include "rodsea/run/series_recorder.hpp"
 
+#include <cmath>
+
 #include <algorithm>
 #include <stdexcept>
 
 #include "rodsea/engine/order_parameters.hpp"
+#include "rodsea/engine/state_check.hpp"
+#include "rodsea/error.hpp"
 
 namespace rodsea {
 
 SeriesRecorder::SeriesRecorder(const RunPlan& plan)
-    : species_count_(plan.engine.species.size()), structure_(analysis_setup(plan)) {
+    : species_count_(plan.engine.species.size()),
+      steps_per_output_(static_cast<double>(plan.steps_per_output())),
+      sweep_cap_(plan.engine.max_sweeps),
+      structure_(analysis_setup(plan)) {
     const EngineParameters& params = plan.engine;
     for (const Species& sp : params.species) {
         columns_.push_back({"polar_order_" + sp.name, "1"});
@@ -95,6 +102,25 @@ std::vector<double> SeriesRecorder::row(const Simulation& sim, double steps_per_
 std::vector<double> SeriesRecorder::interval_state() const {
     return {max_overlap_,     unresolved_,       max_sweeps_, impulses_,
             body_collisions_, plate_collisions_, steps_};
+}
+
+std::string SeriesRecorder::interval_problem(const std::vector<double>& state) const {
+    if (state.size() != 7) return std::to_string(state.size()) + " numbers, not 7";
+    const char* names[] = {"max_overlap",     "unresolved",       "max_sweeps", "impulses",
+                           "body_collisions", "plate_collisions", "steps"};
+    const double steps = state[6];
+    const double per_output = steps_per_output_;
+    // No step has more than 10^12 impulses, collisions or unresolved contacts.
+    const double hi[] = {kGrossOverlapFraction, steps * 1e12, sweep_cap_, steps * 1e12,
+                         steps * 1e12,          steps * 1e12, per_output};
+    for (std::size_t k = 0; k < 7; ++k) {
+        const double v = state[k];
+        const bool whole = k == 0 || v == std::floor(v);
+        if (!std::isfinite(v) || v < 0.0 || v > hi[k] || !whole)
+            return std::string(names[k]) + " = " + format_number(v) + ", allowed " +
+                   (k == 0 ? "" : "a whole number ") + "in [0, " + format_number(hi[k]) + "]";
+    }
+    return "";
 }
 
 void SeriesRecorder::restore_interval(const std::vector<double>& state) {

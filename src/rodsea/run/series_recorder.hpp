@@ -4,6 +4,7 @@
 // measures them (structure_series.hpp), and the engine's health (largest overlap, unresolved
 // contacts, sweeps, impulses) and collision rates accumulated over the interval, so that a bad
 // step between two rows is not missed.
+#include <string>
 #include <vector>
 
 #include "rodsea/analyze/structure_series.hpp"
@@ -27,10 +28,15 @@ class SeriesRecorder {
     // The partly filled interval, for checkpoints: a resumed run then writes the same rows.
     std::vector<double> interval_state() const;
     void restore_interval(const std::vector<double>& state);
+    // What is impossible in a stored interval state (a checkpoint's), or "" when nothing:
+    // counts that are not whole and non-negative, more steps than an output interval has, a
+    // largest overlap beyond kGrossOverlapFraction, sweeps beyond engine.max_sweeps.
+    std::string interval_problem(const std::vector<double>& state) const;
 
   private:
     std::vector<SeriesColumn> columns_;
     size_t species_count_ = 0;
+    double steps_per_output_ = 0.0, sweep_cap_ = 0.0;  // for interval_problem
     StructureSeries structure_;
     double max_overlap_ = 0.0;
     double unresolved_ = 0.0;
