@@ -46,6 +46,24 @@ void poke_hdf5(const std::string& file, const std::string& dataset, std::uint64_
     if (status < 0) throw std::runtime_error("poke_hdf5: cannot write " + dataset);
 }
 
+// The file offset of the chunk holding element (frame, 0, 0) of a chunked dataset, for flipping
+// a byte on disk as a failing sector would.
+inline std::uint64_t hdf5_chunk_offset(const std::string& file, const std::string& dataset,
+                                       std::uint64_t frame) {
+    const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    const hid_t set = H5Dopen2(f, dataset.c_str(), H5P_DEFAULT);
+    const hsize_t at[3] = {frame, 0, 0};
+    haddr_t address = 0;
+    hsize_t size = 0;
+    const herr_t status = H5Dget_chunk_info_by_coord(set, at, nullptr, &address, &size);
+    H5Dclose(set);
+    H5Fclose(f);
+    if (status < 0)
+        throw std::runtime_error("hdf5_chunk_offset: no chunk at frame " + std::to_string(frame) +
+                                 " of " + dataset);
+    return address;
+}
+
 // The number of elements of a dataset.
 inline std::uint64_t hdf5_elements(const std::string& file, const std::string& dataset) {
     const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);

@@ -134,6 +134,27 @@ TEST(FileValues, TrajectoryCorruptionsAreRefusedByEveryReaderNamingDatasetFrameA
             "polar_order_polar");
 }
 
+// A byte flipped on disk in a frame (the value is still a plausible float) fails the chunk's
+// Fletcher-32 checksum instead of being read as data.
+TEST(FileValues, AFlippedByteInAFrameFailsItsChecksum) {
+    const ScratchDir dir("reliability-flip");
+    const fs::path run = make_run(dir.path() / "r");
+    const std::string file = (run / kTrajectoryFile).string();
+    const std::uint64_t at = hdf5_chunk_offset(file, "/particles/bodies/position/value", 2) + 17;
+    {
+        std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+        f.seekg(static_cast<std::streamoff>(at));
+        char byte = 0;
+        f.get(byte);
+        f.seekp(static_cast<std::streamoff>(at));
+        f.put(static_cast<char>(byte ^ 0x04));
+    }
+    const ChildResult r = run_rodsea({"analyze", run.string(), "--quiet"}, dir.path());
+    EXPECT_EQ(r.exit_code, 74) << r.err;
+    EXPECT_TRUE(contains(r.err, "checksum")) << r.err;
+    EXPECT_FALSE(fs::exists(run / "analysis"));
+}
+
 TEST(FileValues, CalibrationTablesAreReadStrictly) {
     const ScratchDir dir("reliability-calibration");
     const std::string header = "species,gap,dt,epsilon,D_r\npolar_rod,1.4,1.25e-06,0,0.001\n";

@@ -16,10 +16,11 @@ const char* const kCalibrationKeysHelp =
   species   "polar_rod" (default), "apolar_rod" or "bead", with the paper's shapes and
             coefficients (MODEL.md §2, §3)
   length    mm, apolar rods only: ℓ_a, [1, 20] (default 2.5)
-  epsilon   1/mm, noise amplitudes, each in [0, 1000] (default [0.0])
+  epsilon   1/mm, noise amplitudes, each in [0, 0.5] (default [0.0])
   gap       mm, plate gaps w, each in (largest sphere diameter, 20] (default [1.40])
   dt        s, time steps, each in [1e-8, 1e-4] (default [1.25e-6])
-  copies    independent bodies per point, [2, 10000] (default 8)
+  copies    independent bodies per point, [2, 10000] (default 8); at most 10^5
+            simulations in all (points × copies)
   duration  s measured per copy, [0.01, 1e5] (default 2.0)
   warmup    s discarded per copy before measuring, [0, 1e5] (default 0.2)
   seed      random seed of starts and noise, [0, 2^63] (default 1)

@@ -192,12 +192,17 @@ int run_campaign_locally(const CampaignPaths& paths, const CampaignGrid& grid,
             const std::string message = log_since(log_path(paths, run), it->second.log_start);
             record_failure(paths, run, code, message);
             const RunStatus s = run_status(paths, run, max_failures);
+            // A run that blew up does the same steps again: retrying it only spends time.
+            const bool retry = s.failures < max_failures && code != kExitBlownUp;
             if (!o.quiet)
                 out << "campaign: " << run.id << " failed (exit " << code
                     << "): " << last_line(message) << "\n  log: " << log_path(paths, run).string()
-                    << (s.failures < max_failures ? "; retrying once" : "") << std::endl;
+                    << (retry                  ? "; retrying once"
+                        : code == kExitBlownUp ? "; it blew up: change the config"
+                                               : "")
+                    << std::endl;
             // Once stopping, a first failure waits for the next command's retry.
-            if (s.failures >= max_failures)
+            if (!retry)
                 failed.push_back(it->second.run);
             else if (stop_signal == 0)
                 queue.push_back(it->second.run);
