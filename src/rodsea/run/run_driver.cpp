@@ -80,6 +80,12 @@ class Session {
         recorder_.start_interval();
         ++frames_written_;
         if (steady_.active()) steady_.add_row(row);
+        remember_good_state();
+    }
+
+    // The state a checkpoint after a blow-up holds: the last frame's, or the resumed
+    // checkpoint's until a frame is written.
+    void remember_good_state() {
         last_good_ = {sim_.step_count(), frames_written_, sim_.bodies(),
                       recorder_.interval_state()};
     }
@@ -681,11 +687,13 @@ int resume_run(const std::filesystem::path& dir, const RunOptions& options, std:
     // An extension interrupted before every file said its new length is finished here.
     if (read_stored_config(dir / kTrajectoryFile) != plan.config_toml)
         trajectory.replace_config(plan.config_toml);
-    if (!extending && read_text_file(dir / kConfigFile) != plan.config_toml)
+    if (!extending && (!std::filesystem::exists(dir / kConfigFile) ||
+                       read_text_file(dir / kConfigFile) != plan.config_toml))
         write_file_atomically(dir / kConfigFile, plan.config_toml);
     Session session(plan, std::move(sim), std::move(trajectory), std::move(csv), dir,
                     c.wall_seconds);
     session.recorder().restore_interval(c.interval_accumulators);
+    session.remember_good_state();
     if (history) session.steady() = std::move(*history);
     if (c.frames_written + 1 == due) {
         try {
