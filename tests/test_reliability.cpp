@@ -4,10 +4,13 @@
 // written or changed.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
+#include <map>
 #include <sstream>
 
 #include "child_process.hpp"
@@ -328,7 +331,7 @@ TEST(BlowUp, GrossOverlapsCountAsUnresolvedAndStopTheStep) {
 
 // --- 4. Whatever run accepts, the other commands accept ------------------------------------
 
-TEST(OffGridEnd, AnalyzeRenderAndExportAcceptADurationOffTheOutputGrid) {
+TEST(OffGridEnd, EveryCommandAcceptsADurationOffTheOutputGrid) {
     const ScratchDir dir("reliability-offgrid");
     for (const auto& [duration, interval] : {std::pair{0.021, 0.002}, std::pair{0.02, 0.003}}) {
         const fs::path run = dir.path() / ("r" + std::to_string(interval));
@@ -341,7 +344,11 @@ TEST(OffGridEnd, AnalyzeRenderAndExportAcceptADurationOffTheOutputGrid) {
              {std::vector<std::string>{"analyze", run.string(), "--quiet"},
               std::vector<std::string>{"render", run.string(), "-o", (run / "last.png").string()},
               std::vector<std::string>{"export", run.string(), "--format", "xyz", "-o",
-                                       (run / "all.xyz").string(), "--quiet"}}) {
+                                       (run / "all.xyz").string(), "--quiet"},
+              std::vector<std::string>{"movie", run.string(), "-o", (run / "m.mp4").string(),
+                                       "--quiet"},
+              std::vector<std::string>{"plot", run.string(), "-o", (run / "plots").string(),
+                                       "--quiet"}}) {
             const ChildResult r = run_rodsea(command, dir.path());
             EXPECT_EQ(r.exit_code, 0) << command[0] << ": " << r.err;
         }
@@ -483,6 +490,53 @@ TEST(Messages, PlotSaysWhenItsPythonFails) {
         run_rodsea({"plot", run.string(), "-o", (dir.path() / "plots").string()}, dir.path());
     EXPECT_NE(r.exit_code, 0);
     EXPECT_TRUE(contains(r.err, "failed (exit code 1)")) << r.err;
+}
+
+TEST(Messages, RefusalsNameTheRightThing) {
+    const ScratchDir dir("reliability-refusals");
+    // An unknown key without a guess: no empty "did you mean".
+    std::ofstream(dir.path() / "u.toml") << "[box]\nzzzzqqq = 3\n";
+    const ChildResult unknown = run_rodsea({"info", (dir.path() / "u.toml").string()}, dir.path());
+    EXPECT_EQ(unknown.exit_code, kExitBadInput);
+    EXPECT_FALSE(contains(unknown.err, "; ;")) << unknown.err;
+    EXPECT_FALSE(contains(unknown.err, "( ;")) << unknown.err;
+    // A huge mean-field parameter is named, not reported as an unstable --dt.
+    const ChildResult huge = run_rodsea({"meanfield", "--a", "1e300"}, dir.path());
+    EXPECT_EQ(huge.exit_code, kExitBadInput);
+    EXPECT_TRUE(contains(huge.err, "--a")) << huge.err;
+    EXPECT_FALSE(contains(huge.err, "--dt")) << huge.err;
+    // 3000 species of one bead each in a 200 mm box: sparse, so feasible.
+    std::ostringstream many;
+    many << "[box]\nside = 200.0\n";
+    for (int i = 0; i < 3000; ++i)
+        many << "[[species]]\nname = \"b" << i << "\"\nkind = \"bead\"\ncount = 1\n";
+    many << "[time]\nduration = 0.001\n[output]\ninterval = 0.001\n";
+    std::ofstream(dir.path() / "many.toml") << many.str();
+    const ChildResult info = run_rodsea({"info", (dir.path() / "many.toml").string()}, dir.path());
+    EXPECT_EQ(info.exit_code, 0) << info.err;
+    EXPECT_TRUE(contains(info.out, "packing  feasible")) << info.out.substr(0, 2000);
+}
+
+// The first Ctrl-C stops calibrate within a drive period of every running copy, not after it.
+TEST(Messages, CalibrateStopsWithinSecondsOfCtrlC) {
+    const ScratchDir dir("reliability-calibrate-stop");
+    std::ofstream(dir.path() / "grid.toml")
+        << "[calibrate]\nspecies = \"polar_rod\"\nepsilon = [0.0]\ncopies = 2\n"
+           "duration = 1000.0\nwarmup = 0.0\n";  // an hour per copy
+    ChildOptions options;
+    const auto start = std::chrono::steady_clock::now();
+    options.interrupt_when = [&] {
+        return std::chrono::steady_clock::now() - start > std::chrono::milliseconds(500);
+    };
+    options.timeout_seconds = 30.0;
+    const ChildResult r = run_rodsea({"calibrate", (dir.path() / "grid.toml").string(), "--out",
+                                      (dir.path() / "out").string(), "--quiet"},
+                                     dir.path(), options);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_TRUE(r.interrupted);
+    EXPECT_EQ(r.exit_code, 130) << r.err;
+    EXPECT_LT(seconds, 10.0);  // a drive period is 5 ms of simulated time, ~0.1 s of wall time
 }
 
 // --- 8. Threads beyond free cores ----------------------------------------------------------
