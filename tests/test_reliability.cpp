@@ -24,6 +24,7 @@
 #include "rodsea/io/checkpoint.hpp"
 #include "rodsea/io/stored_run.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
+#include "rodsea/run/progress_file.hpp"
 #include "rodsea/run/run_driver.hpp"
 #include "scratch_dir.hpp"
 
@@ -182,6 +183,24 @@ TEST(FileValues, CalibrationTablesAreReadStrictly) {
     const ChildResult r = run_rodsea({"info", (dir.path() / "run.toml").string()}, dir.path());
     EXPECT_EQ(r.exit_code, 74) << r.err;
     EXPECT_TRUE(contains(r.err, "is a directory")) << r.err;
+}
+
+// campaign status reads each run's progress.txt: a damaged one says nothing, not NaN percent.
+TEST(FileValues, ADamagedProgressFileIsIgnored) {
+    const ScratchDir dir("reliability-progress");
+    const fs::path run = make_run(dir.path() / "r");
+    const std::string good = read_text(run / "progress.txt");
+    ASSERT_TRUE(read_progress_file(run));
+    for (const auto& [from, to] : {std::pair<std::string, std::string>{"time = ", "time = nan"},
+                                   {"wall_seconds = ", "wall_seconds = -5"},
+                                   {"step = ", "step = 99999999999"}}) {
+        std::string bad = good;
+        const std::size_t at = bad.find(from);
+        ASSERT_NE(at, std::string::npos);
+        bad.replace(at, bad.find('\n', at) - at, to);
+        std::ofstream(run / "progress.txt") << bad;
+        EXPECT_FALSE(read_progress_file(run)) << to;
+    }
 }
 
 // --- 2. Resume checks what it resumes ------------------------------------------------------

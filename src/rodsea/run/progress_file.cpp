@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -59,7 +60,10 @@ std::optional<RunProgress> read_progress_file(const std::filesystem::path& run_d
             return std::nullopt;  // a damaged file says nothing
         }
     }
-    if (found < 8 || p.total_steps == 0) return std::nullopt;
+    if (found < 8 || p.total_steps == 0 || p.step > p.total_steps) return std::nullopt;
+    // Values read from a file are input: a NaN or a negative time is a damaged file too.
+    for (const double v : {p.time, p.duration, p.steps_per_second, p.wall_seconds, p.updated})
+        if (!std::isfinite(v) || v < 0.0) return std::nullopt;
     return p;
 }
 

@@ -12,7 +12,8 @@ namespace rodsea {
 inline const char* const kProgressFile = "progress.txt";
 
 struct RunProgress {
-    std::string state = "running";  // running, done, steady (stopped when steady), stopped, failed
+    std::string state = "running";  // running, done, steady (stopped when steady), stopped,
+                                    // blown_up, failed
     std::uint64_t step = 0, total_steps = 0;
     double time = 0.0, duration = 0.0;  // simulated, s
     double steps_per_second = 0.0;      // this session
