@@ -21,6 +21,8 @@ packages=(
     python3 python3-numpy python3-matplotlib  # `rodsea plot` (scripts/rodsea_plots/)
     python3-h5py python3-scipy          # reading trajectories from Python; cross-checks
     python3-mdanalysis python3-sklearn  # MDAnalysis reads trajectory and export (tested)
+    pybind11-dev python3-dev python3-pytest  # `import rodsea` (python/) and its pytest suite
+    python3-gsd                         # `rodsea export --format gsd` (scripts/rodsea_gsd.py)
     slurmctld slurmd slurm-client munge # `rodsea campaign submit`'s test: a one-node cluster
 )
 

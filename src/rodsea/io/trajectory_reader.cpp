@@ -150,6 +150,26 @@ std::vector<double> TrajectoryReader::series(const std::string& column) const {
     return values;
 }
 
+std::vector<std::string> TrajectoryReader::series_names() const {
+    const h5::File& f = impl_->file;
+    std::vector<std::string> names;
+    if (!h5::exists(f.id(), "observables")) return names;
+    h5::Handle g = h5::open_group(f, f.id(), "observables");
+    H5G_info_t info{};
+    if (H5Gget_info(g.get(), &info) < 0) h5::fail(f.path(), "cannot list /observables");
+    for (hsize_t i = 0; i < info.nlinks; ++i) {
+        const ssize_t length = H5Lget_name_by_idx(g.get(), ".", H5_INDEX_NAME, H5_ITER_INC, i,
+                                                  nullptr, 0, H5P_DEFAULT);
+        if (length <= 0) continue;
+        std::string name(static_cast<std::size_t>(length) + 1, '\0');
+        H5Lget_name_by_idx(g.get(), ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size(),
+                           H5P_DEFAULT);
+        name.resize(static_cast<std::size_t>(length));
+        names.push_back(name);
+    }
+    return names;
+}
+
 bool TrajectoryReader::has_series(const std::string& column) const {
     return h5::exists(impl_->file.id(), "observables/" + column);
 }

@@ -29,6 +29,8 @@ class TrajectoryReader {
     BodyState frame(std::uint64_t index) const;
     std::vector<double> series(const std::string& column) const;
     bool has_series(const std::string& column) const;
+    // The time-series columns the file holds, in the file's (alphabetical) order.
+    std::vector<std::string> series_names() const;
 
   private:
     struct Impl;

@@ -12,9 +12,11 @@
 #include <limits>
 #include <optional>
 #include <ostream>
+#include <sstream>
 #include <string_view>
 
 #include "rodsea/cli/arguments.hpp"
+#include "rodsea/cli/child_process.hpp"
 #include "rodsea/cli/count_progress.hpp"
 #include "rodsea/cli/stop_signal.hpp"
 #include "rodsea/config/did_you_mean.hpp"
@@ -24,13 +26,15 @@
 #include "rodsea/io/stored_run.hpp"
 #include "rodsea/view/detail/export_formats.hpp"
 #include "rodsea/view/detail/frame_flags.hpp"
+#include "rodsea/view/python_script.hpp"
 
 namespace rodsea {
 
 const CommandSpec& export_command_spec() {
     static const CommandSpec spec{
         "export",
-        "RUN_DIR --format lammps-dump|xyz -o FILE [--frame N | --time T] [--every K] [--from T] "
+        "RUN_DIR --format lammps-dump|xyz|gsd -o FILE [--frame N | --time T] [--every K] [--from "
+        "T] "
         "[--to T] [--velocities] [--quiet]",
         "one particle per sphere, for VMD and OVITO",
         "Writes the run's frames as one particle per sphere, for VMD, OVITO and MDAnalysis "
@@ -44,7 +48,9 @@ const CommandSpec& export_command_spec() {
         {{"--format", "F",
           "lammps-dump: a LAMMPS custom dump (.lammpstrj; VMD, OVITO, MDAnalysis); xyz: extended "
           "XYZ (OVITO; MDAnalysis and other plain XYZ readers take the first four columns: "
-          "species name, x, y, z)"},
+          "species name, x, y, z); gsd: HOOMD's GSD, one particle per body with its quaternion "
+          "and each species a SphereUnion shape (OVITO draws the rods; gsd.hoomd reads it), "
+          "written with Debian's python3-gsd"},
          {"-o,--output", "FILE", "the file to write (replaced if it exists)"},
          {"--frame", "N", "one frame: 0-based, negative counts from the end (-1: the last)"},
          {"--time", "T", "one frame: the one nearest T, s"},
@@ -126,8 +132,14 @@ void check_output(const fs::path& path, const StoredRun& run, double bytes) {
 }
 
 // The extension VMD's reader for the format is registered under (plugins lammpstrj and xyz).
+const char* extension_of(ExportFormat format) {
+    return format == ExportFormat::lammps_dump ? "lammpstrj"
+           : format == ExportFormat::xyz       ? "xyz"
+                                               : "gsd";
+}
+
 bool extension_fits(const fs::path& path, ExportFormat format) {
-    return path.extension() == (format == ExportFormat::lammps_dump ? ".lammpstrj" : ".xyz");
+    return path.extension() == std::string(".") + extension_of(format);
 }
 
 // What an export will write, checked and sized before anything is.
@@ -165,10 +177,49 @@ void print_plan(const ExportJob& job, const StoredRun& run, std::ostream& out) {
         << "] mm; times in s (step x dt, dt = " << format_number(scene.dt)
         << " s)\n  estimated size: " << megabytes(job.total_bytes) << "\n";
     if (!extension_fits(job.path, job.options.format))
-        out << "  note: VMD picks its reader by extension; name the file ."
-            << (job.options.format == ExportFormat::lammps_dump ? "lammpstrj" : "xyz")
+        out << "  note: VMD and OVITO pick their reader by extension; name the file ."
+            << extension_of(job.options.format)
             << " or load it with an explicit type (docs/export.md)\n";
     out.flush();
+}
+
+// GSD through scripts/rodsea_gsd.py (gsd.hoomd, Debian's python3-gsd): every frame is read and
+// checked here first (StoredRun::frame), then the script writes the temporary file.
+void write_gsd(ExportJob& job, const StoredRun& run, std::ostream& out, std::ostream& err,
+               bool quiet) {
+    const PythonScriptLookup lookup =
+        locate_python_script("rodsea_gsd.py", "python3, python3-gsd, python3-h5py");
+    if (!lookup.found) throw FileError("rodsea_gsd.py", lookup.problem);
+    CountProgress progress(out, choose_progress_style(quiet, ::isatty(STDOUT_FILENO) == 1),
+                           job.frames.size(), "frames checked");
+    for (std::size_t i = 1; i < job.frames.size(); ++i) {
+        if (const int s = stop_signal_received()) throw StopRequested{s};
+        run.frame(job.frames[i]);
+        progress.update(i + 1);
+    }
+    progress.finish();
+    const double height = job.scene.z_hi - job.scene.z_lo;
+    replace_file_atomically(job.path, [&](const fs::path& tmp) {
+        const fs::path list = tmp.string() + ".frames";
+        {
+            std::ofstream frames(list);
+            for (std::size_t k : job.frames)
+                frames << k << "\n";
+            if (!frames) throw FileError(list.string(), "cannot write the frame list");
+        }
+        std::ostringstream script_out;
+        const int code =
+            run_program({lookup.found->python, "-B", lookup.found->script, run.trajectory.string(),
+                         tmp.string(), list.string(), format_number(height)},
+                        script_out, err, 1);
+        std::error_code ec;
+        fs::remove(list, ec);
+        if (const int s = stop_signal_received()) throw StopRequested{s};
+        if (code != 0)
+            throw FileError(job.path.string(), "the GSD writer (" + lookup.found->script +
+                                                   ") failed with exit code " +
+                                                   std::to_string(code) + "; nothing written");
+    });
 }
 
 // Writes every frame of the job into `path` atomically: the file appears complete or not at all,
@@ -237,7 +288,10 @@ int export_command(const std::vector<std::string>& args, std::ostream& out, std:
     const auto start = clock::now();
     const StopSignalGuard signals;  // Ctrl-C stops between frames; a full disk fails a write
     try {
-        write_frames(job, run, out, quiet);
+        if (job.options.format == ExportFormat::gsd)
+            write_gsd(job, run, out, err, quiet);
+        else
+            write_frames(job, run, out, quiet);
     } catch (const StopRequested& stop) {
         err << "rodsea: export stopped by signal " << stop.signal << "; nothing written ("
             << job.path.string() << " is unchanged)\n";

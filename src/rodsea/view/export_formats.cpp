@@ -157,17 +157,26 @@ void sphere_line(TextBlock& t, const ExportOptions& options, long long id, long 
 }  // namespace
 
 const std::vector<std::string>& export_format_names() {
-    static const std::vector<std::string> names{"lammps-dump", "xyz"};
+    static const std::vector<std::string> names{"lammps-dump", "xyz", "gsd"};
     return names;
 }
 
 const char* to_string(ExportFormat format) {
-    return format == ExportFormat::lammps_dump ? "lammps-dump" : "xyz";
+    switch (format) {
+        case ExportFormat::lammps_dump:
+            return "lammps-dump";
+        case ExportFormat::xyz:
+            return "xyz";
+        case ExportFormat::gsd:
+            return "gsd";
+    }
+    return "";
 }
 
 std::optional<ExportFormat> parse_export_format(std::string_view name) {
     if (name == "lammps-dump") return ExportFormat::lammps_dump;
     if (name == "xyz") return ExportFormat::xyz;
+    if (name == "gsd") return ExportFormat::gsd;
     return std::nullopt;
 }
 
@@ -233,6 +242,9 @@ void write_export_frame(std::ostream& out, const ExportScene& scene, const Expor
 
 double estimated_frame_bytes(const ExportScene& scene, const ExportOptions& options,
                              std::size_t spheres, std::size_t bodies) {
+    // GSD: float32 position, orientation, velocity and a type id per body, and the index.
+    if (options.format == ExportFormat::gsd)
+        return static_cast<double>(bodies) * (3 + 4 + 3 + 1) * 4.0 + 4096.0;
     // One line of typical width: a sphere mid-box with a generic orientation and a velocity
     // of tens of mm/s, ids of the frame's median size.
     TextBlock t(nullptr);

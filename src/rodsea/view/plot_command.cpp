@@ -11,6 +11,7 @@
 #include "rodsea/cli/child_process.hpp"
 #include "rodsea/cli/exit_codes.hpp"
 #include "rodsea/error.hpp"
+#include "rodsea/view/python_script.hpp"
 
 namespace rodsea {
 
@@ -51,13 +52,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kInstall = "install it with ./scripts/install-deps.sh";
-
-std::string environment_or(const char* name, const char* fallback) {
-    const char* value = std::getenv(name);
-    return value != nullptr && *value != '\0' ? std::string(value) : std::string(fallback);
-}
-
 }  // namespace
 
 int plot_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -77,26 +71,17 @@ int plot_command(const std::vector<std::string>& args, std::ostream& out, std::o
     std::error_code ec;
     if (!fs::exists(input, ec)) throw FileError(input, "no such file or directory");
 
-    const std::string python = environment_or("RODSEA_PYTHON", "/usr/bin/python3");
-    const fs::path script =
-        fs::path(environment_or("RODSEA_SCRIPTS_DIR", RODSEA_SCRIPTS_DIR)) / "rodsea_plot.py";
-    if (::access(python.c_str(), X_OK) != 0) {
-        err << "rodsea plot: the Python interpreter " << python << " is missing or not executable; "
-            << kInstall
-            << " (Debian's python3, python3-matplotlib, python3-numpy, python3-h5py), or set "
-               "RODSEA_PYTHON to a Python 3 that has them\n";
+    const PythonScriptLookup lookup = locate_python_script(
+        "rodsea_plot.py", "python3, python3-matplotlib, python3-numpy, python3-h5py");
+    if (!lookup.found) {
+        err << "rodsea plot: " << lookup.problem << "\n";
         return kExitFailure;
     }
-    if (!fs::is_regular_file(script, ec)) {
-        err << "rodsea plot: the plot script " << script.string()
-            << " is missing; set RODSEA_SCRIPTS_DIR to the scripts/ folder of the rodsea "
-               "source tree\n";
-        return kExitFailure;
-    }
+    const std::string& python = lookup.found->python;
+    const std::string& script = lookup.found->script;
     std::string output_flag = "--output=";
     output_flag += *output;
-    std::vector<std::string> argv{python,      "-B",    script.string(),
-                                  output_flag, "--dpi", std::to_string(dpi)};
+    std::vector<std::string> argv{python, "-B", script, output_flag, "--dpi", std::to_string(dpi)};
     if (const auto only = a.value("--only")) {
         std::string only_flag = "--only=";
         only_flag += *only;
@@ -105,7 +90,7 @@ int plot_command(const std::vector<std::string>& args, std::ostream& out, std::o
     if (a.has("--quiet")) argv.emplace_back("--quiet");
     argv.emplace_back("--");  // INPUT is never taken for an option, whatever its name
     argv.push_back(input);
-    const std::string command = python + " " + script.string();
+    const std::string command = python + " " + script;
     const int code = run_program(std::move(argv), out, err, kExitFailure);
     // The script's own messages, if any, came first; the failure is always said.
     if (code != kExitOk && code != kExitBadInput)

@@ -16,7 +16,8 @@
 
 namespace rodsea {
 
-enum class ExportFormat { lammps_dump, xyz };
+// gsd: one particle per body, written by scripts/rodsea_gsd.py (gsd.hoomd); the others here.
+enum class ExportFormat { lammps_dump, xyz, gsd };
 
 // The names the command line accepts, in the order help texts list them.
 const std::vector<std::string>& export_format_names();

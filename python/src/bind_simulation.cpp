@@ -1,0 +1,234 @@
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <memory>
+#include <optional>
+
+#include "bindings.hpp"
+#include "config.hpp"
+#include "rodsea/builder/initial_state.hpp"
+#include "rodsea/config/config_file.hpp"
+#include "rodsea/engine/simulation.hpp"
+#include "rodsea/error.hpp"
+#include "rodsea/io/checkpoint.hpp"
+
+namespace py = pybind11;
+
+namespace rodsea::python {
+
+namespace {
+
+static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(Quat) == 4 * sizeof(double),
+              "the zero-copy views read Vec3 and Quat as packed doubles");
+
+// HOOMD's local snapshots: the engine's own arrays, read-only, valid while the Simulation lives
+// (they follow its steps: no copy is made).
+class PySimulation {
+  public:
+    PySimulation(const Config& config, std::optional<int> threads)
+        : plan_(config.plan), sim_(make(plan_, threads)) {}
+    PySimulation(RunPlan plan, BodyState bodies, std::uint64_t step, int threads)
+        : plan_(std::move(plan)),
+          sim_(std::make_unique<Simulation>(
+              Simulation::resume(plan_.engine, std::move(bodies), step, {.threads = threads}))) {}
+
+    // Steps without the GIL: other Python threads run meanwhile. Exactly one of steps and
+    // seconds (rounded to whole steps of dt).
+    std::uint64_t run(std::optional<long long> steps, std::optional<double> seconds) {
+        if (steps.has_value() == seconds.has_value())
+            throw InvalidParameter("run", "steps and seconds", "exactly one of them");
+        long long n = 0;
+        if (steps) {
+            if (*steps < 0) throw InvalidParameter("steps", std::to_string(*steps), ">= 0");
+            n = *steps;
+        } else {
+            if (!std::isfinite(*seconds) || *seconds < 0.0)
+                throw InvalidParameter("seconds", format_number(*seconds) + " s", ">= 0 s");
+            n = std::llround(*seconds / plan_.engine.dt);
+        }
+        {
+            py::gil_scoped_release free_the_interpreter;
+            for (long long i = 0; i < n; ++i)
+                sim_->step();
+        }
+        return static_cast<std::uint64_t>(n);
+    }
+
+    const Simulation& sim() const { return *sim_; }
+    const RunPlan& plan() const { return plan_; }
+
+    // Replaces the state (arrays as numpy gives them), checked as a resumed state is.
+    void set_state(const BodyState& bodies) {
+        sim_ = std::make_unique<Simulation>(Simulation::resume(
+            plan_.engine, bodies, sim_->step_count(), {.threads = sim_->options().threads}));
+    }
+
+  private:
+    static std::unique_ptr<Simulation> make(const RunPlan& plan, std::optional<int> threads) {
+        const PackingCheck packing = check_packing(plan.engine, plan.counts);
+        if (!packing.ok)
+            throw InvalidParameter("species", "these counts", "a packing that fits",
+                                   packing.message);
+        BodyState bodies =
+            build_initial_state(plan.engine, plan.counts, plan.builder, plan.engine.seed);
+        return std::make_unique<Simulation>(
+            plan.engine, std::move(bodies),
+            BackendOptions{.threads = threads.value_or(plan.control.threads)});
+    }
+    RunPlan plan_;
+    std::unique_ptr<Simulation> sim_;
+};
+
+template <class T>
+py::array view(const PySimulation& self, py::handle owner, const std::vector<T>& data,
+               std::size_t width) {
+    const std::size_t n = data.size();
+    py::array a(py::dtype::of<double>(), {n, width},
+                {static_cast<py::ssize_t>(sizeof(T)), static_cast<py::ssize_t>(sizeof(double))},
+                reinterpret_cast<const double*>(data.data()), owner);
+    a.attr("setflags")(py::arg("write") = false);
+    (void)self;
+    return a;
+}
+
+std::vector<Vec3> vectors(const py::array_t<double, py::array::c_style | py::array::forcecast>& a,
+                          std::size_t n, const char* name) {
+    if (a.ndim() != 2 || a.shape(0) != static_cast<py::ssize_t>(n) || a.shape(1) != 3)
+        throw InvalidParameter(
+            name, "an array of shape (" + std::to_string(a.ndim() > 0 ? a.shape(0) : 0) + ", …)",
+            "shape (" + std::to_string(n) + ", 3)");
+    std::vector<Vec3> v(n);
+    for (std::size_t i = 0; i < n; ++i)
+        v[i] = {a.at(i, 0), a.at(i, 1), a.at(i, 2)};
+    return v;
+}
+
+}  // namespace
+
+void bind_simulation(py::module_& m) {
+    using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+    py::class_<PySimulation>(m, "Simulation",
+                             "The engine on a config's initial state (as `rodsea run` builds it). "
+                             "Arrays are read-only views of the engine's state, in mm, mm/s, "
+                             "rad/s; they follow the simulation as it steps.")
+        .def(py::init<const Config&, std::optional<int>>(), py::arg("config"),
+             py::arg("threads") = py::none())
+        .def("run", &PySimulation::run, py::arg("steps") = py::none(),
+             py::arg("seconds") = py::none(),
+             "Steps `steps` times, or `seconds` of simulated time; releases the GIL. Returns the "
+             "steps taken. Raises BlowUpError when a step blows up.")
+        .def_property_readonly("step", [](const PySimulation& s) { return s.sim().step_count(); })
+        .def_property_readonly(
+            "time", [](const PySimulation& s) { return s.sim().time(); }, "s")
+        .def_property_readonly(
+            "backend", [](const PySimulation& s) { return std::string(s.sim().backend_name()); })
+        .def_property_readonly("threads",
+                               [](const PySimulation& s) { return s.sim().options().threads; })
+        .def_property_readonly(
+            "positions",
+            [](py::object self) {
+                const auto& s = self.cast<const PySimulation&>();
+                return view(s, self, s.sim().bodies().position, 3);
+            },
+            "(N, 3) centres of mass, mm; x, y in [0, L)")
+        .def_property_readonly(
+            "quaternions",
+            [](py::object self) {
+                const auto& s = self.cast<const PySimulation&>();
+                return view(s, self, s.sim().bodies().orientation, 4);
+            },
+            "(N, 4) unit quaternions (w, x, y, z), body frame → lab")
+        .def_property_readonly(
+            "velocities",
+            [](py::object self) {
+                const auto& s = self.cast<const PySimulation&>();
+                return view(s, self, s.sim().bodies().velocity, 3);
+            },
+            "(N, 3) mm/s")
+        .def_property_readonly(
+            "spins",
+            [](py::object self) {
+                const auto& s = self.cast<const PySimulation&>();
+                return view(s, self, s.sim().bodies().spin, 3);
+            },
+            "(N, 3) angular velocities, lab frame, rad/s")
+        .def_property_readonly(
+            "species",
+            [](py::object self) {
+                const auto& s = self.cast<const PySimulation&>();
+                const auto& sp = s.sim().bodies().species;
+                py::array a(py::dtype::of<std::uint32_t>(), {sp.size()}, {sizeof(std::uint32_t)},
+                            sp.data(), self);
+                a.attr("setflags")(py::arg("write") = false);
+                return a;
+            },
+            "(N,) species index of each body")
+        .def(
+            "set_state",
+            [](PySimulation& s, std::optional<Array> positions, std::optional<Array> quaternions,
+               std::optional<Array> velocities, std::optional<Array> spins) {
+                BodyState b = s.sim().bodies();
+                const std::size_t n = b.size();
+                if (positions) b.position = vectors(*positions, n, "positions");
+                if (velocities) b.velocity = vectors(*velocities, n, "velocities");
+                if (spins) b.spin = vectors(*spins, n, "spins");
+                if (quaternions) {
+                    const Array& q = *quaternions;
+                    if (q.ndim() != 2 || q.shape(0) != static_cast<py::ssize_t>(n) ||
+                        q.shape(1) != 4)
+                        throw InvalidParameter("quaternions", "another shape",
+                                               "shape (" + std::to_string(n) + ", 4)");
+                    for (std::size_t i = 0; i < n; ++i)
+                        b.orientation[i] = {q.at(i, 0), q.at(i, 1), q.at(i, 2), q.at(i, 3)};
+                }
+                s.set_state(b);
+            },
+            py::arg("positions") = py::none(), py::arg("quaternions") = py::none(),
+            py::arg("velocities") = py::none(), py::arg("spins") = py::none(),
+            "Replaces parts of the state; checked as a resumed state is (rodsea.InvalidParameter "
+            "names the body and the value).")
+        .def(
+            "timings",
+            [](const PySimulation& s) {
+                const StageProfile& p = s.sim().profile();
+                py::dict d;
+                d["free_flight"] = p.free_flight;
+                d["sphere_update"] = p.sphere_update;
+                d["contact_search"] = p.contact_search;
+                d["resolution"] = p.resolution;
+                d["noise"] = p.noise;
+                d["total"] = p.total();
+                return d;
+            },
+            "wall seconds spent in each stage of the step since construction")
+        .def(
+            "state_hash", [](const PySimulation& s) { return s.sim().state_hash(); },
+            "FNV-1a over every bit of the state: `rodsea run` prints the same")
+        .def(
+            "kinetic_energy", [](const PySimulation& s) { return s.sim().kinetic_energy(); },
+            "mass unit mm² s⁻²")
+        .def(
+            "save_checkpoint",
+            [](const PySimulation& s, const std::string& path) {
+                Checkpoint c;
+                c.config_toml = s.plan().config_toml;
+                c.step = s.sim().step_count();
+                c.bodies = s.sim().bodies();
+                write_checkpoint(path, c);
+            },
+            py::arg("path"), "the state, atomically, as an HDF5 checkpoint")
+        .def_static(
+            "from_checkpoint",
+            [](const std::string& path, std::optional<int> threads) {
+                Checkpoint c = read_checkpoint(path);
+                RunPlan plan = load_config_string(c.config_toml, path + " [config]");
+                const int t = threads.value_or(plan.control.threads);
+                return PySimulation(std::move(plan), std::move(c.bodies), c.step, t);
+            },
+            py::arg("path"), py::arg("threads") = py::none(),
+            "Continues from a checkpoint: one saved by save_checkpoint, or a run directory's "
+            "checkpoint.h5; bit for bit the run that wrote it.");
+}
+
+}  // namespace rodsea::python

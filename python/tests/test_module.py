@@ -1,0 +1,231 @@
+"""`import rodsea` against the command line: the same numbers on the same run, zero-copy views,
+the same error messages, the GIL released while stepping, GSD files gsd.hoomd reads back."""
+import json
+import re
+import threading
+
+import h5py
+import numpy as np
+import pytest
+
+import rodsea
+from conftest import rodsea as cli
+
+
+def test_the_state_hash_after_a_run_is_the_clis(small_config, small_run):
+    _, report = small_run
+    cli_hash = re.search(r"state hash ([0-9a-f]+)", report).group(1)
+    config = rodsea.load_config(small_config)
+    sim = rodsea.Simulation(config)
+    assert sim.run(steps=config.total_steps) == config.total_steps
+    assert format(sim.state_hash(), "x") == cli_hash
+
+
+def test_a_checkpoint_continues_bit_for_bit(small_config, tmp_path):
+    config = rodsea.load_config(small_config)
+    straight = rodsea.Simulation(config)
+    straight.run(steps=600)
+    stopped = rodsea.Simulation(config)
+    stopped.run(steps=300)
+    stopped.save_checkpoint(str(tmp_path / "c.h5"))
+    resumed = rodsea.Simulation.from_checkpoint(str(tmp_path / "c.h5"))
+    resumed.run(steps=300)
+    assert resumed.state_hash() == straight.state_hash()
+    assert resumed.step == 600
+
+
+def test_the_runs_own_checkpoint_is_the_clis_final_state(small_run):
+    run_dir, report = small_run
+    sim = rodsea.Simulation.from_checkpoint(str(run_dir / "checkpoint.h5"))
+    assert format(sim.state_hash(), "x") == re.search(r"state hash ([0-9a-f]+)", report).group(1)
+
+
+def test_state_arrays_are_read_only_views_that_follow_the_steps(small_config):
+    sim = rodsea.Simulation(rodsea.load_config(small_config))
+    n = sum(s["count"] for s in rodsea.load_config(small_config).species)
+    for name, width in (("positions", 3), ("quaternions", 4), ("velocities", 3), ("spins", 3)):
+        a = getattr(sim, name)
+        assert a.shape == (n, width) and a.dtype == np.float64
+        assert not a.flags.writeable and not a.flags.owndata  # a view, not a copy
+    assert sim.species.dtype == np.uint32 and sim.species.shape == (n,)
+    view = sim.positions
+    before = view.copy()
+    sim.run(steps=200)
+    assert not np.array_equal(view, before)          # the same memory, stepped on
+    assert np.array_equal(view, sim.positions)
+    with pytest.raises(ValueError):
+        view[0, 0] = 1.0
+    assert set(sim.timings()) >= {"free_flight", "contact_search", "resolution", "total"}
+    assert sim.backend == "cpu"
+
+
+def test_set_state_is_checked_like_a_resumed_state(small_config):
+    sim = rodsea.Simulation(rodsea.load_config(small_config))
+    positions = np.array(sim.positions)
+    positions[2, 0] = np.nan
+    with pytest.raises(rodsea.InvalidParameter, match=r"bodies\[2\]\.position"):
+        sim.set_state(positions=positions)
+    moved = np.array(sim.positions)
+    moved[0, 0] = (moved[0, 0] + 0.001) % 20.0
+    sim.set_state(positions=moved)
+    assert sim.positions[0, 0] == moved[0, 0]
+
+
+def test_errors_carry_the_command_lines_messages(tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text("[box]\nside = -3.0\n")
+    r = cli("info", bad, check=False)
+    assert r.returncode == 2
+    with pytest.raises(rodsea.InvalidParameter) as e:
+        rodsea.load_config(bad)
+    assert str(e.value) in r.stderr
+    assert isinstance(e.value, ValueError)
+    with pytest.raises(rodsea.InvalidParameter, match="box.side"):
+        rodsea.load_config({"box": {"side": -3.0}})
+    with pytest.raises(rodsea.FileError, match="no such file"):
+        rodsea.load_config(tmp_path / "missing.toml")
+    with pytest.raises(rodsea.FileError):
+        rodsea.open_run(tmp_path)
+
+
+def test_stepping_releases_the_gil(small_config):
+    sim = rodsea.Simulation(rodsea.load_config(small_config))
+    counted, stop = [0], threading.Event()
+
+    def count():
+        while not stop.is_set():
+            counted[0] += 1
+
+    other = threading.Thread(target=count)
+    other.start()
+    sim.run(steps=4000)
+    during = counted[0]
+    stop.set()
+    other.join()
+    # With the GIL held the other thread would get at most a switch interval's worth.
+    assert during > 10000
+
+
+def test_open_run_gives_frames_series_and_analysis(small_run):
+    run_dir, _ = small_run
+    run = rodsea.open_run(run_dir)
+    assert run.frames == 6 and len(run.times) == 6
+    n = len(run.species)
+    assert run.positions[-1].shape == (n, 3)
+    assert run.positions[1:4].shape == (3, n, 3)
+    assert np.array_equal(run.positions[-1], run.frame(5)["positions"])
+    with h5py.File(run_dir / "trajectory.h5") as f:
+        stored = f["particles/bodies/position/value"][3]
+    assert np.array_equal(run.positions[3], stored.astype(np.float64))
+    p = run.series("polar_order_polar")
+    assert p.shape == (6,) and "nematic_order_medium" in run.series_names
+    analysis = run.analysis()
+    assert "P_polar" in analysis["scalars"] and "g_r_theta" in analysis["maps"]
+
+
+def test_order_parameters_equal_the_recorded_series(small_run):
+    run = rodsea.open_run(small_run[0])
+    recorded = run.series("polar_order_polar")
+    for k in range(run.frames):
+        frame = run.frame(k)
+        polar = frame["species"] == 0
+        p = rodsea.OrderParameters().compute(frame["angles"][polar]).P
+        # The series is computed from the doubles in the run; frames are stored in float32.
+        assert p == pytest.approx(recorded[k], abs=1e-6)
+
+
+def test_corotating_maps_equal_rodsea_analyze(small_run):
+    run_dir, _ = small_run
+    run = rodsea.open_run(run_dir)
+    summary = json.load(open(run_dir / "analysis" / "analysis.json"))
+    p = {k: v["value"] for k, v in summary["observables"]["corotating"]["parameters"].items()}
+    maps = rodsea.CorotatingMaps(r_max=p["r_max"], r_bins=int(p["r_bins"]),
+                                 theta_bins=int(p["theta_bins"]))
+    pair = rodsea.PairCorrelation(r_max=5.0, bin=0.5)
+    for k in range(run.frames):
+        frame = run.frame(k)
+        polar = frame["species"] == 0
+        maps.compute(run.box, frame["positions"][polar], frame["angles"][polar])
+        pair.compute(run.box, frame["positions"][polar], frame["angles"][polar])
+    assert maps.frames == run.frames
+    with h5py.File(run_dir / "analysis" / "analysis.h5") as f:
+        g = f["maps/g_r_theta/value"][()]
+        r_edges = f["maps/g_r_theta/r_edges"][()]
+    np.testing.assert_allclose(maps.r_edges, r_edges)
+    np.testing.assert_allclose(maps.g, g, rtol=1e-12, equal_nan=True)
+    assert pair.g.shape == pair.bin_centers.shape
+
+
+def test_flocks_time_correlation_segregation_and_medium_velocity_compute(small_run):
+    run = rodsea.open_run(small_run[0])
+    frame = run.frame(-1)
+    polar = frame["species"] == 0
+    flocks = rodsea.Flocks(eps=2.25, min_samples=2).compute(run.box, frame["positions"][polar])
+    assert flocks.labels.shape == (polar.sum(),)
+    assert flocks.largest == (flocks.sizes.max() if flocks.sizes.size else 0)
+    # Two points 1 mm apart across the periodic edge form one flock.
+    edge = rodsea.Flocks(eps=1.5, min_samples=2).compute((10.0, 10.0), [[0.2, 5.0], [9.7, 5.0]])
+    assert list(edge.labels) == [0, 0]
+    angles = np.array([run.frame(k)["angles"][polar] for k in range(run.frames)])
+    c = rodsea.TimeCorrelation(m=1, max_lag=3).compute(np.unwrap(angles, axis=0), 0.002)
+    assert c.C[0] == pytest.approx(1.0) and len(c.C) == 4
+    sigma = rodsea.segregation(run.box, frame["positions"], polar, cell=5.0)
+    assert 0.0 <= sigma <= 1.0
+    medium = ~polar
+    mv = rodsea.MediumVelocity(d=3.0, r_max=5.0, bin=1.0).compute(
+        run.box, frame["positions"][medium], frame["velocities"][medium],
+        frame["positions"][polar], frame["angles"][polar], frame["velocities"][polar])
+    assert mv.pairs.sum() > 0
+
+
+def test_gsd_export_reads_back_with_its_shapes_orientations_and_log(small_run, tmp_path):
+    gsd_hoomd = pytest.importorskip("gsd.hoomd")
+    run_dir, _ = small_run
+    out = tmp_path / "run.gsd"
+    cli("export", run_dir, "--format", "gsd", "-o", out, "--quiet")
+    run = rodsea.open_run(run_dir)
+    with gsd_hoomd.open(str(out), "rb") as t:
+        assert len(t) == run.frames
+        frame = t[2]
+        assert frame.particles.types == ["polar", "medium"]
+        np.testing.assert_array_equal(frame.particles.typeid, run.species)
+        np.testing.assert_allclose(frame.particles.orientation, run.quaternions[2], atol=1e-7)
+        with h5py.File(run_dir / "trajectory.h5") as f:
+            radii = f["parameters/rodsea/species/0/sphere_radii"][()]
+            offsets = f["parameters/rodsea/species/0/sphere_offsets"][()]
+        shape = frame.particles.type_shapes[0]
+        assert shape["type"] == "SphereUnion"
+        np.testing.assert_allclose(shape["diameters"], 2 * radii, rtol=1e-6)
+        np.testing.assert_allclose(shape["centers"], offsets, rtol=1e-6)
+        # Centred box: x and y shifted by -L/2.
+        np.testing.assert_allclose(frame.particles.position[:, 0] + 10.0,
+                                   run.positions[2][:, 0], atol=1e-5)
+        assert frame.log["rodsea/time"][0] == pytest.approx(run.times[2])
+        assert frame.log["rodsea/polar_order_polar"][0] == pytest.approx(
+            run.series("polar_order_polar")[2])
+
+
+def test_a_campaigns_collected_table_loads_as_columns(tmp_path):
+    collected = tmp_path / "campaign" / "collected"
+    collected.mkdir(parents=True)
+    (collected / "points.csv").write_text(
+        "# rodsea collected points; units: phi_medium [1] P_polar [1]\n"
+        "point,phi_medium,P_polar,P_polar_err\nphi=0.2,0.2,0.31,0.02\nphi=0.5,0.5,0.12,nan\n")
+    t = rodsea.load_collected(tmp_path / "campaign")
+    np.testing.assert_allclose(t["phi_medium"], [0.2, 0.5])
+    assert t["point"] == ["phi=0.2", "phi=0.5"] and np.isnan(t["P_polar_err"][1])
+    with pytest.raises(rodsea.FileError, match="no such table"):
+        rodsea.load_collected(tmp_path / "campaign", table="runs")
+
+
+def test_the_tutorial_script_runs_and_draws(tmp_path):
+    import os
+    import subprocess
+    import sys
+    script = os.path.join(os.environ.get("RODSEA_SOURCE_DIR", "."), "examples", "python",
+                          "demo.py")
+    r = subprocess.run([sys.executable, script, "--duration", "0.02", "--out", str(tmp_path)],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    for name in ("polar_order.png", "g_r_theta.png"):
+        assert (tmp_path / name).stat().st_size > 10000
