@@ -1,6 +1,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -22,15 +23,16 @@ namespace {
 static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(Quat) == 4 * sizeof(double),
               "the zero-copy views read Vec3 and Quat as packed doubles");
 
-// HOOMD's local snapshots: the engine's own arrays, read-only, valid while the Simulation lives
-// (they follow its steps: no copy is made).
+// HOOMD's local snapshots: the engine's own arrays, read-only, with no copy: they follow the
+// steps. Each view holds the engine it shows (a shared_ptr in its base capsule), so a view taken
+// before set_state() stays valid and shows the state as it was then.
 class PySimulation {
   public:
     PySimulation(const Config& config, std::optional<int> threads)
         : plan_(config.plan), sim_(make(plan_, threads)) {}
     PySimulation(RunPlan plan, BodyState bodies, std::uint64_t step, int threads)
         : plan_(std::move(plan)),
-          sim_(std::make_unique<Simulation>(
+          sim_(std::make_shared<Simulation>(
               Simulation::resume(plan_.engine, std::move(bodies), step, {.threads = threads}))) {}
 
     // Steps without the GIL: other Python threads run meanwhile. Exactly one of steps and
@@ -47,48 +49,61 @@ class PySimulation {
                 throw InvalidParameter("seconds", format_number(*seconds) + " s", ">= 0 s");
             n = std::llround(*seconds / plan_.engine.dt);
         }
-        {
-            py::gil_scoped_release free_the_interpreter;
-            for (long long i = 0; i < n; ++i)
-                sim_->step();
+        // In chunks: between them the GIL is taken back for a moment, so that Ctrl-C
+        // (KeyboardInterrupt) stops a long run within a few milliseconds.
+        constexpr long long kChunk = 1024;
+        for (long long done = 0; done < n;) {
+            const long long chunk = std::min(kChunk, n - done);
+            {
+                py::gil_scoped_release free_the_interpreter;
+                for (long long i = 0; i < chunk; ++i)
+                    sim_->step();
+            }
+            done += chunk;
+            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
         }
         return static_cast<std::uint64_t>(n);
     }
 
     const Simulation& sim() const { return *sim_; }
+    const std::shared_ptr<Simulation>& shared() const { return sim_; }
     const RunPlan& plan() const { return plan_; }
 
     // Replaces the state (arrays as numpy gives them), checked as a resumed state is.
     void set_state(const BodyState& bodies) {
-        sim_ = std::make_unique<Simulation>(Simulation::resume(
+        sim_ = std::make_shared<Simulation>(Simulation::resume(
             plan_.engine, bodies, sim_->step_count(), {.threads = sim_->options().threads}));
     }
 
   private:
-    static std::unique_ptr<Simulation> make(const RunPlan& plan, std::optional<int> threads) {
+    static std::shared_ptr<Simulation> make(const RunPlan& plan, std::optional<int> threads) {
         const PackingCheck packing = check_packing(plan.engine, plan.counts);
         if (!packing.ok)
             throw InvalidParameter("species", "these counts", "a packing that fits",
                                    packing.message);
         BodyState bodies =
             build_initial_state(plan.engine, plan.counts, plan.builder, plan.engine.seed);
-        return std::make_unique<Simulation>(
+        return std::make_shared<Simulation>(
             plan.engine, std::move(bodies),
             BackendOptions{.threads = threads.value_or(plan.control.threads)});
     }
     RunPlan plan_;
-    std::unique_ptr<Simulation> sim_;
+    std::shared_ptr<Simulation> sim_;
 };
 
+// The base of a view: a capsule owning a reference to the engine whose memory it shows.
+py::capsule keep_alive(const std::shared_ptr<Simulation>& sim) {
+    auto* held = new std::shared_ptr<Simulation>(sim);
+    return py::capsule(held, [](void* p) { delete static_cast<std::shared_ptr<Simulation>*>(p); });
+}
+
 template <class T>
-py::array view(const PySimulation& self, py::handle owner, const std::vector<T>& data,
-               std::size_t width) {
+py::array view(const PySimulation& self, const std::vector<T>& data, std::size_t width) {
     const std::size_t n = data.size();
     py::array a(py::dtype::of<double>(), {n, width},
                 {static_cast<py::ssize_t>(sizeof(T)), static_cast<py::ssize_t>(sizeof(double))},
-                reinterpret_cast<const double*>(data.data()), owner);
+                reinterpret_cast<const double*>(data.data()), keep_alive(self.shared()));
     a.attr("setflags")(py::arg("write") = false);
-    (void)self;
     return a;
 }
 
@@ -127,39 +142,25 @@ void bind_simulation(py::module_& m) {
                                [](const PySimulation& s) { return s.sim().options().threads; })
         .def_property_readonly(
             "positions",
-            [](py::object self) {
-                const auto& s = self.cast<const PySimulation&>();
-                return view(s, self, s.sim().bodies().position, 3);
-            },
+            [](const PySimulation& s) { return view(s, s.sim().bodies().position, 3); },
             "(N, 3) centres of mass, mm; x, y in [0, L)")
         .def_property_readonly(
             "quaternions",
-            [](py::object self) {
-                const auto& s = self.cast<const PySimulation&>();
-                return view(s, self, s.sim().bodies().orientation, 4);
-            },
+            [](const PySimulation& s) { return view(s, s.sim().bodies().orientation, 4); },
             "(N, 4) unit quaternions (w, x, y, z), body frame → lab")
         .def_property_readonly(
             "velocities",
-            [](py::object self) {
-                const auto& s = self.cast<const PySimulation&>();
-                return view(s, self, s.sim().bodies().velocity, 3);
-            },
+            [](const PySimulation& s) { return view(s, s.sim().bodies().velocity, 3); },
             "(N, 3) mm/s")
         .def_property_readonly(
-            "spins",
-            [](py::object self) {
-                const auto& s = self.cast<const PySimulation&>();
-                return view(s, self, s.sim().bodies().spin, 3);
-            },
+            "spins", [](const PySimulation& s) { return view(s, s.sim().bodies().spin, 3); },
             "(N, 3) angular velocities, lab frame, rad/s")
         .def_property_readonly(
             "species",
-            [](py::object self) {
-                const auto& s = self.cast<const PySimulation&>();
+            [](const PySimulation& s) {
                 const auto& sp = s.sim().bodies().species;
                 py::array a(py::dtype::of<std::uint32_t>(), {sp.size()}, {sizeof(std::uint32_t)},
-                            sp.data(), self);
+                            sp.data(), keep_alive(s.shared()));
                 a.attr("setflags")(py::arg("write") = false);
                 return a;
             },

@@ -229,3 +229,16 @@ def test_the_tutorial_script_runs_and_draws(tmp_path):
     assert r.returncode == 0, r.stderr
     for name in ("polar_order.png", "g_r_theta.png"):
         assert (tmp_path / name).stat().st_size > 10000
+
+
+def test_a_view_taken_before_set_state_stays_valid(small_config):
+    sim = rodsea.Simulation(rodsea.load_config(small_config))
+    old = sim.positions
+    kept = old.copy()
+    moved = np.array(sim.positions)
+    moved[0, 0] = (moved[0, 0] + 0.001) % 20.0
+    sim.set_state(positions=moved)
+    sim.run(steps=100)
+    del sim
+    # The old engine lives on in the view: the state as it was, not freed memory.
+    np.testing.assert_array_equal(old, kept)
