@@ -8,11 +8,16 @@
 #include <filesystem>
 #include <memory>
 
+#include "rodsea/analysis/coarse_grained_fields.hpp"
+#include "rodsea/analysis/dbscan.hpp"
+#include "rodsea/analysis/flock_tracks.hpp"
+#include "rodsea/analysis/nematic_defects.hpp"
 #include "rodsea/analyze/analysis_frame.hpp"
 #include "rodsea/analyze/autocorrelation_observable.hpp"
 #include "rodsea/analyze/frame_context.hpp"
 #include "rodsea/analyze/observable_registry.hpp"
 #include "rodsea/builder/initial_state.hpp"
+#include "rodsea/engine/order_parameters.hpp"
 #include "rodsea/io/trajectory_file.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
 #include "rodsea/random.hpp"
@@ -107,6 +112,60 @@ BENCHMARK_CAPTURE(BM_Observable, autocorrelation, "autocorrelation")->Unit(bench
 BENCHMARK_CAPTURE(BM_Observable, flocks, "flocks")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Observable, segregation, "segregation")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Observable, medium_velocity, "medium_velocity")->Unit(benchmark::kMillisecond);
+
+// Issue 21's observables on the same frame. Fields: all 101870 bodies on cells of 2 mm (126 ×
+// 126), area fraction, polarisation, Q and velocity.
+void BM_CoarseGrainedFields(benchmark::State& state) {
+    const LargestSystem& s = largest();
+    std::vector<double> angles;
+    for (const Quat& q : s.bodies.orientation)
+        angles.push_back(in_plane_angle(q));
+    const PeriodicBox2D box{252.0, 252.0};
+    const FieldGrid grid = FieldGrid::of(box, 2.0);
+    for (auto _ : state)
+        benchmark::DoNotOptimize(
+            coarse_grain(grid, box, s.bodies.position, angles, s.bodies.velocity, 0.5).weight);
+    state.counters["cells"] = static_cast<double>(grid.cells());
+}
+BENCHMARK(BM_CoarseGrainedFields)->Unit(benchmark::kMillisecond);
+
+// Defects of the beads' (disordered) director field: every plaquette is looked at, and many
+// hold a defect: the worst case.
+void BM_NematicDefects(benchmark::State& state) {
+    const LargestSystem& s = largest();
+    std::vector<double> angles;
+    for (const Quat& q : s.bodies.orientation)
+        angles.push_back(in_plane_angle(q));
+    const PeriodicBox2D box{252.0, 252.0};
+    const FieldGrid grid = FieldGrid::of(box, 2.0);
+    const GroupFields f = coarse_grain(grid, box, s.bodies.position, angles, {}, 0.5);
+    std::size_t found = 0;
+    for (auto _ : state)
+        found = find_nematic_defects(grid, f.qxx, f.qxy).size();
+    state.counters["defects"] = static_cast<double>(found);
+}
+BENCHMARK(BM_NematicDefects)->Unit(benchmark::kMillisecond);
+
+// Linking one frame's flocks of the 800 polar rods to the previous frame's (DBSCAN itself is the
+// `flocks` observable above).
+void BM_FlockTracking(benchmark::State& state) {
+    const LargestSystem& s = largest();
+    std::vector<Vec3> rods;
+    std::vector<double> angles;
+    for (std::size_t b = 0; b < s.bodies.size(); ++b)
+        if (s.bodies.species[b] == 0) {
+            rods.push_back(s.bodies.position[b]);
+            angles.push_back(in_plane_angle(s.bodies.orientation[b]));
+        }
+    const PeriodicBox2D box{252.0, 252.0};
+    const std::vector<int> labels = dbscan(rods, box, {.eps = 2.25, .min_samples = 3});
+    FlockTracker tracker(box);
+    double t = 0.0;
+    for (auto _ : state)
+        tracker.add_frame(t += 0.05, labels, rods, angles);
+    state.counters["rods"] = static_cast<double>(rods.size());
+}
+BENCHMARK(BM_FlockTracking)->Unit(benchmark::kMillisecond);
 
 // The once-per-run part of C(t): 800 polar rods over 1000 frames, FFT per rod, 4 blocks.
 void BM_AutocorrelationFinish(benchmark::State& state) {
