@@ -100,7 +100,9 @@ def gap_section(rows, out):
 def epsilon_section(rows, out):
     md = ["## The calibration table: ε → D_r and speed", "",
           "A lone polar rod at the default gap (1.40 mm) and dt (1.25 µs), 16 copies × 3 s "
-          "(`validate/epsilon.toml`; committed as `data/calibration.csv`).", "",
+          "(`validate/epsilon.toml`): a quick check of the committed `data/calibration.csv`, "
+          "which pools two independent sets of 8 copies × 10 s "
+          "(`data/reproduction/noise-calibration/`).", "",
           "| ε (1/mm) | D_r (rad²/s) | speed (mm/s) | speed 10 / 50 / 90 % (mm/s) |",
           "|---|---|---|---|"]
     for r in rows:
