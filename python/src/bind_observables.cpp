@@ -164,8 +164,8 @@ void bind_observables(py::module_& m) {
 
     m.def(
         "segregation",
-        [](const py::sequence& box, const Doubles& positions, const py::array_t<bool>& polar,
-           double cell) {
+        [](const py::sequence& box, const Doubles& positions,
+           const py::array_t<bool, py::array::c_style | py::array::forcecast>& polar, double cell) {
             const PeriodicBox2D b = box_of(box);
             const std::vector<Vec3> p = points_of(positions, "positions");
             if (static_cast<std::size_t>(polar.size()) != p.size())
