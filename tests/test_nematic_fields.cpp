@@ -4,10 +4,12 @@
 // their charge, core and, for +1/2, orientation.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "rodsea/analysis/coarse_grained_fields.hpp"
+#include "rodsea/analysis/defect_tracks.hpp"
 #include "rodsea/analysis/nematic_defects.hpp"
 #include "rodsea/random.hpp"
 
@@ -160,6 +162,45 @@ TEST(NematicDefects, APairOnTheTorusAlsoAcrossTheBoundary) {
         }
         EXPECT_EQ(total, 0.0);
     }
+}
+
+NematicDefect defect(double x, double y, double charge) {
+    NematicDefect d;
+    d.x = x;
+    d.y = y;
+    d.charge = charge;
+    return d;
+}
+
+int count(const std::vector<DefectEvent>& events, DefectEvent::Kind kind) {
+    return static_cast<int>(std::count_if(events.begin(), events.end(),
+                                          [&](const DefectEvent& e) { return e.kind == kind; }));
+}
+
+// A +1/2 that crosses the periodic edge keeps its track; a ± pair that is created, moves apart,
+// comes back and annihilates gives one creation and one annihilation, no births or deaths.
+TEST(DefectTracks, TracksCrossTheEdgeAndPairsAreCreatedAndAnnihilated) {
+    const PeriodicBox2D box{40.0, 40.0};
+    DefectTracker tracker(box, 2.0, 3.0);
+    const double xs[] = {38.5, 39.5, 0.5, 1.5};
+    for (int k = 0; k < 4; ++k) {
+        std::vector<NematicDefect> frame{defect(xs[k], 10.0, 0.5)};
+        if (k == 1)
+            frame.push_back(defect(20.0, 30.0, 0.5)), frame.push_back(defect(21.5, 30.0, -0.5));
+        if (k == 2)
+            frame.push_back(defect(19.5, 30.0, 0.5)), frame.push_back(defect(22.0, 30.0, -0.5));
+        tracker.add_frame(0.1 * k, frame);
+    }
+    ASSERT_EQ(tracker.tracks().size(), 3u);
+    EXPECT_EQ(tracker.tracks()[0].states.size(), 4u);  // across x = 40 → 0
+    EXPECT_EQ(count(tracker.events(), DefectEvent::Kind::creation), 1);
+    EXPECT_EQ(count(tracker.events(), DefectEvent::Kind::annihilation), 1);
+    EXPECT_EQ(count(tracker.events(), DefectEvent::Kind::birth), 1);  // the first frame's +1/2
+    EXPECT_EQ(count(tracker.events(), DefectEvent::Kind::death), 0);
+    // A lone defect that vanishes dies alone; one that jumps farther than the link is a new one.
+    tracker.add_frame(0.4, std::vector<NematicDefect>{defect(9.0, 10.0, 0.5)});
+    EXPECT_EQ(count(tracker.events(), DefectEvent::Kind::death), 1);
+    EXPECT_EQ(count(tracker.events(), DefectEvent::Kind::birth), 2);
 }
 
 }  // namespace
