@@ -60,6 +60,13 @@ struct LargestSystem {
         file.append_frame(0, 0.0, bodies, {});
     }
     ~LargestSystem() { std::filesystem::remove(trajectory); }
+
+    std::vector<double> angles() const {  // every body's in-plane angle, rad
+        std::vector<double> a;
+        for (const Quat& q : bodies.orientation)
+            a.push_back(in_plane_angle(q));
+        return a;
+    }
 };
 
 LargestSystem& largest() {
@@ -117,9 +124,7 @@ BENCHMARK_CAPTURE(BM_Observable, medium_velocity, "medium_velocity")->Unit(bench
 // 126), area fraction, polarisation, Q and velocity.
 void BM_CoarseGrainedFields(benchmark::State& state) {
     const LargestSystem& s = largest();
-    std::vector<double> angles;
-    for (const Quat& q : s.bodies.orientation)
-        angles.push_back(in_plane_angle(q));
+    const std::vector<double> angles = s.angles();
     const PeriodicBox2D box{252.0, 252.0};
     const FieldGrid grid = FieldGrid::of(box, 2.0);
     for (auto _ : state)
@@ -133,9 +138,7 @@ BENCHMARK(BM_CoarseGrainedFields)->Unit(benchmark::kMillisecond);
 // hold a defect: the worst case.
 void BM_NematicDefects(benchmark::State& state) {
     const LargestSystem& s = largest();
-    std::vector<double> angles;
-    for (const Quat& q : s.bodies.orientation)
-        angles.push_back(in_plane_angle(q));
+    const std::vector<double> angles = s.angles();
     const PeriodicBox2D box{252.0, 252.0};
     const FieldGrid grid = FieldGrid::of(box, 2.0);
     const GroupFields f = coarse_grain(grid, box, s.bodies.position, angles, {}, 0.5);

@@ -5,6 +5,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <vector>
 
 #include "bindings.hpp"
@@ -41,8 +42,13 @@ std::vector<Vec3> points_of(const Doubles& a, const char* name) {
                                "shape (N, 2) or (N, 3), mm");
     const auto r = a.unchecked<2>();
     std::vector<Vec3> v(static_cast<std::size_t>(a.shape(0)));
-    for (py::ssize_t i = 0; i < a.shape(0); ++i)
+    for (py::ssize_t i = 0; i < a.shape(0); ++i) {
         v[static_cast<std::size_t>(i)] = {r(i, 0), r(i, 1), a.shape(1) == 3 ? r(i, 2) : 0.0};
+        const Vec3& p = v[static_cast<std::size_t>(i)];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            throw InvalidParameter(std::string(name) + "[" + std::to_string(i) + "]",
+                                   "a value that is not finite", "finite coordinates, mm");
+    }
     return v;
 }
 
@@ -51,6 +57,16 @@ std::vector<double> values_of(const Doubles& a, std::size_t n, const char* name)
         throw InvalidParameter(name, "an array of another shape",
                                "shape (" + std::to_string(n) + ",)");
     return std::vector<double>(a.data(), a.data() + n);
+}
+
+// compute(box, positions, angles) of a group observable (PairCorrelation, CorotatingMaps).
+template <class Observable>
+Observable& compute_group(Observable& self, const py::sequence& box, const Doubles& positions,
+                          const Doubles& angles) {
+    const std::vector<Vec3> p = points_of(positions, "positions");
+    const std::vector<double> a = values_of(angles, p.size(), "angles");
+    self.compute(box_of(box), p, a);
+    return self;
 }
 
 py::array_t<double> array(const std::vector<double>& v) {
@@ -94,17 +110,8 @@ void bind_observables(py::module_& m) {
                  return PairCorrelation({.r_max = r_max, .bin = bin});
              }),
              py::arg("r_max") = 45.0, py::arg("bin") = 0.25)
-        .def(
-            "compute",
-            [](PairCorrelation& self, const py::sequence& box, const Doubles& positions,
-               const Doubles& angles) -> PairCorrelation& {
-                const std::vector<Vec3> p = points_of(positions, "positions");
-                const std::vector<double> a = values_of(angles, p.size(), "angles");
-                self.compute(box_of(box), p, a);
-                return self;
-            },
-            py::arg("box"), py::arg("positions"), py::arg("angles"),
-            py::return_value_policy::reference_internal)
+        .def("compute", &compute_group<PairCorrelation>, py::arg("box"), py::arg("positions"),
+             py::arg("angles"), py::return_value_policy::reference_internal)
         .def_property_readonly("bin_centers",
                                [](const PairCorrelation& s) { return array(s.bin_centres()); })
         .def_property_readonly("g",
@@ -122,17 +129,8 @@ void bind_observables(py::module_& m) {
                 return CorotatingMaps({.r_max = r_max, .r_bins = r_bins, .theta_bins = theta_bins});
             }),
             py::arg("r_max") = 22.5, py::arg("r_bins") = 60, py::arg("theta_bins") = 72)
-        .def(
-            "compute",
-            [](CorotatingMaps& self, const py::sequence& box, const Doubles& positions,
-               const Doubles& angles) -> CorotatingMaps& {
-                const std::vector<Vec3> p = points_of(positions, "positions");
-                const std::vector<double> a = values_of(angles, p.size(), "angles");
-                self.compute(box_of(box), p, a);
-                return self;
-            },
-            py::arg("box"), py::arg("positions"), py::arg("angles"),
-            py::return_value_policy::reference_internal)
+        .def("compute", &compute_group<CorotatingMaps>, py::arg("box"), py::arg("positions"),
+             py::arg("angles"), py::return_value_policy::reference_internal)
         .def_property_readonly("r_edges",
                                [](const CorotatingMaps& s) { return array(s.r_edges()); })
         .def_property_readonly("theta_edges",

@@ -242,3 +242,14 @@ def test_a_view_taken_before_set_state_stays_valid(small_config):
     del sim
     # The old engine lives on in the view: the state as it was, not freed memory.
     np.testing.assert_array_equal(old, kept)
+
+
+def test_observables_refuse_nonsense_by_name():
+    with pytest.raises(rodsea.InvalidParameter, match="segregation.cell"):
+        rodsea.segregation((10.0, 10.0), np.zeros((3, 2)), np.array([1, 0, 0], bool), cell=0.0)
+    with pytest.raises(rodsea.InvalidParameter, match=r"positions\[1\]"):
+        rodsea.dbscan((10.0, 10.0), np.array([[1.0, 1.0], [np.nan, 2.0]]))
+    with pytest.raises(rodsea.InvalidParameter, match="pair.bin"):
+        rodsea.PairCorrelation(r_max=5.0, bin=0.0)
+    with pytest.raises(rodsea.InvalidParameter, match="angles"):
+        rodsea.CorotatingMaps().compute((10.0, 10.0), np.zeros((3, 2)), np.zeros(2))

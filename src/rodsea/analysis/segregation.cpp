@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rodsea/error.hpp"
 #include "rodsea/random.hpp"
 
 namespace rodsea {
 
 SegregationGrid segregation_grid(const PeriodicBox2D& box, double cell) {
+    require_positive("segregation.cell", cell, "mm");
     return {std::max(1, static_cast<int>(box.lx / cell)),
             std::max(1, static_cast<int>(box.ly / cell))};
 }
