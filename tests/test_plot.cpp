@@ -38,7 +38,9 @@ const std::map<std::string, Inches> kRunFigures{
     {"flocks_time.png", kCurve},      {"flock_sizes.png", kWide},
     {"g_r_theta.png", kMap},          {"G_r_theta.png", kMap},
     {"pair_correlation.png", kWide},  {"segregation.png", kCurve},
-    {"medium_velocity.png", kCurve}};
+    {"medium_velocity.png", kCurve},  {"fields_mean.png", kWide},
+    {"fields_last.png", kWide},       {"interface.png", kCurve},
+    {"defects.png", kWide},           {"flock_defects.png", kWide}};
 const std::vector<std::string> kTableFigures{"P_vs_phi_a.png", "Sigma_vs_phi_a.png", "P_vs_D_r.png",
                                              "Sigma_vs_D_r.png", "phase_diagram.png"};
 

@@ -190,6 +190,69 @@ TEST_F(RenderCli, NematicColoursIgnoreWhichEndIsWhich) {
     }
 }
 
+// Medium rods, one at the centre of each 2.6 mm cell, their axes following a ± defect pair
+// summed over periodic images (so exactly two defects on the torus), drawn with --overlay
+// defects on cells of 2.6 mm: the red comet sits at the +1/2, the blue trefoil at the −1/2.
+TEST_F(RenderCli, DefectOverlayMarksThePlantedDefects) {
+    const int n = 10;
+    const double side = 2.6 * n, xp = 7.8, xm = 18.2, y0 = 13.0;  // cores inside plaquettes
+    const RunPlan plan = load_config_string(
+        "[box]\nside = " + std::to_string(side) +
+            "\n[[species]]\nname = \"medium\"\nkind = \"apolar_rod\"\nlength = 2.5\ncount = " +
+            std::to_string(n * n) + "\n",
+        "test");
+    BodyState frame;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const double x = 2.6 * (i + 0.5), y = 2.6 * (j + 0.5);
+            double theta = 0.0;
+            for (int a = -8; a <= 8; ++a)
+                for (int b = -8; b <= 8; ++b)
+                    theta += 0.5 * std::atan2(y - y0 - b * side, x - xp - a * side) -
+                             0.5 * std::atan2(y - y0 - b * side, x - xm - a * side);
+            add_flat_body(frame, plan, 0, x, y, theta);
+        }
+    write_constructed_run(path("pair"), plan, {frame}, 0.01);
+    const auto draw = [&](const std::vector<std::string>& extra) {
+        std::vector<std::string> args{
+            "render", path("pair").string(), "-o", path("d.png").string(), "--size",
+            "520",    "--no-annotations"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const ChildResult r = run_rodsea(args, scratch_->path());
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        return read_png(path("d.png"));
+    };
+    // Pixels of a glyph's colour (the medium is grey, the background white): their farthest
+    // distance from a core, in mm.
+    const auto farthest = [&](const Image& image, auto is_colour, double cx, double cy) {
+        const double mm = side / image.width;
+        double far = -1.0;
+        for (int row = 0; row < image.height; ++row)
+            for (int col = 0; col < image.width; ++col) {
+                const Pixel p = pixel_at(image, col, row);
+                if (!is_colour(p)) continue;
+                const double dx = std::remainder((col + 0.5) * mm - cx, side),
+                             dy = std::remainder(side - (row + 0.5) * mm - cy, side);
+                far = std::max(far, std::hypot(dx, dy));
+            }
+        return far;
+    };
+    const auto red = [](const Pixel& p) { return p.r > 180 && p.g < 80 && p.b < 80; };
+    const auto blue = [](const Pixel& p) { return p.b > 180 && p.r < 80 && p.g < 120; };
+    const Image plain = draw({});
+    EXPECT_LT(farthest(plain, red, xp, y0), 0.0) << "red without an overlay";
+    EXPECT_LT(farthest(plain, blue, xm, y0), 0.0) << "blue without an overlay";
+    const Image marked = draw({"--overlay", "defects", "--overlay-cell", "2.6"});
+    // The core is refined within its plaquette (half a cell diagonal, 1.8 mm), the comet's tail
+    // reaches 0.8 cell beyond it and the trefoil's arms 0.45 cell: all within 4.2 mm.
+    const double red_reach = farthest(marked, red, xp, y0);
+    const double blue_reach = farthest(marked, blue, xm, y0);
+    EXPECT_GT(red_reach, 0.0);
+    EXPECT_LT(red_reach, 1.8 + 0.8 * 2.6);
+    EXPECT_GT(blue_reach, 0.0);
+    EXPECT_LT(blue_reach, 1.8 + 0.45 * 2.6);
+}
+
 TEST_F(RenderCli, ZoomMapsTheRegionOntoTheWholeImage) {
     // The view x ∈ [5, 15], y ∈ [8, 13] mm: 400 × 200 px, 40 px/mm.
     const Image image =
@@ -287,6 +350,12 @@ TEST_F(RenderCli, BadInputIsRefusedAndWritesNothing) {
         {{"render", run, "-o", (path("no-such-dir") / "x.png").string()}, 74, "does not exist"},
         {{"render", path("missing").string(), "-o", png}, 74, "no such file"},
         {{"render", run, "--colr", "flock", "-o", png}, 2, "--colr"},
+        {{"render", run, "--overlay", "vortices", "-o", png}, 2, "defects, director, flock"},
+        {{"render", run, "--overlay", "defects", "-o", png}, 2, "no apolar rods"},
+        {{"render", run, "--trail", "3", "-o", png}, 2, "only with --overlay"},
+        {{"render", run, "--overlay", "flock-tracks", "--overlay-cell", "15", "-o", png},
+         2,
+         "--overlay-cell"},
     };
     for (const Case& c : cases) {
         const ChildResult r = run_rodsea(c.args, scratch_->path());

@@ -65,7 +65,9 @@ class Run:
     def analysis(self, directory=None):
         """What `rodsea analyze` wrote (RUN/analysis/ unless given): {"json": the parsed
         analysis.json, "scalars": {name: (value, error)}, "tables": {csv name: {column: array}},
-        "maps": {name: {"value", "r_edges", "theta_edges"}}}."""
+        "maps": {name: {"value", "r_edges", "theta_edges"}}, "datasets": {path: array} for the
+        other arrays of analysis.h5 (defects/..., flock_tracks/..., fields/mean/...; the time
+        series of maps, fields/series/..., are left to fields())}."""
         directory = directory or os.path.join(self.path, "analysis")
         summary_path = os.path.join(directory, "analysis.json")
         if not os.path.exists(summary_path):
@@ -81,14 +83,47 @@ class Run:
         for name in sorted(os.listdir(directory)):
             if name.endswith(".csv"):
                 tables[name[:-4]] = read_table(os.path.join(directory, name))
-        maps = {}
+        maps, datasets = {}, {}
         h5 = os.path.join(directory, "analysis.h5")
         if os.path.exists(h5):
             import h5py
             with h5py.File(h5, "r") as f:
                 for name, group in f.get("maps", {}).items():
                     maps[name] = {k: group[k][()] for k in group}
-        return {"json": summary, "scalars": scalars, "tables": tables, "maps": maps}
+
+                def keep(path, item):
+                    if (isinstance(item, h5py.Dataset) and not path.startswith(("maps/", "labels/"))
+                            and not path.startswith("fields/series/")):
+                        datasets[path] = item[()]
+
+                f.visititems(keep)
+        return {"json": summary, "scalars": scalars, "tables": tables, "maps": maps,
+                "datasets": datasets}
+
+    def fields(self, directory=None):
+        """The coarse-grained fields of `rodsea analyze` (observable 'fields'): {"x", "y": cell
+        centres (mm), "time" (s) and "steady" of each kept map, "mean": {species: {field: map}},
+        "series": {species: {field: array [frame, y, x]}}}. Maps are indexed [y, x], so
+        imshow(map, origin="lower") draws them the right way up. Fields: area_fraction, vx, vy
+        (mm/s), and px, py (polar rods), qxx, qxy (rods); NaN where a cell holds no body."""
+        directory = directory or os.path.join(self.path, "analysis")
+        h5 = os.path.join(directory, "analysis.h5")
+        import h5py
+        try:
+            f = h5py.File(h5, "r")
+        except OSError as e:
+            raise _rodsea.FileError(f"{h5}: cannot be read ({e}); run rodsea analyze "
+                                    f"{self.path} first") from None
+        with f:
+            if "fields" not in f:
+                raise _rodsea.FileError(f"{h5}: no fields; run rodsea analyze {self.path} "
+                                        "--observables fields")
+            g = f["fields"]
+            out = {k: g[k][()] for k in ("x", "y", "time", "steady")}
+            for part in ("mean", "series"):
+                out[part] = {species: {name: values[()] for name, values in group.items()}
+                             for species, group in g[part].items()}
+        return out
 
 
 def read_table(path):

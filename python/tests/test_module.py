@@ -121,6 +121,15 @@ def test_open_run_gives_frames_series_and_analysis(small_run):
     assert p.shape == (6,) and "nematic_order_medium" in run.series_names
     analysis = run.analysis()
     assert "P_polar" in analysis["scalars"] and "g_r_theta" in analysis["maps"]
+    # The coarse-grained fields conserve the area: the mean polar map averages to φ_p.
+    fields = run.fields()
+    phi = fields["mean"]["polar"]["area_fraction"]
+    assert phi.shape == (len(fields["y"]), len(fields["x"]))
+    phi_p = next(s["area_fraction"] for s in analysis["json"]["parameters"]["species"]
+                 if s["name"] == "polar")
+    assert abs(phi.mean() - phi_p) < 1e-9 * max(phi_p, 1.0)
+    assert fields["series"]["polar"]["area_fraction"].shape[1:] == phi.shape
+    assert "defects/x" in analysis["datasets"]
 
 
 def test_order_parameters_equal_the_recorded_series(small_run):

@@ -9,6 +9,7 @@ import os
 
 import numpy as np
 
+from . import field_figures
 from .common import (
     EXIT_IO,
     SIZE_CURVE,
@@ -33,6 +34,7 @@ FIGURES = {
     "segregation": ["segregation.png"],
     "medium_velocity": ["medium_velocity.png"],
 }
+FIGURES.update(field_figures.FIGURES)
 
 ALL_FIGURES = [name for names in FIGURES.values() for name in names]
 
@@ -98,6 +100,9 @@ class Analysis:
         p = (self.observable(observable) or {}).get("parameters", {}).get(name)
         return p.get("value") if isinstance(p, dict) else None
 
+    def steady_frames(self):
+        return int(self.json["steady_state"].get("frames") or 0)
+
     def describe(self):
         """One line naming the run and its control parameters, under each figure's title."""
         p = self.json["parameters"]
@@ -141,6 +146,7 @@ def plan(run_input, log):
         "pair": pair_jobs,
         "segregation": segregation_jobs,
         "medium_velocity": medium_velocity_jobs,
+        **field_figures.BUILDERS,
     }
     for observable, names in FIGURES.items():
         if not log.wants(*names):

@@ -23,6 +23,43 @@ double periodic_mean(const std::vector<double>& x, double side) {
 
 }  // namespace
 
+FlockSummary summarise_flock(std::span<const std::uint32_t> rods, std::span<const Vec3> positions,
+                             std::span<const double> angles, const PeriodicBox2D& box) {
+    FlockSummary s;
+    s.size = rods.size();
+    std::vector<double> xs, ys;
+    double c = 0.0, sn = 0.0;
+    for (std::uint32_t r : rods) {
+        xs.push_back(positions[r].x);
+        ys.push_back(positions[r].y);
+        c += std::cos(angles[r]);
+        sn += std::sin(angles[r]);
+    }
+    s.centre = {periodic_mean(xs, box.lx), periodic_mean(ys, box.ly), 0.0};
+    s.polar_order = rods.empty() ? 0.0 : std::hypot(c, sn) / static_cast<double>(rods.size());
+    s.heading = std::atan2(sn, c);
+    return s;
+}
+
+std::vector<FlockSummary> summarise_flocks(std::span<const int> labels,
+                                           std::span<const Vec3> positions,
+                                           std::span<const double> angles,
+                                           const PeriodicBox2D& box) {
+    if (positions.size() != labels.size() || angles.size() != labels.size())
+        throw std::invalid_argument("summarise_flocks: one label, position and angle per rod");
+    std::vector<std::vector<std::uint32_t>> members;
+    for (std::size_t r = 0; r < labels.size(); ++r) {
+        if (labels[r] < 0) continue;
+        const auto l = static_cast<std::size_t>(labels[r]);
+        if (l >= members.size()) members.resize(l + 1);
+        members[l].push_back(static_cast<std::uint32_t>(r));
+    }
+    std::vector<FlockSummary> flocks;
+    for (const auto& rods : members)
+        if (!rods.empty()) flocks.push_back(summarise_flock(rods, positions, angles, box));
+    return flocks;
+}
+
 const char* to_string(FlockEvent::Kind kind) {
     switch (kind) {
         case FlockEvent::Kind::birth:
@@ -105,20 +142,13 @@ void FlockTracker::add_frame(double time, std::span<const int> labels,
         }
         // The flock's state: centre, heading, polar order, velocity, leader.
         FlockTrack& track = tracks_[static_cast<std::size_t>(id)];
+        const FlockSummary summary = summarise_flock(rods, positions, angles, box_);
         FlockState s;
         s.time = time;
-        s.size = rods.size();
-        std::vector<double> xs, ys;
-        double c = 0.0, sn = 0.0;
-        for (std::uint32_t r : rods) {
-            xs.push_back(positions[r].x);
-            ys.push_back(positions[r].y);
-            c += std::cos(angles[r]);
-            sn += std::sin(angles[r]);
-        }
-        s.centre = {periodic_mean(xs, box_.lx), periodic_mean(ys, box_.ly), 0.0};
-        s.polar_order = std::hypot(c, sn) / static_cast<double>(rods.size());
-        s.heading = std::atan2(sn, c);
+        s.size = summary.size;
+        s.centre = summary.centre;
+        s.polar_order = summary.polar_order;
+        s.heading = summary.heading;
         const double nan = std::numeric_limits<double>::quiet_NaN();
         s.velocity = {nan, nan, nan};
         Vec3 ahead{std::cos(s.heading), std::sin(s.heading), 0.0};

@@ -28,6 +28,24 @@ struct FlockState {
     std::uint32_t leader = 0;  // the leading rod (index among the rods given)
 };
 
+// One flock of one frame: its size, centre (the periodic mean of its rods' centres), mean
+// heading and polar order.
+struct FlockSummary {
+    std::size_t size = 0;
+    Vec3 centre;           // mm, in the box
+    double heading = 0.0;  // rad
+    double polar_order = 0.0;
+};
+
+// The flocks of a frame from DBSCAN labels (−1: in no flock), in label order.
+std::vector<FlockSummary> summarise_flocks(std::span<const int> labels,
+                                           std::span<const Vec3> positions,
+                                           std::span<const double> angles,
+                                           const PeriodicBox2D& box);
+// One flock from its rods' indices.
+FlockSummary summarise_flock(std::span<const std::uint32_t> rods, std::span<const Vec3> positions,
+                             std::span<const double> angles, const PeriodicBox2D& box);
+
 struct FlockTrack {
     int id = 0;
     double born = 0.0, ended = -1.0;  // s; ended < 0 while the track lives

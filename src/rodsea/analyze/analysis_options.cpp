@@ -39,6 +39,11 @@ const std::vector<Field> kFields{
     &AnalysisOptions::medium_distance,
     &AnalysisOptions::medium_r_max,
     &AnalysisOptions::medium_bin,
+    &AnalysisOptions::field_cell,
+    &AnalysisOptions::field_every,
+    &AnalysisOptions::interface_level,
+    &AnalysisOptions::defect_link,
+    &AnalysisOptions::defect_pair,
     &AnalysisOptions::blocks,
 };
 
@@ -123,6 +128,32 @@ std::vector<KeySpec> make_keys() {
             .def(d.medium_bin)
             .range(closed(1e-3, 1e3))
             .doc("radial bin width of the medium-velocity profile"),
+        real("fields", "cell")
+            .unit("mm")
+            .def_text("ℓ_p")
+            .range(closed(0.01, 1e6))
+            .doc("cell side of the coarse-grained fields (cloud-in-cell weights) and of the "
+                 "director grid the defects are found on"),
+        integer("fields", "every")
+            .def(count(d.field_every))
+            .integers(1, 1'000'000)
+            .doc("keep the maps of every k-th frame in analysis.h5 (the time averages use every "
+                 "steady frame)"),
+        real("fields", "interface_level")
+            .def(d.interface_level)
+            .range(closed(0.01, 0.99))
+            .doc("polar-rich where the polar rods' share of the local area fraction, "
+                 "φ_p / (φ_p + φ_medium), exceeds this; the interface is that contour"),
+        real("defects", "link")
+            .unit("mm")
+            .def_text("fields.cell")
+            .range(closed(1e-3, 1e6))
+            .doc("farthest a defect moves between frames and keeps its track"),
+        real("defects", "pair")
+            .unit("mm")
+            .def_text("2 fields.cell")
+            .range(closed(1e-3, 1e6))
+            .doc("farthest apart a ± pair is created or annihilated"),
         integer("", "blocks")
             .def(count(d.blocks))
             .integers(2, 1000)
@@ -183,12 +214,18 @@ AnalysisOptions resolve_analysis_options(AnalysisOptions o, const AnalysisSetup&
     pick(o.flock_eps, 0.5 * lp);
     pick(o.segregation_cell, 2.0 * lp);
     pick(o.medium_r_max, std::min(half, std::max(o.medium_distance, o.medium_bin)));
+    pick(o.field_cell, lp);
+    pick(o.defect_link, o.field_cell);
+    pick(o.defect_pair, 2.0 * o.field_cell);
     const std::string half_text = "(0, L/2 = " + format_number(half) + "] mm";
     for (const auto& [key, value] : {std::pair{"pair.r_max", o.pair_r_max},
                                      {"pair.medium_r_max", o.medium_pair_r_max},
                                      {"corotating.r_max", o.corotating_r_max},
                                      {"medium_velocity.r_max", o.medium_r_max},
-                                     {"flocks.eps", o.flock_eps}}) {
+                                     {"flocks.eps", o.flock_eps},
+                                     {"fields.cell", o.field_cell},
+                                     {"defects.link", o.defect_link},
+                                     {"defects.pair", o.defect_pair}}) {
         // Beyond half the box the minimum image is not unique: a pair would count twice.
         if (value > half) throw InvalidParameter(key, format_number(value) + " mm", half_text);
     }
@@ -226,6 +263,9 @@ AnalysisOptions resolve_analysis_options(AnalysisOptions o, const AnalysisSetup&
         "segregation.cell", format_number(o.segregation_cell) + " mm",
         std::ceil(setup.box.lx / o.segregation_cell) * std::ceil(setup.box.ly / o.segregation_cell),
         "the box sides / segregation.cell, squared");
+    check_bins("fields.cell", format_number(o.field_cell) + " mm",
+               std::floor(setup.box.lx / o.field_cell) * std::floor(setup.box.ly / o.field_cell),
+               "the box sides / fields.cell, squared");
     return o;
 }
 

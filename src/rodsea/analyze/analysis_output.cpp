@@ -47,7 +47,7 @@ std::string csv_text(const TableResult& t) {
 void write_hdf5(const RunAnalysis& a, const fs::path& path) {
     std::vector<AnalysisArrays> arrays;
     for (const ObservableResults& r : a.results)
-        arrays.push_back({r.observable, r.maps, r.labels});
+        arrays.push_back({r.observable, r.maps, r.labels, r.datasets});
     write_analysis_h5(path, a.run.run_dir.string(), arrays);
 }
 
@@ -107,6 +107,12 @@ Json observable_json(const ObservableResults& r, const fs::path& out_dir) {
         maps[l.name] = {{"file", "analysis.h5"},
                         {"dataset", "/labels/" + l.name + "/value"},
                         {"description", l.description}};
+    for (const DatasetResult& d : r.datasets)
+        maps[d.path] = {{"file", "analysis.h5"},
+                        {"dataset", "/" + d.path},
+                        {"shape", d.dims},
+                        {"unit", d.unit},
+                        {"description", d.description}};
     return {{"frames", r.frames}, {"seconds", r.seconds}, {"parameters", parameters},
             {"scalars", scalars}, {"tables", tables},     {"maps", maps},
             {"notes", r.notes}};

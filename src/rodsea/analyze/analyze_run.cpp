@@ -5,6 +5,7 @@
 #include <cmath>
 #include <ostream>
 
+#include "rodsea/analyze/fields_observable.hpp"
 #include "rodsea/analyze/frame_context.hpp"
 #include "rodsea/analyze/observable_registry.hpp"
 #include "rodsea/analyze/structure_series.hpp"
@@ -97,11 +98,14 @@ PreparedRun prepare_run(const fs::path& run, const AnalyzeRequest& request) {
     }
     w.from = p.times[w.first_frame];
     p.setup.steady_frames = frames - w.first_frame;
+    p.setup.frames = frames;
     // Blocks need at least one frame each; fewer than two blocks leave no error bar (NaN).
     p.setup.blocks = static_cast<int>(std::max<std::size_t>(
         1, std::min<std::size_t>(static_cast<std::size_t>(p.setup.blocks), p.setup.steady_frames)));
     p.options = resolve_analysis_options(request.options, p.setup);
     p.observables = select_observables(request.observables, p.setup, &p.skipped);
+    if (std::find(p.observables.begin(), p.observables.end(), "fields") != p.observables.end())
+        check_field_series_memory(p.setup, p.options);
     return p;
 }
 

@@ -2,17 +2,23 @@
 
 #include <algorithm>
 
+#include "rodsea/analyze/flock_track_results.hpp"
+
 namespace rodsea {
 
-FlockObservable::FlockObservable(const AnalysisSetup&, const AnalysisOptions& options)
-    : parameters_{options.flock_eps, options.flock_min_samples} {}
+FlockObservable::FlockObservable(const AnalysisSetup& setup, const AnalysisOptions& options)
+    : setup_(setup),
+      parameters_{options.flock_eps, options.flock_min_samples},
+      tracker_(setup.box) {}
 
 void FlockObservable::compute(const FrameContext& context) {
     const AnalysisFrame& f = context.frame();
     const GroupArrays& group = context.group(BodyGroup::polar);
     const std::vector<std::uint32_t>& polar = group.members;
     if (bodies_.empty()) bodies_ = polar;
-    const std::vector<int> labels = dbscan(group.position, f.box, parameters_);
+    const std::vector<int>& labels = context.flock_labels(parameters_);
+    tracker_.add_frame(f.time, labels, group.position, group.angle);
+    if (context.steady() && steady_from_ < 0.0) steady_from_ = f.time;
     const std::vector<double> sizes = cluster_sizes(labels);
     double members = 0.0;
     for (double s : sizes)
@@ -84,6 +90,7 @@ ObservableResults FlockObservable::finish() {
     r.labels.push_back({"flock_labels",
                         "DBSCAN label of each polar rod per frame (−1: not in a flock)", bodies_,
                         times_, labels_});
+    add_flock_track_results(tracker_, bodies_, setup_, steady_from_, r);
     return r;
 }
 

@@ -4,9 +4,13 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
+#include "rodsea/analysis/coarse_grained_fields.hpp"
+#include "rodsea/analysis/dbscan.hpp"
+#include "rodsea/analysis/nematic_defects.hpp"
 #include "rodsea/analyze/analysis_frame.hpp"
 #include "rodsea/neighbors/periodic_grid.hpp"
 
@@ -25,6 +29,14 @@ struct GroupArrays {
     PeriodicGrid2D grid;
 };
 
+// The coarse-grained fields of a frame on one grid: each species' own, and the medium's rods
+// together (every apolar rod), whose director field carries the nematic defects.
+struct FrameFields {
+    FieldGrid grid;
+    std::vector<GroupFields> species;        // in the run's species order
+    std::optional<GroupFields> medium_rods;  // none when the run has no apolar rods
+};
+
 class FrameContext {
   public:
     // `steady`: whether the frame is inside the steady-state window being averaged; `block`:
@@ -40,6 +52,12 @@ class FrameContext {
         return species_[frame_.species[body]].kind == BodyKind::polar_rod;
     }
     const GroupArrays& group(BodyGroup group) const;
+    // Built on first use; every observable of a run asks with the same cell (fields.cell).
+    const FrameFields& fields(double cell) const;
+    // The defects of the medium rods' director field on that grid (empty without apolar rods).
+    const std::vector<NematicDefect>& defects(double cell) const;
+    // DBSCAN labels of the polar rods, in the order of group(BodyGroup::polar).
+    const std::vector<int>& flock_labels(const DbscanParameters& parameters) const;
 
   private:
     bool in(BodyGroup group, std::uint32_t body) const;
@@ -49,6 +67,9 @@ class FrameContext {
     bool steady_;
     int block_;
     mutable std::array<std::unique_ptr<GroupArrays>, 4> groups_;
+    mutable std::unique_ptr<FrameFields> fields_;
+    mutable std::optional<std::vector<NematicDefect>> defects_;
+    mutable std::optional<std::vector<int>> flock_labels_;
 };
 
 }  // namespace rodsea

@@ -1,6 +1,8 @@
 #include "rodsea/analyze/observable.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace rodsea {
 
@@ -40,6 +42,26 @@ Estimate steady_estimate(std::span<const double> series, std::span<const char> s
     for (std::size_t i = 0; i < series.size() && i < steady.size(); ++i)
         if (steady[i]) kept.push_back(series[i]);
     return estimate_mean(kept);
+}
+
+Estimate rate_estimate(std::size_t events, double seconds, double per) {
+    Estimate e;
+    const auto n = static_cast<double>(events);
+    if (!(seconds > 0.0) || !(per > 0.0)) {
+        e.mean = e.error = std::numeric_limits<double>::quiet_NaN();
+        return e;
+    }
+    e.mean = n / (seconds * per);
+    // No event seen is not a rate known to be 0: its error is that of one event.
+    e.error = std::sqrt(std::max(n, 1.0)) / (seconds * per);
+    e.samples = events;
+    e.n_eff = n;
+    return e;
+}
+
+double steady_seconds(const AnalysisSetup& setup) {
+    if (setup.steady_frames < 2) return 0.0;
+    return static_cast<double>(setup.steady_frames - 1) * setup.frame_interval;
 }
 
 }  // namespace rodsea

@@ -23,6 +23,7 @@ struct AnalysisSetup {
     std::vector<SpeciesInfo> species;  // in the run's species order
     double frame_interval = 0.0;       // s between consecutive frames
     std::size_t steady_frames = 0;     // frames inside the averaged window
+    std::size_t frames = 0;            // every frame of the run analysed
     int blocks = 4;                    // time blocks for the error bars of window averages
 
     bool has_kind(BodyKind kind) const;
@@ -59,6 +60,7 @@ struct TableResult {
 // Maps and labels go to analysis.h5 as the io layer lays them out.
 using MapResult = AnalysisMap;
 using LabelResult = AnalysisLabels;
+using DatasetResult = AnalysisDataset;
 
 struct ObservableResults {
     std::string observable;
@@ -67,6 +69,7 @@ struct ObservableResults {
     std::vector<TableResult> tables;
     std::vector<MapResult> maps;
     std::vector<LabelResult> labels;
+    std::vector<DatasetResult> datasets;
     std::vector<std::string> notes;
     std::size_t frames = 0;  // frames this observable computed
     double seconds = 0.0;    // wall time in compute()
@@ -85,5 +88,13 @@ class Observable {
 
 // Steady-state mean of a per-frame series, with the window's frames selected by `steady`.
 Estimate steady_estimate(std::span<const double> series, std::span<const char> steady);
+
+// A rate of independent events: `events` counted in `seconds` (per `per` of something else,
+// e.g. the box area), with the Poisson error √max(events, 1); NaN without time.
+Estimate rate_estimate(std::size_t events, double seconds, double per = 1.0);
+
+// The steady window's length in seconds, from its first frame to its last: events are counted
+// after the first frame, up to and including the last (0 for a window of one frame).
+double steady_seconds(const AnalysisSetup& setup);
 
 }  // namespace rodsea

@@ -4,7 +4,10 @@
 
 #include "rodsea/analyze/autocorrelation_observable.hpp"
 #include "rodsea/analyze/corotating_maps_observable.hpp"
+#include "rodsea/analyze/defect_observable.hpp"
 #include "rodsea/analyze/drift_observable.hpp"
+#include "rodsea/analyze/fields_observable.hpp"
+#include "rodsea/analyze/flock_defect_observable.hpp"
 #include "rodsea/analyze/flock_observable.hpp"
 #include "rodsea/analyze/medium_velocity_observable.hpp"
 #include "rodsea/analyze/order_parameter_observable.hpp"
@@ -21,10 +24,18 @@ const std::vector<ObservableInfo>& observable_catalogue() {
         {"pair", "g(r), G(r), G2(r) of polar rods; g(r), G2(r) of apolar medium rods"},
         {"corotating", "g(r,θ), G(r,θ) around polar rods; flock aspect ratio σ_f and N_avg"},
         {"autocorrelation", "C(t), C2(t) and D_r from C = exp(−D_r t)"},
-        {"flocks", "DBSCAN flocks: N_m(t), <N_m>, histograms, labels per frame"},
+        {"flocks",
+         "DBSCAN flocks: N_m(t), <N_m>, histograms, labels per frame; flocks followed in time "
+         "(merges, splits, lifetimes, leading rod)"},
         {"segregation", "Σ with its random-mixing baseline subtracted"},
         {"medium_velocity", "medium velocity around polar rods vs distance, and at d"},
         {"drift", "mean velocity of each species; the medium's along the polar rods' heading"},
+        {"fields",
+         "coarse-grained maps per frame: area fraction, velocity, polarisation, nematic tensor; "
+         "the polar-rich interface length"},
+        {"defects", "nematic defects of the medium: counts, tracks, pair creation/annihilation"},
+        {"flock_defects",
+         "distance from flocks to the nearest +1/2 defect and alignment with its orientation"},
     };
     return catalogue;
 }
@@ -44,6 +55,11 @@ std::string missing_requirement(const std::string& name, const AnalysisSetup& se
     if (name == "flocks" && polar == 0) return "needs polar rods";
     if ((name == "segregation" || name == "medium_velocity") && (polar == 0 || medium == 0))
         return "needs polar rods and a medium";
+    const long long medium_rods = setup.count_of(BodyKind::apolar_rod);
+    if (name == "defects" && medium_rods == 0)
+        return "needs a medium of apolar rods (beads have no axis)";
+    if (name == "flock_defects" && (polar == 0 || medium_rods == 0))
+        return "needs polar rods and a medium of apolar rods";
     return "";
 }
 
@@ -103,6 +119,9 @@ std::unique_ptr<Observable> make_observable(const std::string& name, const Analy
     if (name == "medium_velocity")
         return std::make_unique<MediumVelocityObservable>(setup, options);
     if (name == "drift") return std::make_unique<DriftObservable>(setup);
+    if (name == "fields") return std::make_unique<FieldsObservable>(setup, options);
+    if (name == "defects") return std::make_unique<DefectObservable>(setup, options);
+    if (name == "flock_defects") return std::make_unique<FlockDefectObservable>(setup, options);
     throw InvalidParameter("observable", name, "a name from observable_catalogue()");
 }
 

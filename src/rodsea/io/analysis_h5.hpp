@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace rodsea {
@@ -28,11 +29,23 @@ struct AnalysisLabels {
     std::vector<std::int32_t> labels;
 };
 
-// One observable's maps and labels, written under the observable's name as an attribute.
+// Any other array, at `path` ("fields/series/polar/area_fraction": groups made as needed), with
+// its shape. float values are stored compressed in single precision (time series of maps).
+struct AnalysisDataset {
+    std::string path;
+    std::string description;
+    std::string unit;
+    std::vector<std::uint64_t> dims;
+    std::variant<std::vector<double>, std::vector<float>, std::vector<std::int32_t>> values;
+};
+
+// One observable's maps, labels and datasets, written with the observable's name as an
+// attribute.
 struct AnalysisArrays {
     std::string observable;
     const std::vector<AnalysisMap>& maps;
     const std::vector<AnalysisLabels>& labels;
+    const std::vector<AnalysisDataset>& datasets;
 };
 
 // Writes the file atomically. Throws FileError naming it on any failure.

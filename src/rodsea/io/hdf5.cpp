@@ -1,5 +1,6 @@
 #include "rodsea/io/detail/hdf5.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -211,6 +212,11 @@ Handle open_group(const File& file, hid_t parent, const std::string& name) {
                         "no group " + name + " (not a rodsea file, or a damaged one)"));
 }
 
+Handle open_dataset(const File& file, hid_t parent, const std::string& name) {
+    return Handle(check(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), file,
+                        "no dataset " + name + " (not a rodsea file, or a damaged one)"));
+}
+
 bool exists(hid_t parent, const std::string& path) {
     // H5Lexists needs every intermediate link to exist: walk the path one level at a time.
     std::string prefix;
@@ -314,6 +320,33 @@ void write_dataset(const File& file, hid_t parent, const std::string& name,
                    const std::vector<std::int32_t>& data, const std::vector<hsize_t>& dims,
                    const std::string& unit) {
     write_fixed(file, parent, name, H5T_STD_I32LE, H5T_NATIVE_INT32, data, dims, unit);
+}
+
+void write_compressed_dataset(const File& file, hid_t parent, const std::string& name,
+                              const std::vector<float>& data, const std::vector<hsize_t>& dims,
+                              const std::string& unit) {
+    Handle space = dataspace(dims);
+    Handle props(H5Pcreate(H5P_DATASET_CREATE));
+    // One chunk per leading index (a map per frame), which is how readers slice a time series
+    // of maps; deflate (zlib, in every HDF5 build) shrinks the empty cells' NaNs to nothing.
+    std::vector<hsize_t> chunk = dims;
+    if (!chunk.empty()) chunk[0] = 1;
+    for (hsize_t& c : chunk)
+        c = std::max<hsize_t>(c, 1);
+    const bool chunked = !data.empty();
+    if (chunked) {
+        H5Pset_chunk(props.get(), static_cast<int>(chunk.size()), chunk.data());
+        H5Pset_shuffle(props.get());
+        H5Pset_deflate(props.get(), 4);
+        H5Pset_fletcher32(props.get());
+    }
+    Handle set(check(H5Dcreate2(parent, name.c_str(), H5T_IEEE_F32LE, space.get(), H5P_DEFAULT,
+                                chunked ? props.get() : H5P_DEFAULT, H5P_DEFAULT),
+                     file, "cannot create dataset " + name));
+    if (chunked)
+        check(H5Dwrite(set.get(), H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()),
+              file, "cannot write dataset " + name);
+    write_unit(file, set.get(), unit);
 }
 
 void write_dataset(const File& file, hid_t parent, const std::string& name,

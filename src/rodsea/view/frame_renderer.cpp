@@ -341,6 +341,102 @@ void draw_polar(cairo_t* cr, const DiscPainter& painter, const BodyState& bodies
     }
 }
 
+// Calls `draw(x, y)` at (x, y) and at its periodic images one box away: a glyph near an edge
+// shows on both sides, as bodies do; the clip keeps what is outside the view.
+template <class Draw>
+void at_images(const Box& box, double x, double y, Draw draw) {
+    for (int i = -1; i <= 1; ++i)
+        for (int j = -1; j <= 1; ++j)
+            draw(x + i * box.lx, y + j * box.ly);
+}
+
+constexpr Rgb kDirector{0.10, 0.10, 0.45};
+constexpr Rgb kPlusHalf{0.85, 0.05, 0.05};
+constexpr Rgb kMinusHalf{0.05, 0.25, 0.85};
+constexpr Rgb kFullDefect{0.45, 0.05, 0.55};
+
+void draw_overlay(cairo_t* cr, const OverlayShapes& shapes, double pixels_per_mm, const Box& box) {
+    const double px = 1.0 / pixels_per_mm, c = shapes.cell;
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+    if (!shapes.director.empty()) {
+        set_colour(cr, kDirector);
+        cairo_set_line_width(cr, std::max(1.0 * px, 0.06 * c));
+        cairo_new_path(cr);
+        for (const OverlayShapes::Stick& s : shapes.director) {
+            const double hx = 0.5 * s.length * std::cos(s.angle),
+                         hy = 0.5 * s.length * std::sin(s.angle);
+            at_images(box, s.x, s.y, [&](double x, double y) {
+                cairo_move_to(cr, x - hx, y - hy);
+                cairo_line_to(cr, x + hx, y + hy);
+            });
+        }
+        cairo_stroke(cr);
+    }
+    const double line = std::max(1.5 * px, 0.08 * c);
+    for (const NematicDefect& d : shapes.defects) {
+        at_images(box, d.x, d.y, [&](double x, double y) {
+            cairo_new_path(cr);
+            cairo_set_line_width(cr, line);
+            if (d.charge == 0.5) {
+                // The comet: its head at the core, its tail along the orientation.
+                set_colour(cr, kPlusHalf);
+                cairo_arc(cr, x, y, 0.22 * c, 0.0, 2.0 * std::numbers::pi);
+                cairo_fill(cr);
+                cairo_move_to(cr, x, y);
+                cairo_line_to(cr, x + 0.8 * c * std::cos(d.orientation),
+                              y + 0.8 * c * std::sin(d.orientation));
+                cairo_stroke(cr);
+            } else if (d.charge == -0.5) {
+                set_colour(cr, kMinusHalf);
+                for (int k = 0; k < 3; ++k) {
+                    const double a = std::numbers::pi / 2.0 + k * 2.0 * std::numbers::pi / 3.0;
+                    cairo_move_to(cr, x, y);
+                    cairo_line_to(cr, x + 0.45 * c * std::cos(a), y + 0.45 * c * std::sin(a));
+                }
+                cairo_stroke(cr);
+            } else {
+                set_colour(cr, kFullDefect);
+                cairo_arc(cr, x, y, 0.35 * c, 0.0, 2.0 * std::numbers::pi);
+                cairo_stroke(cr);
+            }
+        });
+    }
+    for (const OverlayShapes::Trail& t : shapes.trails) {
+        set_colour(cr, label_colour(t.track));
+        cairo_set_line_width(cr, std::max(2.0 * px, 0.1 * c));
+        // The path breaks where the centre crossed the box edge.
+        for (std::size_t k = 1; k < t.centres.size(); ++k) {
+            const Vec3 &a = t.centres[k - 1], &b = t.centres[k];
+            if (std::abs(b.x - a.x) > 0.5 * box.lx || std::abs(b.y - a.y) > 0.5 * box.ly) continue;
+            at_images(box, a.x, a.y, [&](double x, double y) {
+                cairo_move_to(cr, x, y);
+                cairo_line_to(cr, x + b.x - a.x, y + b.y - a.y);
+            });
+        }
+        cairo_stroke(cr);
+        const Vec3& now = t.centres.back();
+        const double ax = shapes.arrow * std::cos(t.heading),
+                     ay = shapes.arrow * std::sin(t.heading);
+        at_images(box, now.x, now.y, [&](double x, double y) {
+            cairo_move_to(cr, x, y);
+            cairo_line_to(cr, x + ax, y + ay);
+            // The head: two barbs at ±150° from the arrow.
+            for (const double turn : {2.6, -2.6}) {
+                const double h = t.heading + turn;
+                cairo_move_to(cr, x + ax, y + ay);
+                cairo_line_to(cr, x + ax + 0.3 * shapes.arrow * std::cos(h),
+                              y + ay + 0.3 * shapes.arrow * std::sin(h));
+            }
+        });
+        cairo_stroke(cr);
+        at_images(box, t.leader.x, t.leader.y, [&](double x, double y) {
+            cairo_new_sub_path(cr);
+            cairo_arc(cr, x, y, 0.3 * shapes.arrow, 0.0, 2.0 * std::numbers::pi);
+        });
+        cairo_stroke(cr);
+    }
+}
+
 }  // namespace
 
 FrameRenderer::FrameRenderer(const RunPlan& plan, const RenderOptions& options)
@@ -377,6 +473,7 @@ FrameRenderer::FrameRenderer(const RunPlan& plan, const RenderOptions& options)
             throw InvalidParameter("--flock-eps", format_number(flocks_.eps) + " mm",
                                    "(0, " + format_number(0.5 * std::min(lx, ly)) + "] mm");
     }
+    if (options.overlay.any()) overlay_ = std::make_unique<OverlayBuilder>(plan, options.overlay);
     if (options.annotate) {
         top_ = header_height(width_, static_cast<int>(annotation_lines().size()));
         bottom_ = footer_height(width_, legend_wheels());
@@ -402,6 +499,9 @@ std::vector<std::string> FrameRenderer::annotation_lines() const {
     }
     if (options_.polar == PolarColouring::flock)
         lines.push_back("colour: flock (DBSCAN ε = " + format_number(flocks_.eps) + " mm)");
+    if (overlay_)
+        for (std::string& line : overlay_->caption())
+            lines.push_back(std::move(line));
     if (options_.region)
         lines.push_back("view: x " + format_number(region_.x0) + "–" + format_number(region_.x1) +
                         " mm, y " + format_number(region_.y0) + "–" + format_number(region_.y1) +
@@ -418,6 +518,10 @@ bool FrameRenderer::legend_wheels() const {
     }
     return (polar && options_.polar == PolarColouring::direction) ||
            (rods && options_.medium == MediumColouring::nematic);
+}
+
+void FrameRenderer::remember(const BodyState& bodies, double time) const {
+    if (overlay_) overlay_->update(bodies, time);
 }
 
 Image FrameRenderer::render(const BodyState& bodies, const FrameLabel& label) const {
@@ -480,6 +584,7 @@ void FrameRenderer::render_into(const BodyState& bodies, const FrameLabel& label
                                                            : kPolarUniform;
     });
 
+    if (overlay_) draw_overlay(cr, overlay_->update(bodies, label.time), scale_, plan_.engine.box);
     cairo_reset_clip(cr);
     if (options_.annotate)
         annotate(

@@ -11,6 +11,7 @@
 // up as in the paper's figures; the view's height is its aspect rounded to an even number of
 // pixels, and so is the strips' (H.264 needs even sizes).
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "rodsea/analysis/dbscan.hpp"
 #include "rodsea/config/run_plan.hpp"
 #include "rodsea/engine/body_state.hpp"
+#include "rodsea/view/frame_overlay.hpp"
 
 // Cairo stays out of this header.
 typedef struct _cairo cairo_t;
@@ -40,6 +42,7 @@ struct RenderOptions {
     bool annotate = true;             // text, scale bar and legend
     std::optional<double> flock_eps;  // mm, DBSCAN ε for flock colours; none: ℓ_p / 2
     int flock_min_samples = 3;        // as `rodsea analyze` (MODEL.md CHOICE)
+    OverlayOptions overlay;           // drawn over the bodies
 };
 
 // Premultiplied ARGB32 pixels (Cairo's layout), row-major from the top row. Opaque here.
@@ -70,9 +73,13 @@ class FrameRenderer {
     int height() const { return height_; }
     const ViewRegion& region() const { return region_; }
 
+    // With flock tracks overlaid the renderer remembers the frames it drew (their tracks), so
+    // frames must come in time order; `remember` feeds it a frame without drawing it (the
+    // frames before a single picture's).
     Image render(const BodyState& bodies, const FrameLabel& label) const;
     // The same into an existing image of the right size (a movie reuses one buffer).
     void render_into(const BodyState& bodies, const FrameLabel& label, Image& image) const;
+    void remember(const BodyState& bodies, double time) const;
 
   private:
     // What the corner text and the legend say beyond the run: the number of flocks coloured,
@@ -96,6 +103,7 @@ class FrameRenderer {
     int top_ = 0, bottom_ = 0;  // pixels of the annotation strips above and below the view
     double scale_ = 1.0;        // pixels per mm
     DbscanParameters flocks_;
+    mutable std::unique_ptr<OverlayBuilder> overlay_;  // none without --overlay
 };
 
 }  // namespace rodsea

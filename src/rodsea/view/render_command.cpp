@@ -70,6 +70,12 @@ int render_command(const std::vector<std::string>& words, std::ostream& out, std
             << run.total_bodies() << " bodies; " << describe(options, renderer) << "\n";
 
     const auto start = std::chrono::steady_clock::now();
+    // Flock tracks need the frames of the trail before this one.
+    if (options.overlay.flock_tracks) {
+        const double from = run.times()[index] - options.overlay.trail;
+        for (std::size_t k = 0; k < index; ++k)
+            if (run.times()[k] >= from - 1e-9) renderer.remember(run.frame(k), run.times()[k]);
+    }
     // Ctrl-C while drawing stops before anything is written; once the PNG is being written it
     // is finished (a fraction of a second), so that no half-written file is ever left.
     const StopSignalGuard stop_guard;

@@ -15,6 +15,15 @@ std::vector<OptionSpec> picture_options(const std::string& size_help) {
          "apolar rods: neutral (default) or nematic (wheel of 2θ: θ and θ+π alike)"},
         {"--flock-eps", "E", "DBSCAN radius for --colour flock, mm (default ℓ_p / 2)"},
         {"--no-annotations", "", "no text, scale bar or legend"},
+        {"--overlay", "LIST",
+         "drawn over the bodies, comma-separated: defects (the medium's nematic defects: +1/2 "
+         "a red comet along its orientation, −1/2 a blue trefoil), director (a stick per cell "
+         "along the medium's director, ∝ S), flock-tracks (each flock's centre over the last "
+         "--trail s, an arrow along its heading, a ring on its leading rod)"},
+        {"--overlay-cell", "C",
+         "cell side of the director grid for defects and director, mm (default ℓ_p, as "
+         "`rodsea analyze` fields.cell)"},
+        {"--trail", "T", "seconds of each flock's path drawn by flock-tracks (default 2)"},
     };
 }
 
@@ -67,6 +76,30 @@ RenderOptions render_options_from(const Arguments& args, int default_width) {
                                    "it sets the DBSCAN radius of the flock colours");
         o.flock_eps = parse_number("--flock-eps", *eps, 1e-3, 1e6, "mm");
     }
+    if (const auto list = args.value("--overlay")) {
+        std::size_t start = 0;
+        while (start <= list->size()) {
+            const std::size_t comma = std::min(list->find(',', start), list->size());
+            const std::string name = list->substr(start, comma - start);
+            if (name == "defects")
+                o.overlay.defects = true;
+            else if (name == "director")
+                o.overlay.director = true;
+            else if (name == "flock-tracks")
+                o.overlay.flock_tracks = true;
+            else
+                throw InvalidParameter("--overlay", name,
+                                       "a comma-separated list of defects, director, flock-tracks");
+            start = comma + 1;
+        }
+    }
+    for (const char* flag : {"--overlay-cell", "--trail"})
+        if (args.value(flag) && !o.overlay.any())
+            throw InvalidParameter(flag, *args.value(flag), "only with --overlay");
+    if (const auto cell = args.value("--overlay-cell"))
+        o.overlay.cell = parse_number("--overlay-cell", *cell, 1e-3, 1e6, "mm");
+    if (const auto trail = args.value("--trail"))
+        o.overlay.trail = parse_number("--trail", *trail, 0.0, 1e6, "s");
     o.annotate = !args.has("--no-annotations");
     return o;
 }
@@ -84,6 +117,14 @@ std::string describe(const RenderOptions& options, const FrameRenderer& renderer
              format_number(r.y0) + "–" + format_number(r.y1) + " mm";
     else
         s += ", whole box";
+    if (options.overlay.any()) {
+        std::string list;
+        for (const auto& [on, name] : {std::pair{options.overlay.defects, "defects"},
+                                       {options.overlay.director, "director"},
+                                       {options.overlay.flock_tracks, "flock tracks"}})
+            if (on) list += (list.empty() ? "" : " and ") + std::string(name);
+        s += ", overlay " + list;
+    }
     return s;
 }
 

@@ -54,6 +54,7 @@ class File {
 
 Handle create_group(const File& file, hid_t parent, const std::string& name);
 Handle open_group(const File& file, hid_t parent, const std::string& name);
+Handle open_dataset(const File& file, hid_t parent, const std::string& name);
 bool exists(hid_t parent, const std::string& path);
 
 void write_attribute(const File& file, hid_t object, const std::string& name,
@@ -77,6 +78,11 @@ void write_dataset(const File& file, hid_t parent, const std::string& name,
                    const std::string& unit = "");
 void write_dataset(const File& file, hid_t parent, const std::string& name,
                    const std::vector<std::uint64_t>& data, const std::vector<hsize_t>& dims);
+// Single precision, chunked by the first dimension, shuffled and deflated, with checksums: for
+// large arrays of measured values (time series of maps), where 7 digits are more than they hold.
+void write_compressed_dataset(const File& file, hid_t parent, const std::string& name,
+                              const std::vector<float>& data, const std::vector<hsize_t>& dims,
+                              const std::string& unit = "");
 void write_string_dataset(const File& file, hid_t parent, const std::string& name,
                           const std::string& text);
 // Deletes the dataset `name` (a fixed string of another length cannot be overwritten in place) and
