@@ -93,6 +93,13 @@ TEST(FieldsObservable, AStripeOfPolarRodsHasTwoInterfacesAndTheMapsConserveArea)
         EXPECT_EQ(series.size(), 3 * mean.size());
     }
     // All rods at θ = 0.3: Q = (cos 0.6, sin 0.6) wherever there are rods.
+    const auto& order = values<double>(r, "fields/mean/medium/S");
+    const auto& director = values<double>(r, "fields/mean/medium/director");
+    for (std::size_t c = 0; c < order.size(); ++c)
+        if (!std::isnan(order[c])) {
+            EXPECT_NEAR(order[c], 1.0, 1e-12);
+            EXPECT_NEAR(director[c], 0.3, 1e-12);
+        }
     for (double v : values<double>(r, "fields/mean/medium/qxx"))
         if (!std::isnan(v)) {
             EXPECT_NEAR(v, std::cos(0.6), 1e-12);

@@ -253,6 +253,37 @@ TEST_F(RenderCli, DefectOverlayMarksThePlantedDefects) {
     EXPECT_LT(blue_reach, 1.8 + 0.45 * 2.6);
 }
 
+// A flock of five rods side by side, heading +x, moving 3 mm per frame for four frames: its
+// track's path (drawn from the frames before the one rendered) crosses where the flock was
+// and no rod is now, in the colour of track 0.
+TEST_F(RenderCli, FlockTrackOverlayDrawsThePathOfTheFlock) {
+    const RunPlan plan = polar_rods(5);
+    std::vector<BodyState> frames(4);
+    for (int k = 0; k < 4; ++k)
+        for (int r = 0; r < 5; ++r)
+            add_flat_body(frames[static_cast<std::size_t>(k)], plan, 0, 4.0 + 3.0 * k,
+                          8.2 + 0.9 * r, 0.0);
+    write_constructed_run(path("moving"), plan, frames, 0.01);
+    const auto draw = [&](const std::vector<std::string>& extra) {
+        std::vector<std::string> args{
+            "render", path("moving").string(), "-o", path("t.png").string(), "--size",
+            "400",    "--no-annotations"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const ChildResult r = run_rodsea(args, scratch_->path());
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        return read_png(path("t.png"));
+    };
+    // (7, 10): the flock's centre one frame after the start, 6 mm behind it now (its rods reach
+    // 2.25 mm behind their centres).
+    expect_background(pixel_under(draw({}), 7.0, 10.0), "without the overlay");
+    expect_colour(pixel_under(draw({"--overlay", "flock-tracks"}), 7.0, 10.0), label_colour(0),
+                  "on the path");
+    // A trail shorter than one frame interval leaves only the present.
+    expect_background(
+        pixel_under(draw({"--overlay", "flock-tracks", "--trail", "0.005"}), 7.0, 10.0),
+        "with a trail of 5 ms");
+}
+
 TEST_F(RenderCli, ZoomMapsTheRegionOntoTheWholeImage) {
     // The view x ∈ [5, 15], y ∈ [8, 13] mm: 400 × 200 px, 40 px/mm.
     const Image image =

@@ -165,12 +165,16 @@ ObservableResults FieldsObservable::finish() {
                           {n},
                           kept_steady_});
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    for (Map& m : maps_) {
-        const std::string species = setup_.species[m.species].name;
-        std::vector<double> mean(grid_.cells(), nan);
+    const std::vector<std::uint64_t> d = dims_of(grid_);
+    std::vector<std::vector<double>> means;
+    for (const Map& m : maps_) {
+        means.emplace_back(grid_.cells(), nan);
         for (std::size_t c = 0; c < grid_.cells(); ++c)
-            if (m.weight[c] > 0.0) mean[c] = m.sum[c] / m.weight[c];
-        const std::vector<std::uint64_t> d = dims_of(grid_);
+            if (m.weight[c] > 0.0) means.back()[c] = m.sum[c] / m.weight[c];
+    }
+    for (std::size_t k = 0; k < maps_.size(); ++k) {
+        Map& m = maps_[k];
+        const std::string species = setup_.species[m.species].name;
         r.datasets.push_back({"fields/series/" + species + "/" + m.field,
                               m.description + ", per kept frame [frame][y][x]; NaN: no body",
                               m.unit,
@@ -179,7 +183,22 @@ ObservableResults FieldsObservable::finish() {
         r.datasets.push_back({"fields/mean/" + species + "/" + m.field,
                               m.description + ", steady-window average [y][x]" +
                                   (m.weighted ? " weighted by each frame's bodies per cell" : ""),
-                              m.unit, d, std::move(mean)});
+                              m.unit, d, means[k]});
+        // Beside Q's components, the order and director of the averaged Q (fields_of() lists
+        // qxy right after qxx).
+        if (m.field != "qxy") continue;
+        const std::vector<double>&qxx = means[k - 1], &qxy = means[k];
+        std::vector<double> order(grid_.cells()), director(grid_.cells());
+        for (std::size_t c = 0; c < grid_.cells(); ++c) {
+            order[c] = std::hypot(qxx[c], qxy[c]);
+            director[c] = 0.5 * std::atan2(qxy[c], qxx[c]);
+        }
+        r.datasets.push_back({"fields/mean/" + species + "/S",
+                              "nematic order |⟨Q⟩| of the steady-window average [y][x]", "", d,
+                              std::move(order)});
+        r.datasets.push_back({"fields/mean/" + species + "/director",
+                              "director ½ arg ⟨Q⟩ of the steady-window average [y][x]", "rad", d,
+                              std::move(director)});
     }
     if (interface_) {
         const double area = setup_.box.lx * setup_.box.ly;
