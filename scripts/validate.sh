@@ -5,7 +5,7 @@
 #
 #   scripts/validate.sh [OUT [PART...]]     (default OUT: out/validate; PART: all of
 #                                            gap dt dt-fine epsilon apolar-rod bead mixture
-#                                            replicates medium-drift)
+#                                            replicates medium-drift reproduction)
 #
 # Parts already in OUT are kept, so a tier can be completed part by part; the report uses
 # whatever parts OUT holds.
@@ -20,7 +20,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 out=${1:-$root/out/validate}
 shift || true
 parts=("$@")
-all_parts=(gap dt dt-fine epsilon apolar-rod bead mixture replicates medium-drift)
+all_parts=(gap dt dt-fine epsilon apolar-rod bead mixture replicates medium-drift reproduction)
 [[ ${#parts[@]} -gt 0 ]] || parts=("${all_parts[@]}")
 for part in "${parts[@]}"; do
     if [[ " ${all_parts[*]} " != *" $part "* ]]; then
@@ -103,6 +103,18 @@ for part in "${parts[@]}"; do
     elif [[ $part == replicates ]]; then
         # 8 seeds of 20 s (400 frames each): ~25 core-minutes.
         run_seeds replicates 20 order,flocks,drift 1 2 3 4 5 6 7 8
+    elif [[ $part == reproduction ]]; then
+        # Issue 19's first row end to end, tiny: its campaign in a 50 mm box (--scale 0.2) for
+        # 2 s per point (~10 core-minutes), collected, and its runs' series binned as
+        # data/reproduction/ keeps them.
+        campaign=$root/data/reproduction/fig1c-phi_p0.05-small.toml
+        stamp "reproduction: $campaign at --scale 0.2 for 2 s, $threads at a time"
+        "$rodsea" campaign run "$campaign" --scale 0.2 --duration 2 --out "$out/reproduction" \
+            --jobs "$threads" --quiet
+        "$rodsea" campaign collect "$campaign" --scale 0.2 --duration 2 \
+            --out "$out/reproduction" --quiet
+        "$python" "$root/scripts/reproduction_series.py" "$out"/reproduction/runs/*/seed1 \
+            --out "$out/reproduction/series"
     elif [[ $part == medium-drift ]]; then
         # 2 seeds of 20 s (2000 frames each): ~10 core-minutes.
         run_seeds medium-drift 20 order,drift 1 2

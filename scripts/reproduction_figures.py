@@ -1,0 +1,161 @@
+#!/usr/bin/python3
+"""The figures of docs/reproduction.md, drawn from the tables in data/reproduction/ alone.
+
+    scripts/reproduction_figures.py [--out DIR] [--only NAME,...] [--dump]
+
+Every figure is listed in FIGURES with the tables it reads (paths relative to the repository);
+each is written as DIR/reproduction-<name>.png (default DIR: docs/images). --dump also writes
+DIR/reproduction-<name>.json: every curve drawn, as {label: {"x": [...], "y": [...],
+"err": [...]}}, so that a test can check the figure against its table. A missing or malformed
+table is named and nothing is drawn (exit 2).
+"""
+import argparse
+import json
+import os
+import sys
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+DATA = "data/reproduction"
+
+# Fig. 1c / 3a, first row of issue 19: the campaign tables, each one curve (label, file).
+FIG1C_POINTS = [
+    ("10 s, 63 mm box", f"{DATA}/fig1c-phi_p0.05-small.points.csv"),
+    ("60 s, 63 mm box", f"{DATA}/fig1c-phi_p0.05-long.points.csv"),
+]
+FIG1C_SERIES = f"{DATA}/fig1c-phi_p0.05-long"
+
+
+class TableError(Exception):
+    pass
+
+
+def read_csv(relative):
+    path = os.path.join(ROOT, relative)
+    if not os.path.isfile(path):
+        raise TableError(f"{relative}: missing")
+    try:
+        # deletechars="": keep the dots of config keys in column names (medium.area_fraction).
+        t = np.genfromtxt(path, delimiter=",", skip_header=1, names=True, dtype=float,
+                          encoding="utf-8", deletechars="")
+    except ValueError as e:
+        raise TableError(f"{relative}: not a table ({e})") from None
+    return np.atleast_1d(t)
+
+
+def column(t, name, relative):
+    if name not in (t.dtype.names or ()):
+        raise TableError(f"{relative}: no column '{name}'")
+    return np.asarray(t[name], dtype=float)
+
+
+def fig1c_curves():
+    """{panel: [(label, x, y, err)]} of P, Σ and N_m against φ_a."""
+    panels = {"P_polar": [], "Sigma": [], "N_m": []}
+    for label, relative in FIG1C_POINTS:
+        if not os.path.isfile(os.path.join(ROOT, relative)):
+            continue  # a campaign not run yet: its curve is left out, and said so in the doc
+        t = read_csv(relative)
+        x = column(t, "medium.area_fraction", relative)
+        order = np.argsort(x)
+        for name in panels:
+            panels[name].append((label, x[order], column(t, name, relative)[order],
+                                 column(t, name + "_err", relative)[order]))
+    if not panels["P_polar"]:
+        raise TableError(f"none of {', '.join(r for _, r in FIG1C_POINTS)} exists")
+    return panels
+
+
+def draw_fig1c(plt):
+    panels = fig1c_curves()
+    fig, axes = plt.subplots(1, 3, figsize=(12.0, 4.0))
+    ylabels = {"P_polar": "P (polar rods)", "Sigma": "Σ (baseline removed)",
+               "N_m": "⟨N_m⟩ (rods in the largest flock)"}
+    for ax, (name, curves) in zip(axes, panels.items()):
+        for label, x, y, err in curves:
+            ax.errorbar(x, y, yerr=err, marker="o", ms=4, capsize=3, label=label)
+        ax.set_xlabel("φ_a")
+        ax.set_ylabel(ylabels[name])
+        if name == "Sigma":
+            ax.axhline(0.0, color="0.6", lw=0.8)
+    axes[0].legend(loc="best", fontsize=8)
+    fig.suptitle("Fig. 1c / 3a at φ_p = 0.05, σ = 3.125, D_r = 0: rodsea, one run per point "
+                 "(errors: each run's own)", fontsize=10)
+    fig.tight_layout()
+    dump = {f"{name}: {label}": {"x": x.tolist(), "y": y.tolist(), "err": e.tolist()}
+            for name, curves in panels.items() for label, x, y, e in curves}
+    return fig, dump
+
+
+def series_files():
+    directory = os.path.join(ROOT, FIG1C_SERIES)
+    if not os.path.isdir(directory):
+        raise TableError(f"{FIG1C_SERIES}/: missing")
+    files = sorted(f for f in os.listdir(directory) if f.endswith(".series.csv"))
+    if not files:
+        raise TableError(f"{FIG1C_SERIES}/: no *.series.csv")
+    return [os.path.join(FIG1C_SERIES, f) for f in files]
+
+
+def draw_fig1c_series(plt):
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7.0, 6.0), sharex=True)
+    dump = {}
+    for relative in series_files():
+        t = read_csv(relative)
+        mid = 0.5 * (column(t, "t_from", relative) + column(t, "t_to", relative))
+        label = os.path.basename(relative)[:-len(".series.csv")].replace(
+            "medium.area_fraction=", "φ_a = ")
+        p, n_m = column(t, "P_polar", relative), column(t, "N_m", relative)
+        top.plot(mid, p, lw=1.3, label=label)
+        bottom.plot(mid, n_m, lw=1.3, label=label)
+        dump[f"P_polar: {label}"] = {"x": mid.tolist(), "y": p.tolist()}
+        dump[f"N_m: {label}"] = {"x": mid.tolist(), "y": n_m.tolist()}
+    top.set_ylabel("P (1 s means)")
+    bottom.set_ylabel("N_m (1 s means)")
+    bottom.set_xlabel("t (s)")
+    top.legend(loc="best", fontsize=8)
+    top.set_title("Transients of the 60 s runs (63 mm box, φ_p = 0.05, D_r = 0)", fontsize=10)
+    fig.tight_layout()
+    return fig, dump
+
+
+FIGURES = {"fig1c": draw_fig1c, "fig1c-series": draw_fig1c_series}
+
+
+def main(argv):
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--out", default=os.path.join(ROOT, "docs/images"))
+    p.add_argument("--only", default=",".join(FIGURES))
+    p.add_argument("--dump", action="store_true")
+    a = p.parse_args(argv)
+    names = [n for n in a.only.split(",") if n]
+    unknown = [n for n in names if n not in FIGURES]
+    if unknown:
+        print(f"reproduction_figures.py: unknown figure {', '.join(unknown)} (figures: "
+              f"{', '.join(FIGURES)})", file=sys.stderr)
+        return 2
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    drawn = []
+    try:
+        for name in names:
+            drawn.append((name, *FIGURES[name](plt)))
+    except TableError as e:
+        print(f"reproduction_figures.py: {e}; nothing drawn", file=sys.stderr)
+        return 2
+    os.makedirs(a.out, exist_ok=True)
+    for name, fig, dump in drawn:
+        path = os.path.join(a.out, f"reproduction-{name}.png")
+        fig.savefig(path + ".tmp.png", dpi=110)
+        os.replace(path + ".tmp.png", path)
+        if a.dump:
+            with open(os.path.join(a.out, f"reproduction-{name}.json"), "w") as f:
+                json.dump(dump, f)
+        print(path)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,96 @@
+#!/usr/bin/python3
+"""Time series of a finished run, binned, small enough to commit beside a campaign's table.
+
+    scripts/reproduction_series.py RUN_DIR... --out DIR [--bin SECONDS]
+
+Reads each run's analysis (RUN_DIR/analysis, written by `rodsea analyze` or `campaign collect`)
+and writes DIR/<point>.series.csv: per time bin (default 1 s) the means of P of the polar rods,
+S of the medium, Σ (baseline removed), N_m and the fraction of polar rods in flocks, with the
+number of frames in the bin and whether the bin lies in the steady window. <point> is the run's
+campaign point (the name of the directory above seed<k>), or the run directory's name.
+Units: time s; the rest are numbers (docs/analysis.md).
+"""
+import argparse
+import os
+import sys
+
+import numpy as np
+
+COLUMNS = [  # (analysis file, column, name in the series table)
+    ("order_parameters.csv", "P_polar", "P_polar"),
+    ("order_parameters.csv", "S_medium", "S_medium"),
+    ("segregation.csv", "Sigma", "Sigma"),
+    ("flocks.csv", "N_m", "N_m"),
+    ("flocks.csv", "fraction_in_flocks", "fraction_in_flocks"),
+]
+
+
+def fail(message):
+    print(f"reproduction_series.py: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
+def read(path):
+    if not os.path.isfile(path):
+        fail(f"{path}: missing; analyse the run first (rodsea analyze RUN_DIR)")
+    return np.genfromtxt(path, delimiter=",", skip_header=1, names=True)
+
+
+def point_name(run):
+    run = os.path.normpath(run)
+    leaf = os.path.basename(run)
+    return os.path.basename(os.path.dirname(run)) if leaf.startswith("seed") else leaf
+
+
+def series(run, width):
+    analysis = os.path.join(run, "analysis")
+    tables = {}
+    for file, _, _ in COLUMNS:
+        if file not in tables:
+            tables[file] = read(os.path.join(analysis, file))
+    time = tables["order_parameters.csv"]["time"]
+    steady = tables["order_parameters.csv"]["steady"]
+    for file, t in tables.items():
+        if len(t) != len(time) or not np.allclose(t["time"], time):
+            fail(f"{analysis}/{file}: its frames differ from order_parameters.csv's")
+    edges = np.arange(0.0, time[-1] + width, width)
+    rows = []
+    for lo, hi in zip(edges[:-1], edges[1:]):
+        pick = (time >= lo) & (time < hi)
+        if not pick.any():
+            continue
+        row = [lo, hi, int(pick.sum()), int(steady[pick].min() > 0.5)]
+        for file, column, _ in COLUMNS:
+            t = tables[file]
+            row.append(float(np.mean(t[column][pick])) if column in t.dtype.names else np.nan)
+        rows.append(row)
+    return rows
+
+
+def main(argv):
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("runs", nargs="+")
+    p.add_argument("--out", required=True)
+    p.add_argument("--bin", type=float, default=1.0, help="bin width, s (default 1)")
+    a = p.parse_args(argv)
+    if not a.bin > 0:
+        fail(f"--bin {a.bin}: must be > 0 s")
+    os.makedirs(a.out, exist_ok=True)
+    for run in a.runs:
+        rows = series(run, a.bin)
+        path = os.path.join(a.out, point_name(run) + ".series.csv")
+        header = ["t_from", "t_to", "frames", "steady"] + [name for _, _, name in COLUMNS]
+        with open(path + ".tmp", "w", encoding="utf-8") as f:
+            f.write(f"# {os.path.normpath(run)} binned by {a.bin:g} s: means per bin; units: "
+                    "t_from [s] t_to [s], the rest [1]; steady = 1 when the whole bin lies in "
+                    "the analysis' steady window\n")
+            f.write(",".join(header) + "\n")
+            for row in rows:
+                f.write(",".join(f"{v:.6g}" if isinstance(v, float) else str(v) for v in row)
+                        + "\n")
+        os.replace(path + ".tmp", path)
+        print(path)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

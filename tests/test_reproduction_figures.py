@@ -1,0 +1,63 @@
+"""Issue 19: the figures of docs/reproduction.md are drawn from the committed tables alone.
+Regenerates Fig. 1c's figure into a scratch directory and checks every curve it drew against
+the tables, read here with the csv module (not the script's parser), and the PNG's size.
+
+    /usr/bin/python3 tests/test_reproduction_figures.py SOURCE_DIR SCRATCH_DIR
+Exit 77 (skipped) without numpy or matplotlib.
+"""
+import csv
+import json
+import os
+import struct
+import subprocess
+import sys
+
+try:
+    import matplotlib  # noqa: F401
+    import numpy  # noqa: F401
+except ImportError as e:
+    print(f"skipped: {e} (install python3-numpy python3-matplotlib)")
+    sys.exit(77)
+
+source, scratch = sys.argv[1], sys.argv[2]
+script = os.path.join(source, "scripts", "reproduction_figures.py")
+os.makedirs(scratch, exist_ok=True)
+run = subprocess.run([sys.executable, script, "--only", "fig1c", "--out", scratch, "--dump"],
+                     capture_output=True, text=True)
+assert run.returncode == 0, run.stderr
+with open(os.path.join(scratch, "reproduction-fig1c.json")) as f:
+    drawn = json.load(f)
+
+sys.path.insert(0, os.path.join(source, "scripts"))
+import reproduction_figures as figures  # noqa: E402  (for the list of tables only)
+
+def same(a, b):
+    """Equal lists of floats, NaN (a run without an error bar) equal to NaN."""
+    return len(a) == len(b) and all(x == y or (x != x and y != y) for x, y in zip(a, b))
+
+
+checked = 0
+for label, relative in figures.FIG1C_POINTS:
+    path = os.path.join(source, relative)
+    if not os.path.isfile(path):
+        assert not any(k.endswith(": " + label) for k in drawn), f"{label} drawn without a table"
+        continue
+    with open(path, encoding="utf-8") as f:
+        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
+    header, rows = rows[0], rows[1:]
+    col = {name: i for i, name in enumerate(header)}
+    rows.sort(key=lambda r: float(r[col["medium.area_fraction"]]))
+    for name in ("P_polar", "Sigma", "N_m"):
+        curve = drawn[f"{name}: {label}"]
+        assert same(curve["x"], [float(r[col["medium.area_fraction"]]) for r in rows]), name
+        assert same(curve["y"], [float(r[col[name]]) for r in rows]), (name, label)
+        assert same(curve["err"], [float(r[col[name + "_err"]]) for r in rows]), (name, label)
+        checked += 1
+assert checked >= 3, "no table of Fig. 1c was checked"
+
+# 12 × 4 inches at 110 dpi.
+with open(os.path.join(scratch, "reproduction-fig1c.png"), "rb") as f:
+    head = f.read(24)
+assert head[:8] == b"\x89PNG\r\n\x1a\n"
+assert struct.unpack(">II", head[16:24]) == (1320, 440), struct.unpack(">II", head[16:24])
+print(f"checked {checked} curves of reproduction-fig1c.png against their tables")
