@@ -19,22 +19,26 @@ struct FieldSpec {
     const char* field;
     const char* unit;
     const char* description;
+    std::vector<double> GroupFields::*values;
     bool weighted;
 };
 
 std::vector<FieldSpec> fields_of(BodyKind kind) {
     std::vector<FieldSpec> f{
-        {"area_fraction", "", "area fraction (projected area per cell area)", false},
-        {"vx", "mm/s", "mean in-plane velocity, x", true},
-        {"vy", "mm/s", "mean in-plane velocity, y", true},
+        {"area_fraction", "", "area fraction (projected area per cell area)",
+         &GroupFields::area_fraction, false},
+        {"vx", "mm/s", "mean in-plane velocity, x", &GroupFields::vx, true},
+        {"vy", "mm/s", "mean in-plane velocity, y", &GroupFields::vy, true},
     };
     if (kind == BodyKind::polar_rod) {
-        f.push_back({"px", "", "polarisation: mean cos θ of the axes (thick → thin)", true});
-        f.push_back({"py", "", "polarisation: mean sin θ", true});
+        f.push_back({"px", "", "polarisation: mean cos θ of the axes (thick → thin)",
+                     &GroupFields::px, true});
+        f.push_back({"py", "", "polarisation: mean sin θ", &GroupFields::py, true});
     }
     if (kind != BodyKind::bead) {
-        f.push_back({"qxx", "", "nematic tensor: mean cos 2θ (S = |Q|, director ½ arg Q)", true});
-        f.push_back({"qxy", "", "nematic tensor: mean sin 2θ", true});
+        f.push_back({"qxx", "", "nematic tensor: mean cos 2θ (S = |Q|, director ½ arg Q)",
+                     &GroupFields::qxx, true});
+        f.push_back({"qxy", "", "nematic tensor: mean sin 2θ", &GroupFields::qxy, true});
     }
     return f;
 }
@@ -82,22 +86,12 @@ FieldsObservable::FieldsObservable(const AnalysisSetup& setup, const AnalysisOpt
                              f.field,
                              f.unit,
                              f.description,
+                             f.values,
                              f.weighted,
                              {},
                              std::vector<double>(grid_.cells(), 0.0),
                              std::vector<double>(grid_.cells(), 0.0)});
     interface_ = setup.polar_count() > 0 && setup.total_count() > setup.polar_count();
-}
-
-double FieldsObservable::value_of(const GroupFields& f, const std::string& field,
-                                  std::size_t c) const {
-    if (field == "area_fraction") return f.area_fraction[c];
-    if (field == "vx") return f.vx[c];
-    if (field == "vy") return f.vy[c];
-    if (field == "px") return f.px[c];
-    if (field == "py") return f.py[c];
-    if (field == "qxx") return f.qxx[c];
-    return f.qxy[c];
 }
 
 void FieldsObservable::compute(const FrameContext& context) {
@@ -112,7 +106,7 @@ void FieldsObservable::compute(const FrameContext& context) {
     for (Map& m : maps_) {
         const GroupFields& f = fields.species[m.species];
         for (std::size_t c = 0; c < grid_.cells(); ++c) {
-            const double v = value_of(f, m.field, c);
+            const double v = (f.*m.values)[c];
             if (keep) m.series.push_back(static_cast<float>(v));
             if (!context.steady()) continue;
             const double w = m.weighted ? f.weight[c] : 1.0;

@@ -31,11 +31,11 @@ class FieldsObservable final : public Observable {
     struct Map {
         std::uint32_t species = 0;
         std::string field, unit, description;
+        std::vector<double> GroupFields::*values = nullptr;
         bool weighted = false;  // averaged with each cell's body weight (p, Q, v); else plainly
         std::vector<float> series;
         std::vector<double> sum, weight;
     };
-    double value_of(const GroupFields& f, const std::string& field, std::size_t cell) const;
 
     AnalysisSetup setup_;
     double cell_;

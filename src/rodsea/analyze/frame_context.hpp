@@ -56,7 +56,8 @@ class FrameContext {
     const FrameFields& fields(double cell) const;
     // The defects of the medium rods' director field on that grid (empty without apolar rods).
     const std::vector<NematicDefect>& defects(double cell) const;
-    // DBSCAN labels of the polar rods, in the order of group(BodyGroup::polar).
+    // DBSCAN labels of the polar rods, in the order of group(BodyGroup::polar); every observable
+    // of a run asks with the same parameters (flocks.eps, flocks.min_samples).
     const std::vector<int>& flock_labels(const DbscanParameters& parameters) const;
 
   private:
@@ -70,6 +71,7 @@ class FrameContext {
     mutable std::unique_ptr<FrameFields> fields_;
     mutable std::optional<std::vector<NematicDefect>> defects_;
     mutable std::optional<std::vector<int>> flock_labels_;
+    mutable DbscanParameters flock_parameters_;
 };
 
 }  // namespace rodsea

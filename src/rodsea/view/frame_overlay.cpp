@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "rodsea/analyze/analysis_options.hpp"
+#include "rodsea/analyze/structure_series.hpp"
 #include "rodsea/engine/order_parameters.hpp"
 #include "rodsea/error.hpp"
 
@@ -24,7 +26,9 @@ OverlayBuilder::OverlayBuilder(const RunPlan& plan, const OverlayOptions& option
     if (options.flock_tracks && polar_length_ == 0.0)
         throw InvalidParameter("--overlay", "flock-tracks", "defects or director",
                                "the run has no polar rods");
-    cell_ = options.cell.value_or(polar_length_ > 0.0 ? polar_length_ : 4.5);
+    // The analysis' defaults (fields.cell, flocks.eps, flocks.min_samples), resolved for this run.
+    const AnalysisOptions defaults = resolve_analysis_options({}, analysis_setup(plan));
+    cell_ = options.cell.value_or(defaults.field_cell);
     const double half = 0.5 * std::min(box_.lx, box_.ly);
     if (!(cell_ > 0.0 && cell_ <= half))
         throw InvalidParameter("--overlay-cell", format_number(cell_) + " mm",
@@ -32,7 +36,7 @@ OverlayBuilder::OverlayBuilder(const RunPlan& plan, const OverlayOptions& option
     if (!(options.trail >= 0.0 && std::isfinite(options.trail)))
         throw InvalidParameter("--trail", format_number(options.trail) + " s", "≥ 0 s");
     grid_ = FieldGrid::of(box_, cell_);
-    flocks_ = {0.5 * polar_length_, 3};
+    flocks_ = {defaults.flock_eps, defaults.flock_min_samples};
 }
 
 OverlayShapes OverlayBuilder::update(const BodyState& bodies, double time) {
