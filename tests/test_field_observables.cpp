@@ -10,6 +10,7 @@
 #include <variant>
 
 #include "analysis_frames.hpp"
+#include "defect_fields.hpp"
 #include "rodsea/analysis/contour_length.hpp"
 #include "rodsea/analyze/defect_observable.hpp"
 #include "rodsea/analyze/fields_observable.hpp"
@@ -129,12 +130,7 @@ std::vector<Body> medium_with_pair(double side, double xp, double xm, double y) 
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) {
             const double x = 2.0 * i + 1.0, yy = 2.0 * j + 1.0;
-            double theta = 0.0;
-            for (int a = -8; a <= 8; ++a)
-                for (int b = -8; b <= 8; ++b)
-                    theta += 0.5 * std::atan2(yy - y - b * side, x - xp - a * side) -
-                             0.5 * std::atan2(yy - y - b * side, x - xm - a * side);
-            bodies.push_back({x, yy, theta, 1});
+            bodies.push_back({x, yy, pair_angle(x, yy, xp, xm, y, side), 1});
         }
     return bodies;
 }

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "defect_fields.hpp"
 #include "rodsea/analysis/coarse_grained_fields.hpp"
 #include "rodsea/analysis/defect_tracks.hpp"
 #include "rodsea/analysis/nematic_defects.hpp"
@@ -85,16 +86,7 @@ void director_field(const FieldGrid& g, Director theta, std::vector<double>& qxx
         }
 }
 
-// A defect of charge k at (x0, y0) summed over periodic images: θ = k Σ arg(r − r_n). A charge
-// on its own is not periodic (a torus holds zero net charge), so single defects are looked for
-// away from the box's edges, where the images' seams are.
-double defect_angle(double x, double y, double x0, double y0, double k, double L, int images) {
-    double t = 0.0;
-    for (int a = -images; a <= images; ++a)
-        for (int b = -images; b <= images; ++b)
-            t += k * std::atan2(y - y0 - b * L, x - x0 - a * L);
-    return t;
-}
+using testing::defect_angle;
 
 std::vector<NematicDefect> interior(const std::vector<NematicDefect>& all, double lo, double hi) {
     std::vector<NematicDefect> in;

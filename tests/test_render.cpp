@@ -13,6 +13,7 @@
 
 #include "child_process.hpp"
 #include "constructed_run.hpp"
+#include "defect_fields.hpp"
 #include "rodsea/config/config_file.hpp"
 #include "rodsea/view/colour_wheel.hpp"
 #include "rodsea/view/png_file.hpp"
@@ -85,6 +86,21 @@ class RenderCli : public ::testing::Test {
         const ChildResult r = run_rodsea(args, scratch_->path());
         EXPECT_EQ(r.exit_code, 0) << r.err;
         return read_png(path("out.png"));
+    }
+
+    // Renders the last frame of an existing run `width` pixels wide without annotations.
+    Image render_bare(const fs::path& run, int width, const std::vector<std::string>& extra) {
+        std::vector<std::string> args{"render",
+                                      run.string(),
+                                      "-o",
+                                      path("bare.png").string(),
+                                      "--size",
+                                      std::to_string(width),
+                                      "--no-annotations"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const ChildResult r = run_rodsea(args, scratch_->path());
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        return read_png(path("bare.png"));
     }
 
     std::unique_ptr<ScratchDir> scratch_;
@@ -205,22 +221,11 @@ TEST_F(RenderCli, DefectOverlayMarksThePlantedDefects) {
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) {
             const double x = 2.6 * (i + 0.5), y = 2.6 * (j + 0.5);
-            double theta = 0.0;
-            for (int a = -8; a <= 8; ++a)
-                for (int b = -8; b <= 8; ++b)
-                    theta += 0.5 * std::atan2(y - y0 - b * side, x - xp - a * side) -
-                             0.5 * std::atan2(y - y0 - b * side, x - xm - a * side);
-            add_flat_body(frame, plan, 0, x, y, theta);
+            add_flat_body(frame, plan, 0, x, y, testing::pair_angle(x, y, xp, xm, y0, side));
         }
     write_constructed_run(path("pair"), plan, {frame}, 0.01);
     const auto draw = [&](const std::vector<std::string>& extra) {
-        std::vector<std::string> args{
-            "render", path("pair").string(), "-o", path("d.png").string(), "--size",
-            "520",    "--no-annotations"};
-        args.insert(args.end(), extra.begin(), extra.end());
-        const ChildResult r = run_rodsea(args, scratch_->path());
-        EXPECT_EQ(r.exit_code, 0) << r.err;
-        return read_png(path("d.png"));
+        return render_bare(path("pair"), 520, extra);
     };
     // Pixels of a glyph's colour (the medium is grey, the background white): their farthest
     // distance from a core, in mm.
@@ -265,13 +270,7 @@ TEST_F(RenderCli, FlockTrackOverlayDrawsThePathOfTheFlock) {
                           8.2 + 0.9 * r, 0.0);
     write_constructed_run(path("moving"), plan, frames, 0.01);
     const auto draw = [&](const std::vector<std::string>& extra) {
-        std::vector<std::string> args{
-            "render", path("moving").string(), "-o", path("t.png").string(), "--size",
-            "400",    "--no-annotations"};
-        args.insert(args.end(), extra.begin(), extra.end());
-        const ChildResult r = run_rodsea(args, scratch_->path());
-        EXPECT_EQ(r.exit_code, 0) << r.err;
-        return read_png(path("t.png"));
+        return render_bare(path("moving"), 400, extra);
     };
     // (7, 10): the flock's centre one frame after the start, 6 mm behind it now (its rods reach
     // 2.25 mm behind their centres).
