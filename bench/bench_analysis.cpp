@@ -51,7 +51,9 @@ struct LargestSystem {
         setup.box = {252.0, 252.0};
         for (std::size_t s = 0; s < 2; ++s)
             setup.species.push_back({params.species[s].name, params.species[s].kind,
-                                     params.species[s].shape.extent, counts[s], 0.0});
+                                     params.species[s].shape.extent, counts[s],
+                                     static_cast<double>(counts[s]) *
+                                         params.species[s].shape.projected_area / (252.0 * 252.0)});
         setup.frame_interval = 0.05;
         setup.steady_frames = 1000;
         options = resolve_analysis_options({}, setup);
@@ -202,7 +204,7 @@ struct RodSystem {
                                      static_cast<double>(counts[s]) *
                                          params.species[s].shape.projected_area / (252.0 * 252.0)});
         setup.frame_interval = 0.05;
-        setup.steady_frames = setup.frames = 1000;
+        setup.steady_frames = 1000;
         options = resolve_analysis_options({}, setup);
     }
 };
@@ -214,26 +216,36 @@ RodSystem& rods() {
 
 // compute() of one of issue 21's observables on a fresh frame each time, because they share
 // the frame's fields, defects and flock labels (FrameContext), which the first of them builds:
-// that cost is counted here, the group arrays (shared with every observable) are not.
-void BM_FieldObservable(benchmark::State& state, const char* name) {
-    RodSystem& s = rods();
-    const std::unique_ptr<Observable> observable = make_observable(name, s.setup, s.options);
-    int frame = 0;
+// that cost is counted here, the group arrays (shared with every observable) are not. On the
+// rod system (defects need apolar rods) and, for those that apply, the 101870-body bead system.
+template <class System>
+void BM_FieldObservable(benchmark::State& state, System& (*system)(), const char* name) {
+    System& s = system();
+    AnalysisSetup setup = s.setup;
+    setup.frames = 1000;
+    const std::unique_ptr<Observable> observable = make_observable(name, setup, s.options);
+    AnalysisFrame frame = s.frame;
+    int k = 0;
     for (auto _ : state) {
         state.PauseTiming();
-        s.frame.time = 0.05 * ++frame;  // trackers need later and later frames
-        const FrameContext context(s.frame, s.setup.species, true);
+        frame.time = 0.05 * ++k;  // trackers need later and later frames
+        const FrameContext context(frame, setup.species, true);
         for (BodyGroup g : {BodyGroup::polar, BodyGroup::medium, BodyGroup::medium_rods})
             context.group(g);
         state.ResumeTiming();
         observable->compute(context);
     }
-    state.counters["bodies"] = static_cast<double>(s.frame.size());
+    state.counters["bodies"] = static_cast<double>(frame.size());
 }
-BENCHMARK_CAPTURE(BM_FieldObservable, fields, "fields")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_FieldObservable, defects, "defects")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_FieldObservable, flocks, "flocks")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_FieldObservable, flock_defects, "flock_defects")
+BENCHMARK_CAPTURE(BM_FieldObservable, rods_fields, &rods, "fields")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_FieldObservable, rods_defects, &rods, "defects")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_FieldObservable, rods_flocks, &rods, "flocks")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_FieldObservable, rods_flock_defects, &rods, "flock_defects")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_FieldObservable, beads_fields, &largest, "fields")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_FieldObservable, beads_flocks, &largest, "flocks")
     ->Unit(benchmark::kMillisecond);
 
 // The once-per-run part of C(t): 800 polar rods over 1000 frames, FFT per rod, 4 blocks.
