@@ -283,6 +283,24 @@ TEST_F(RenderCli, FlockTrackOverlayDrawsThePathOfTheFlock) {
         "with a trail of 5 ms");
 }
 
+// The same flock crossing the periodic edge (x = 15, 18, 21 ≡ 1, 24 ≡ 4 mm): its path leaves on
+// the right and enters on the left, with no stroke across the box.
+TEST_F(RenderCli, FlockTrackCrossesThePeriodicEdge) {
+    const RunPlan plan = polar_rods(5);
+    std::vector<BodyState> frames(4);
+    for (int k = 0; k < 4; ++k)
+        for (int r = 0; r < 5; ++r)
+            add_flat_body(frames[static_cast<std::size_t>(k)], plan, 0,
+                          std::fmod(15.0 + 3.0 * k, kBox), 8.2 + 0.9 * r, 0.0);
+    write_constructed_run(path("crossing"), plan, frames, 0.01);
+    const Image image = render_bare(path("crossing"), 400, {"--overlay", "flock-tracks"});
+    expect_colour(pixel_under(image, 19.6, 10.0), label_colour(0), "before the edge");
+    expect_colour(pixel_under(image, 0.3, 10.0), label_colour(0), "after the edge");
+    // Where a stroke from x = 18 back to x = 1 would pass, before the path starts (x = 15) and
+    // beyond the heading arrow's tip (x = 4 + 1.5 ℓ_p = 10.75).
+    expect_background(pixel_under(image, 13.0, 10.0), "inside the box, off the path");
+}
+
 TEST_F(RenderCli, ZoomMapsTheRegionOntoTheWholeImage) {
     // The view x ∈ [5, 15], y ∈ [8, 13] mm: 400 × 200 px, 40 px/mm.
     const Image image =

@@ -35,7 +35,7 @@ struct OverlayShapes {
     };
     struct Trail {
         int track = 0;
-        std::vector<Vec3> centres;  // oldest first, in the box (wrapped: split at the edges)
+        std::vector<Vec3> centres;  // oldest first, in the box
         double heading = 0.0;       // rad
         Vec3 leader;                // the leading rod's centre
     };

@@ -404,13 +404,15 @@ void draw_overlay(cairo_t* cr, const OverlayShapes& shapes, double pixels_per_mm
     for (const OverlayShapes::Trail& t : shapes.trails) {
         set_colour(cr, label_colour(t.track));
         cairo_set_line_width(cr, std::max(2.0 * px, 0.1 * c));
-        // The path breaks where the centre crossed the box edge.
+        // Each step is the minimum image of the centre's displacement, so a path that crosses
+        // the box edge leaves one side and enters the other.
         for (std::size_t k = 1; k < t.centres.size(); ++k) {
             const Vec3 &a = t.centres[k - 1], &b = t.centres[k];
-            if (std::abs(b.x - a.x) > 0.5 * box.lx || std::abs(b.y - a.y) > 0.5 * box.ly) continue;
+            const double dx = std::remainder(b.x - a.x, box.lx),
+                         dy = std::remainder(b.y - a.y, box.ly);
             at_images(box, a.x, a.y, [&](double x, double y) {
                 cairo_move_to(cr, x, y);
-                cairo_line_to(cr, x + b.x - a.x, y + b.y - a.y);
+                cairo_line_to(cr, x + dx, y + dy);
             });
         }
         cairo_stroke(cr);
