@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "array_arguments.hpp"
 #include "bindings.hpp"
 #include "rodsea/analysis/corotating_maps.hpp"
 #include "rodsea/analysis/dbscan.hpp"
@@ -25,40 +26,6 @@ namespace rodsea::python {
 
 namespace {
 
-using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
-
-PeriodicBox2D box_of(const py::sequence& box) {
-    if (py::len(box) != 2)
-        throw InvalidParameter("box", "a sequence of another length", "(L_x, L_y) in mm");
-    const PeriodicBox2D b{box[0].cast<double>(), box[1].cast<double>()};
-    require_positive("box L_x", b.lx, "mm");
-    require_positive("box L_y", b.ly, "mm");
-    return b;
-}
-
-std::vector<Vec3> points_of(const Doubles& a, const char* name) {
-    if (a.ndim() != 2 || (a.shape(1) != 2 && a.shape(1) != 3))
-        throw InvalidParameter(name, "an array of " + std::to_string(a.ndim()) + " dimensions",
-                               "shape (N, 2) or (N, 3), mm");
-    const auto r = a.unchecked<2>();
-    std::vector<Vec3> v(static_cast<std::size_t>(a.shape(0)));
-    for (py::ssize_t i = 0; i < a.shape(0); ++i) {
-        v[static_cast<std::size_t>(i)] = {r(i, 0), r(i, 1), a.shape(1) == 3 ? r(i, 2) : 0.0};
-        const Vec3& p = v[static_cast<std::size_t>(i)];
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-            throw InvalidParameter(std::string(name) + "[" + std::to_string(i) + "]",
-                                   "a value that is not finite", "finite coordinates, mm");
-    }
-    return v;
-}
-
-std::vector<double> values_of(const Doubles& a, std::size_t n, const char* name) {
-    if (a.ndim() != 1 || static_cast<std::size_t>(a.shape(0)) != n)
-        throw InvalidParameter(name, "an array of another shape",
-                               "shape (" + std::to_string(n) + ",)");
-    return std::vector<double>(a.data(), a.data() + n);
-}
-
 // compute(box, positions, angles) of a group observable (PairCorrelation, CorotatingMaps).
 template <class Observable>
 Observable& compute_group(Observable& self, const py::sequence& box, const Doubles& positions,
@@ -67,16 +34,6 @@ Observable& compute_group(Observable& self, const py::sequence& box, const Doubl
     const std::vector<double> a = values_of(angles, p.size(), "angles");
     self.compute(box_of(box), p, a);
     return self;
-}
-
-py::array_t<double> array(const std::vector<double>& v) {
-    return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
-}
-
-py::array_t<double> map_array(const std::vector<double>& v, std::size_t rows, std::size_t cols) {
-    py::array_t<double> a({rows, cols});
-    std::copy(v.begin(), v.end(), a.mutable_data());
-    return a;
 }
 
 }  // namespace

@@ -16,4 +16,5 @@ PYBIND11_MODULE(_rodsea, m) {
     rodsea::python::bind_simulation(m);
     rodsea::python::bind_run(m);
     rodsea::python::bind_observables(m);
+    rodsea::python::bind_fields(m);
 }
