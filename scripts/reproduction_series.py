@@ -6,7 +6,8 @@
 Reads each run's analysis (RUN_DIR/analysis, written by `rodsea analyze` or `campaign collect`)
 and writes DIR/<point>.series.csv: per time bin (default 1 s) the means of P of the polar rods,
 S of the medium, Σ (baseline removed), N_m and the fraction of polar rods in flocks, with the
-number of frames in the bin and whether the bin lies in the steady window. <point> is the run's
+number of frames in the bin and whether the bin lies in the steady window (nan for what the run
+does not have: Σ without a medium). <point> is the run's
 campaign point (the name of the directory above seed<k>), or the run directory's name.
 Units: time s; the rest are numbers (docs/analysis.md).
 """
@@ -44,9 +45,11 @@ def point_name(run):
 
 def series(run, width):
     analysis = os.path.join(run, "analysis")
-    tables = {}
+    tables = {"order_parameters.csv": read(os.path.join(analysis, "order_parameters.csv"))}
     for file, _, _ in COLUMNS:
-        if file not in tables:
+        # An observable the run's species do not allow (segregation without a medium) was
+        # skipped by the analysis: its columns are nan.
+        if file not in tables and os.path.isfile(os.path.join(analysis, file)):
             tables[file] = read(os.path.join(analysis, file))
     time = tables["order_parameters.csv"]["time"]
     steady = tables["order_parameters.csv"]["steady"]
@@ -61,8 +64,9 @@ def series(run, width):
             continue
         row = [lo, hi, int(pick.sum()), int(steady[pick].min() > 0.5)]
         for file, column, _ in COLUMNS:
-            t = tables[file]
-            row.append(float(np.mean(t[column][pick])) if column in t.dtype.names else np.nan)
+            t = tables.get(file)
+            has = t is not None and column in t.dtype.names
+            row.append(float(np.mean(t[column][pick])) if has else np.nan)
         rows.append(row)
     return rows
 

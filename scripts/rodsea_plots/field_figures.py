@@ -177,6 +177,7 @@ def defect_jobs(a, log):
     tracks = a.table("defects", "defect_tracks")
     charge, lifetime, ended = (tracks.number("charge"), tracks.number("lifetime"),
                                tracks.number("ended"))
+    interval = a.json.get("run", {}).get("frame_interval_s")
 
     def draw(plt):
         fig, (left, right) = plt.subplots(1, 2, figsize=SIZE_WIDE)
@@ -189,11 +190,15 @@ def defect_jobs(a, log):
         left.legend(loc="best")
         done = (ended > 0.5) & (np.abs(charge) == 0.5)
         if done.any():
-            right.hist(lifetime[done], bins=30, color="C2")
+            # Lifetimes are whole numbers of frame intervals: one bar per interval.
+            step = interval if finite(interval) and interval > 0 else 1.0
+            top = np.nanmax(lifetime[done])
+            edges = (np.arange(int(round(top / step)) + 2) - 0.5) * step
+            right.hist(lifetime[done], bins=edges, color="C2")
             right.set_yscale("log")
         else:
             message_panel(right, "no ±1/2 track ended inside the run")
-        right.set_xlabel("lifetime of a ±1/2 track (s)")
+        right.set_xlabel("lifetime of a ±1/2 track (s; 0: seen in one frame)")
         right.set_ylabel("tracks")
         right.set_title("Defect lifetimes", fontsize=10)
         fig.suptitle(a.describe(), fontsize=9)
