@@ -51,18 +51,18 @@ def field_panels(a):
     """The maps each figure shows: (dataset name under fields/<kind>/, title, kind of map)."""
     panels = []
     for s in a.species:
-        panels.append((s["name"], "area_fraction", f"area fraction φ ({s['name']})", "phi"))
+        panels.append((s["name"], "area_fraction", f"φ, {s['name']}", "phi"))
     for s in a.polar:
-        panels.append((s["name"], "px", f"polarisation p ({s['name']})", "polar"))
+        panels.append((s["name"], "px", f"polarisation p, {s['name']}", "polar"))
     for s in a.media:
         if s.get("kind") == "apolar_rod":
-            panels.append((s["name"], "qxx", f"nematic order S, director ({s['name']})",
-                           "nematic"))
+            panels.append((s["name"], "qxx", f"S and director, {s['name']}", "nematic"))
     return panels
 
 
 def draw_maps(plt, a, maps, x, y, panels, heading, defects=None):
-    fig, axes = plt.subplots(1, len(panels), figsize=SIZE_WIDE, squeeze=False)
+    fig, axes = plt.subplots(1, len(panels), figsize=SIZE_WIDE, squeeze=False,
+                             constrained_layout=True)
     # Cell centres sit at (i + ½) dx: the cells span 0 to n dx = 2 x[0] n.
     extent = (0.0, 2.0 * x[0] * len(x), 0.0, 2.0 * y[0] * len(y))
     X, Y = np.meshgrid(x, y)
@@ -70,12 +70,12 @@ def draw_maps(plt, a, maps, x, y, panels, heading, defects=None):
         if kind == "phi":
             im = ax.imshow(maps[(species, "area_fraction")], origin="lower", extent=extent,
                            cmap="viridis", vmin=0.0)
-            fig.colorbar(im, ax=ax, shrink=0.8, label="φ")
+            fig.colorbar(im, ax=ax, fraction=0.046, pad=0.02, label="φ")
         elif kind == "polar":
             px, py = maps[(species, "px")], maps[(species, "py")]
             im = ax.imshow(np.hypot(px, py), origin="lower", extent=extent, cmap="magma",
                            vmin=0.0, vmax=1.0)
-            fig.colorbar(im, ax=ax, shrink=0.8, label="|p|")
+            fig.colorbar(im, ax=ax, fraction=0.046, pad=0.02, label="|p|")
             # An arrow of |p| = 1 spans 0.8 of a cell.
             ax.quiver(X, Y, px, py, color="deepskyblue", scale=1.25 / (2.0 * x[0]),
                       scale_units="xy", width=0.005)
@@ -83,7 +83,7 @@ def draw_maps(plt, a, maps, x, y, panels, heading, defects=None):
             qxx, qxy = maps[(species, "qxx")], maps[(species, "qxy")]
             s = np.hypot(qxx, qxy)
             im = ax.imshow(s, origin="lower", extent=extent, cmap="Greys", vmin=0.0, vmax=1.0)
-            fig.colorbar(im, ax=ax, shrink=0.8, label="S")
+            fig.colorbar(im, ax=ax, fraction=0.046, pad=0.02, label="S")
             angle = 0.5 * np.arctan2(qxy, qxx)
             ax.quiver(X, Y, s * np.cos(angle), s * np.sin(angle), color="navy", headwidth=0,
                       headlength=0, headaxislength=0, pivot="middle", width=0.004)
@@ -101,7 +101,8 @@ def draw_maps(plt, a, maps, x, y, panels, heading, defects=None):
                     ax.quiver(defects["x"][plus], defects["y"][plus], np.cos(o), np.sin(o),
                               color="red", width=0.006, zorder=3)
                 if (defects["twice_charge"] != 0).any():
-                    ax.legend(loc="upper right", fontsize=7)
+                    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.3), ncol=2,
+                              fontsize=7)
         ax.set_title(label, fontsize=8)
         ax.set_xlabel("x (mm)")
         ax.set_ylabel("y (mm)")
