@@ -231,6 +231,35 @@ TEST(Campaign, InterruptedAndContinuedWithNothingLostOrRunTwiceThenCollected) {
         EXPECT_GE(std::stod(p.at("P_polar_err")), 0.5 * std::abs(a - b) * (1 - 1e-12)) << name;
     }
 
+    // Collecting again reuses every run's analysis (same trajectory, [analysis] and version):
+    // the same tables to the byte, no analysis rewritten. A run whose analysis.json no longer
+    // matches (here: its key edited) is analysed again, as is every run with --reanalyse.
+    const std::string points_text = read_file(dir / "collected" / "points.csv");
+    const std::string runs_text = read_file(dir / "collected" / "runs.csv");
+    const fs::path some_run = runs / "medium.area_fraction=0.1,gamma=7" / "seed1";
+    const auto written = fs::last_write_time(some_run / "analysis" / "analysis.json");
+    const auto collect_again = [&](std::vector<std::string> extra) {
+        std::vector<std::string> words{"campaign", "collect", file.string(), "--out", dir.string()};
+        words.insert(words.end(), extra.begin(), extra.end());
+        const ChildResult r = run_rodsea(words, scratch.path());
+        EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+        EXPECT_EQ(read_file(dir / "collected" / "points.csv"), points_text);
+        EXPECT_EQ(read_file(dir / "collected" / "runs.csv"), runs_text);
+        return r.out;
+    };
+    EXPECT_NE(collect_again({}).find("(8 unchanged since their analysis)"), std::string::npos);
+    EXPECT_EQ(fs::last_write_time(some_run / "analysis" / "analysis.json"), written);
+    {
+        std::string json = read_file(some_run / "analysis" / "analysis.json");
+        json.replace(json.find("\"cache_key\": \"rodsea"), 20, "\"cache_key\": \"RODSEA");
+        std::ofstream(some_run / "analysis" / "analysis.json") << json;
+    }
+    const std::string stale = collect_again({});
+    EXPECT_NE(stale.find("(7 unchanged since their analysis)"), std::string::npos) << stale;
+    EXPECT_NE(stale.find("analysed medium.area_fraction=0.1,gamma=7/seed1"), std::string::npos);
+    EXPECT_NE(collect_again({"--reanalyse"}).find("(0 unchanged since their analysis)"),
+              std::string::npos);
+
     // The figures: curves and the map from points.csv, each showing the points its `when` picks.
     const fs::path figures = dir / "collected" / "figures";
     EXPECT_NE(collected.out.find("collect: 7 figure files"), std::string::npos) << collected.out;

@@ -10,6 +10,7 @@
 #include "rodsea/analyze/observable.hpp"
 #include "rodsea/config/did_you_mean.hpp"
 #include "rodsea/error.hpp"
+#include "rodsea/number_text.hpp"
 
 namespace rodsea {
 
@@ -267,6 +268,20 @@ AnalysisOptions resolve_analysis_options(AnalysisOptions o, const AnalysisSetup&
                std::floor(setup.box.lx / o.field_cell) * std::floor(setup.box.ly / o.field_cell),
                "the box sides / fields.cell, squared");
     return o;
+}
+
+std::string analysis_options_text(const AnalysisOptions& options) {
+    std::string text;
+    const std::vector<KeySpec>& keys = analysis_option_keys();
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+        const Field& field = kFields[k];
+        const auto* d = std::get_if<double AnalysisOptions::*>(&field);
+        text += keys[k].path() + "=" +
+                (d ? exact_number(options.**d)
+                   : std::to_string(options.*std::get<int AnalysisOptions::*>(field))) +
+                ";";
+    }
+    return text;
 }
 
 std::string analysis_options_reference() {

@@ -53,6 +53,10 @@ void set_analysis_option(AnalysisOptions& options, const std::string& key,
 // the box, bins that fit). Throws InvalidParameter naming the key.
 AnalysisOptions resolve_analysis_options(AnalysisOptions options, const AnalysisSetup& setup);
 
+// Every key with its value ("pair.r_max=22.5;pair.bin=0.25;..."), exact: two option sets give
+// the same text exactly when every value is the same (a cached analysis is reused on it).
+std::string analysis_options_text(const AnalysisOptions& options);
+
 // The key reference as a Markdown table (docs/analysis.md), and as lines for `rodsea analyze
 // --help`.
 std::string analysis_options_reference();

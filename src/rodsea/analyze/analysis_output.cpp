@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -17,6 +18,7 @@
 #include "rodsea/io/atomic_file.hpp"
 #include "rodsea/io/csv_table.hpp"
 #include "rodsea/number_text.hpp"
+#include "rodsea/text_file.hpp"
 
 namespace rodsea {
 
@@ -163,7 +165,8 @@ void write_analysis_files(const RunAnalysis& a, const fs::path& out_dir) {
                std::to_string(a.run.setup.blocks) + " time blocks"}}},
         {"observables", observables},
         {"skipped", a.run.skipped},
-        {"seconds", a.seconds}};
+        {"seconds", a.seconds},
+        {"cache_key", a.run.cache_key}};
     write_hdf5(a, out_dir / "analysis.h5");
     write_file_atomically(out_dir / "summary.csv", summary_table_csv({a}));
     // Paths are bytes: one that is not UTF-8 is written with replacement characters.
@@ -172,6 +175,49 @@ void write_analysis_files(const RunAnalysis& a, const fs::path& out_dir) {
 }
 
 }  // namespace
+
+std::optional<RunAnalysis> reuse_run_analysis(const PreparedRun& run, const fs::path& out_dir) {
+    if (run.cache_key.empty()) return std::nullopt;
+    std::string text;
+    try {
+        text = read_text_file(out_dir / "analysis.json");
+    } catch (const FileError&) {
+        return std::nullopt;
+    }
+    const Json j = Json::parse(text, nullptr, false);
+    if (j.is_discarded() || !j.is_object() || j.value("cache_key", "") != run.cache_key)
+        return std::nullopt;
+    // JSON has no NaN: nlohmann wrote it as null.
+    const auto number = [](const Json& v) {
+        return v.is_number() ? v.get<double>() : std::numeric_limits<double>::quiet_NaN();
+    };
+    RunAnalysis a;
+    a.run = run;
+    try {
+        for (const std::string& name : run.observables) {
+            const Json& o = j.at("observables").at(name);
+            ObservableResults r;
+            r.observable = name;
+            r.frames = o.value("frames", std::size_t{0});
+            for (const auto& [key, s] : o.at("scalars").items()) {
+                ScalarResult result{key, s.value("unit", ""), s.value("description", ""), {}};
+                Estimate& e = result.estimate;
+                e.mean = number(s.at("value"));
+                e.error = number(s.at("error"));
+                e.tau_int = number(s.at("tau_int_samples"));
+                e.n_eff = number(s.at("n_eff"));
+                e.samples = s.at("samples").get<std::size_t>();
+                e.from_blocks = s.at("error_method").get<std::string>() == "time blocks";
+                r.scalars.push_back(std::move(result));
+            }
+            a.results.push_back(std::move(r));
+        }
+    } catch (const Json::exception&) {
+        return std::nullopt;  // not what write_run_analysis writes: analyse again
+    }
+    a.seconds = number(j.value("seconds", Json()));
+    return a;
+}
 
 void check_analysis_output_directory(const fs::path& out_dir) {
     std::error_code ec;

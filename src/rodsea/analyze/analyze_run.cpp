@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <ostream>
+#include <sstream>
 
 #include "rodsea/analyze/fields_observable.hpp"
 #include "rodsea/analyze/frame_context.hpp"
@@ -12,7 +13,9 @@
 #include "rodsea/cli/progress.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/stored_run.hpp"
+#include "rodsea/io/trajectory_file.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
+#include "rodsea/number_text.hpp"
 
 namespace rodsea {
 
@@ -106,6 +109,18 @@ PreparedRun prepare_run(const fs::path& run, const AnalyzeRequest& request) {
     p.observables = select_observables(request.observables, p.setup, &p.skipped);
     if (std::find(p.observables.begin(), p.observables.end(), "fields") != p.observables.end())
         check_field_series_memory(p.setup, p.options);
+    const std::string run_id = read_run_id(p.trajectory);
+    if (!run_id.empty()) {
+        // (A stream, not string +: GCC 12 warns falsely on the concatenation, -Werror=restrict.)
+        std::ostringstream key;
+        key << "rodsea " << RODSEA_VERSION << "|run " << run_id << "|frames " << frames
+            << "|last step " << reader.steps()[frames - 1] << "|window "
+            << (w.automatic ? std::string("automatic") : exact_number(w.from)) << "|observables";
+        for (const std::string& o : p.observables)
+            key << " " << o;
+        key << "|" << analysis_options_text(p.options);
+        p.cache_key = key.str();
+    }
     return p;
 }
 

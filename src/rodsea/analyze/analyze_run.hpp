@@ -38,6 +38,10 @@ struct PreparedRun {
     SteadyWindow window;
     std::vector<double> times;  // s, every frame
     std::vector<std::string> observables, skipped;
+    // What the analysis depends on: the trajectory (its run id, frames and last step), the
+    // observables, the window and every option, and rodsea's version. Equal keys give equal
+    // analyses; empty for a trajectory without a run id (written before rodsea kept one).
+    std::string cache_key;
 };
 
 struct RunAnalysis {
@@ -61,6 +65,12 @@ void check_analysis_output_directory(const std::filesystem::path& out_dir);
 // written into a staging directory and swapped in whole. Returns the files.
 std::vector<std::filesystem::path> write_run_analysis(const RunAnalysis& analysis,
                                                       const std::filesystem::path& out_dir);
+
+// The analysis already in `out_dir` when its analysis.json records this run's cache_key (the
+// same trajectory, observables, window, options and version): the run with the scalars read
+// back (tables and maps stay on disk). None when there is none, it differs or cannot be read.
+std::optional<RunAnalysis> reuse_run_analysis(const PreparedRun& run,
+                                              const std::filesystem::path& out_dir);
 
 // Runs that differ only in their seed are replicates of one state point: each scalar's mean over
 // them with the error from their spread, and chi²/dof of that spread against the runs' own

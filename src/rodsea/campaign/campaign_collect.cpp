@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
 #include <ostream>
 #include <sstream>
 
@@ -34,7 +35,8 @@ std::string cell(double v) {
 }  // namespace
 
 CollectResult collect_campaign(const CampaignPaths& paths, const Campaign& campaign,
-                               const CampaignGrid& grid, std::ostream& log, bool quiet) {
+                               const CampaignGrid& grid, std::ostream& log, bool quiet,
+                               bool reanalyse) {
     CollectResult result;
     const AnalyzeRequest request = request_of(campaign.analysis);
     // Every finished run is prepared (and so checked) before any is analysed.
@@ -53,9 +55,18 @@ CollectResult collect_campaign(const CampaignPaths& paths, const Campaign& campa
     std::map<std::size_t, std::vector<const RunAnalysis*>> by_point;
     analyses.reserve(prepared.size());
     for (std::size_t k = 0; k < prepared.size(); ++k) {
+        const fs::path out_dir = prepared[k].run_dir / "analysis";
+        const std::string& id = grid.runs[prepared_run[k]].id;
+        if (!reanalyse)
+            if (std::optional<RunAnalysis> earlier = reuse_run_analysis(prepared[k], out_dir)) {
+                analyses.push_back(std::move(*earlier));
+                ++result.runs_reused;
+                if (!quiet) log << "collect: " << id << " unchanged since its analysis\n";
+                continue;
+            }
         analyses.push_back(analyze_run(prepared[k], log, true));
-        write_run_analysis(analyses.back(), prepared[k].run_dir / "analysis");
-        if (!quiet) log << "collect: analysed " << grid.runs[prepared_run[k]].id << "\n";
+        write_run_analysis(analyses.back(), out_dir);
+        if (!quiet) log << "collect: analysed " << id << "\n";
     }
     for (std::size_t k = 0; k < analyses.size(); ++k)
         by_point[grid.runs[prepared_run[k]].point].push_back(&analyses[k]);
@@ -82,8 +93,10 @@ CollectResult collect_campaign(const CampaignPaths& paths, const Campaign& campa
         const ReplicateSummary summary = summarise_replicates(runs);
         table.set(row, "runs", std::to_string(runs.size()));
         std::string seeds;
-        for (const std::uint64_t seed : summary.seeds)
-            seeds += (seeds.empty() ? "" : " ") + std::to_string(seed);
+        for (const std::uint64_t seed : summary.seeds) {
+            if (!seeds.empty()) seeds += ' ';  // (not ("" : " ") + ...: GCC 12 -Wrestrict)
+            seeds += std::to_string(seed);
+        }
         table.set(row, "seeds", seeds);
         for (const ReplicateScalar& s : summary.scalars) {
             const ReplicateEstimate& e = s.estimate;

@@ -1,7 +1,8 @@
 #pragma once
 // `rodsea campaign collect`: every finished run analysed with the campaign's [analysis], then one
 // table with a row per point (replicates combined) and one with a row per run. A partial
-// campaign collects what is finished and names what is missing.
+// campaign collects what is finished and names what is missing. A run whose analysis is already
+// on disk for the same trajectory, [analysis] and rodsea version is not analysed again.
 #include <filesystem>
 #include <iosfwd>
 #include <vector>
@@ -13,6 +14,7 @@ namespace rodsea {
 struct CollectResult {
     std::filesystem::path points_table, runs_table;
     std::size_t runs_analysed = 0, points_with_runs = 0;
+    std::size_t runs_reused = 0;       // of runs_analysed, taken from their earlier analysis
     std::vector<std::string> missing;  // run ids not finished
 };
 
@@ -20,7 +22,9 @@ struct CollectResult {
 // mean over its finished replicates; its error is the larger of the replicates' spread, sd/√n,
 // and their own errors combined, √(Σσ_i²)/n: with few replicates the spread is itself uncertain
 // (for n = 2 by ±70 %), and a run's own error is a floor. <name>_chi2 compares the two.
+// `reanalyse`: analyse every run again, even one whose analysis is up to date.
 CollectResult collect_campaign(const CampaignPaths& paths, const Campaign& campaign,
-                               const CampaignGrid& grid, std::ostream& log, bool quiet);
+                               const CampaignGrid& grid, std::ostream& log, bool quiet,
+                               bool reanalyse = false);
 
 }  // namespace rodsea

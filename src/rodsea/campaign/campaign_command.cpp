@@ -77,7 +77,10 @@ const CommandSpec& campaign_command_spec() {
           "(default 0.3)"},
          {"--no-measure", "", "plan: skip the measurement (no core-hours)"},
          {"--reference", "", "print the campaign file's key reference (Markdown) and exit"},
-         {"--quiet", "", "run, collect: no progress lines"}},
+         {"--quiet", "", "run, collect: no progress lines"},
+         {"--reanalyse", "",
+          "collect: analyse every finished run again (by default a run whose analysis is on "
+          "disk for the same trajectory, [analysis] and rodsea version is reused)"}},
         "Files: DIR/campaign.toml, scaling.txt, runs/<point>/seed<k>.toml (config), "
         "runs/<point>/seed<k>/ (the run), .log, .failed, collected/. Exit codes: 0 done; 1 some "
         "run failed; 2 bad campaign or options (nothing run); 74 file error; 130/143 stopped by "
@@ -238,9 +241,11 @@ int status(const Arguments& a, std::ostream& out) {
 int collect(const Arguments& a, std::ostream& out) {
     const Loaded l = load(a);
     check_campaign_dir(l.paths, l.scaling);
-    const CollectResult r = collect_campaign(l.paths, l.campaign, l.grid, out, a.has("--quiet"));
-    out << "collect: " << r.runs_analysed << " runs of " << r.points_with_runs << " points -> "
-        << r.points_table.string() << ", " << r.runs_table.string() << "\n";
+    const CollectResult r =
+        collect_campaign(l.paths, l.campaign, l.grid, out, a.has("--quiet"), a.has("--reanalyse"));
+    out << "collect: " << r.runs_analysed << " runs of " << r.points_with_runs << " points ("
+        << r.runs_reused << " unchanged since their analysis) -> " << r.points_table.string()
+        << ", " << r.runs_table.string() << "\n";
     if (!r.missing.empty()) {
         out << "collect: " << r.missing.size() << " runs not finished (rodsea campaign run "
             << "continues them):";
@@ -268,7 +273,7 @@ void check_options_of(const std::string& sub, const Arguments& a) {
         {"plan", {"--jobs", "--threads", "--measure-seconds", "--no-measure"}},
         {"run", {"--jobs", "--threads", "--retry-failed", "--quiet", "--tasks", "--task"}},
         {"status", {}},
-        {"collect", {"--quiet"}},
+        {"collect", {"--quiet", "--reanalyse"}},
         {"submit",
          {"--jobs", "--partition", "--account", "--time", "--signal-seconds", "--cpus-per-task",
           "--gpus-per-task", "--throttle", "--pack", "--resubmit", "--retry-failed", "--dry-run"}}};
