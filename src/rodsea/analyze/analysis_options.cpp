@@ -197,16 +197,12 @@ void set_analysis_option(AnalysisOptions& options, const std::string& key,
             static_cast<int>(std::get<std::int64_t>(v));
 }
 
-AnalysisOptions resolve_analysis_options(AnalysisOptions o, const AnalysisSetup& setup) {
+AnalysisOptions automatic_analysis_options(AnalysisOptions o, const AnalysisSetup& setup) {
     const double half = 0.5 * std::min(setup.box.lx, setup.box.ly);
     const double lp = setup.polar_length() > 0.0 ? setup.polar_length() : 4.5;
     const auto pick = [](double& v, double automatic) {
         if (std::isnan(v)) v = automatic;
     };
-    if (!std::isnan(o.autocorrelation_max_lag) && o.autocorrelation_max_lag < setup.frame_interval)
-        throw InvalidParameter(
-            "autocorrelation.max_lag", format_number(o.autocorrelation_max_lag) + " s",
-            "at least one frame interval, " + format_number(setup.frame_interval) + " s");
     pick(o.pair_r_max, std::min(half, 10.0 * lp));
     pick(o.medium_pair_r_max, std::min(half, 15.0));
     pick(o.corotating_r_max, std::min(half, 5.0 * lp));
@@ -218,6 +214,16 @@ AnalysisOptions resolve_analysis_options(AnalysisOptions o, const AnalysisSetup&
     pick(o.field_cell, lp);
     pick(o.defect_link, o.field_cell);
     pick(o.defect_pair, 2.0 * o.field_cell);
+    return o;
+}
+
+AnalysisOptions resolve_analysis_options(AnalysisOptions o, const AnalysisSetup& setup) {
+    const double half = 0.5 * std::min(setup.box.lx, setup.box.ly);
+    if (!std::isnan(o.autocorrelation_max_lag) && o.autocorrelation_max_lag < setup.frame_interval)
+        throw InvalidParameter(
+            "autocorrelation.max_lag", format_number(o.autocorrelation_max_lag) + " s",
+            "at least one frame interval, " + format_number(setup.frame_interval) + " s");
+    o = automatic_analysis_options(o, setup);
     const std::string half_text = "(0, L/2 = " + format_number(half) + "] mm";
     for (const auto& [key, value] : {std::pair{"pair.r_max", o.pair_r_max},
                                      {"pair.medium_r_max", o.medium_pair_r_max},

@@ -49,6 +49,9 @@ const std::vector<config::KeySpec>& analysis_option_keys();
 void set_analysis_option(AnalysisOptions& options, const std::string& key,
                          const std::string& value);
 
+// Fills the automatic values for this run, unchecked (what a picture takes as its defaults).
+AnalysisOptions automatic_analysis_options(AnalysisOptions options, const AnalysisSetup& setup);
+
 // Fills the automatic values for this run and checks the whole set against it (radii up to half
 // the box, bins that fit). Throws InvalidParameter naming the key.
 AnalysisOptions resolve_analysis_options(AnalysisOptions options, const AnalysisSetup& setup);

@@ -26,8 +26,8 @@ OverlayBuilder::OverlayBuilder(const RunPlan& plan, const OverlayOptions& option
     if (options.flock_tracks && polar_length_ == 0.0)
         throw InvalidParameter("--overlay", "flock-tracks", "defects or director",
                                "the run has no polar rods");
-    // The analysis' defaults (fields.cell, flocks.eps, flocks.min_samples), resolved for this run.
-    const AnalysisOptions defaults = resolve_analysis_options({}, analysis_setup(plan));
+    // The analysis' defaults for this run (fields.cell, flocks.eps, flocks.min_samples).
+    const AnalysisOptions defaults = automatic_analysis_options({}, analysis_setup(plan));
     cell_ = options.cell.value_or(defaults.field_cell);
     const double half = 0.5 * std::min(box_.lx, box_.ly);
     if (!(cell_ > 0.0 && cell_ <= half))
