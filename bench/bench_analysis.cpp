@@ -27,6 +27,21 @@ namespace {
 
 using namespace rodsea;
 
+// The analysis' view of a 252 mm system: its species with their counts and area fractions, a
+// frame every 0.05 s, 1000 steady frames.
+AnalysisSetup setup_of(const EngineParameters& params, const std::vector<long long>& counts) {
+    AnalysisSetup setup;
+    setup.box = {252.0, 252.0};
+    for (std::size_t s = 0; s < counts.size(); ++s)
+        setup.species.push_back({params.species[s].name, params.species[s].kind,
+                                 params.species[s].shape.extent, counts[s],
+                                 static_cast<double>(counts[s]) *
+                                     params.species[s].shape.projected_area / (252.0 * 252.0)});
+    setup.frame_interval = 0.05;
+    setup.steady_frames = 1000;
+    return setup;
+}
+
 struct LargestSystem {
     EngineParameters params;
     BodyState bodies;
@@ -48,14 +63,7 @@ struct LargestSystem {
         for (Vec3& v : bodies.velocity)  // granular-gas-like in-plane velocities, mm/s
             v = {rng.uniform(-20, 20), rng.uniform(-20, 20), 0.0};
         frame = make_analysis_frame(bodies, {252.0, 252.0}, 0, 0.0, 0);
-        setup.box = {252.0, 252.0};
-        for (std::size_t s = 0; s < 2; ++s)
-            setup.species.push_back({params.species[s].name, params.species[s].kind,
-                                     params.species[s].shape.extent, counts[s],
-                                     static_cast<double>(counts[s]) *
-                                         params.species[s].shape.projected_area / (252.0 * 252.0)});
-        setup.frame_interval = 0.05;
-        setup.steady_frames = 1000;
+        setup = setup_of(params, counts);
         options = resolve_analysis_options({}, setup);
         trajectory = std::filesystem::temp_directory_path() / "rodsea-bench-analysis.h5";
         TrajectoryFile file = TrajectoryFile::create(trajectory, params, bodies.species, "", {});
@@ -197,14 +205,7 @@ struct RodSystem {
             frame.velocity[b] = {rng.uniform(-20, 20), rng.uniform(-20, 20), 0.0};
             if (frame.species[b] == 1) frame.theta[b] = rng.uniform(-3.14159, 3.14159);
         }
-        setup.box = {252.0, 252.0};
-        for (std::size_t s = 0; s < 2; ++s)
-            setup.species.push_back({params.species[s].name, params.species[s].kind,
-                                     params.species[s].shape.extent, counts[s],
-                                     static_cast<double>(counts[s]) *
-                                         params.species[s].shape.projected_area / (252.0 * 252.0)});
-        setup.frame_interval = 0.05;
-        setup.steady_frames = 1000;
+        setup = setup_of(params, counts);
         options = resolve_analysis_options({}, setup);
     }
 };
