@@ -104,8 +104,9 @@ def draw_fig1c_series(plt):
     for relative in series_files():
         t = read_csv(relative)
         mid = 0.5 * (column(t, "t_from", relative) + column(t, "t_to", relative))
-        label = os.path.basename(relative)[:-len(".series.csv")].replace(
-            "medium.area_fraction=", "φ_a = ")
+        # "medium.area_fraction=0.05_extended_to_180_s" → "φ_a = 0.05 extended to 180 s"
+        name = os.path.basename(relative)[:-len(".series.csv")]
+        label = "φ_a = " + name.replace("medium.area_fraction=", "", 1).replace("_", " ")
         p, n_m = column(t, "P_polar", relative), column(t, "N_m", relative)
         top.plot(mid, p, lw=1.3, label=label)
         bottom.plot(mid, n_m, lw=1.3, label=label)
@@ -115,7 +116,7 @@ def draw_fig1c_series(plt):
     bottom.set_ylabel("N_m (1 s means)")
     bottom.set_xlabel("t (s)")
     top.legend(loc="best", fontsize=8)
-    top.set_title("Transients of the 60 s runs (63 mm box, φ_p = 0.05, D_r = 0)", fontsize=10)
+    top.set_title("Transients of the long runs (63 mm box, φ_p = 0.05, D_r = 0)", fontsize=10)
     fig.tight_layout()
     return fig, dump
 
