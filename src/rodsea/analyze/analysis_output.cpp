@@ -185,7 +185,8 @@ std::optional<RunAnalysis> reuse_run_analysis(const PreparedRun& run, const fs::
         return std::nullopt;
     }
     const Json j = Json::parse(text, nullptr, false);
-    if (j.is_discarded() || !j.is_object() || j.value("cache_key", "") != run.cache_key)
+    if (j.is_discarded() || !j.is_object() || !j.contains("cache_key") ||
+        !j["cache_key"].is_string() || j["cache_key"].get<std::string>() != run.cache_key)
         return std::nullopt;
     // JSON has no NaN: nlohmann wrote it as null.
     const auto number = [](const Json& v) {
