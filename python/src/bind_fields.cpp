@@ -211,32 +211,23 @@ void bind_fields(py::module_& m) {
             [](const FlockTracker& self) {
                 py::list out;
                 for (const FlockTrack& t : self.tracks()) {
-                    std::vector<double> time, size, x, y, vx, vy, order, heading, leader;
-                    for (const FlockState& s : t.states) {
-                        time.push_back(s.time);
-                        size.push_back(static_cast<double>(s.size));
-                        x.push_back(s.centre.x);
-                        y.push_back(s.centre.y);
-                        vx.push_back(s.velocity.x);
-                        vy.push_back(s.velocity.y);
-                        order.push_back(s.polar_order);
-                        heading.push_back(s.heading);
-                        leader.push_back(static_cast<double>(s.leader));
-                    }
+                    FlockStateColumns c;
+                    c.append(t);
+                    std::vector<double> leader(c.leader.begin(), c.leader.end());
                     py::dict d;
                     d["id"] = t.id;
                     d["born"] = t.born;
                     d["ended"] =
                         t.ended >= 0.0 ? t.ended : std::numeric_limits<double>::quiet_NaN();
                     d["lifetime"] = t.lifetime();
-                    for (const auto& [name, v] : {std::pair{"time", &time},
-                                                  {"size", &size},
-                                                  {"x", &x},
-                                                  {"y", &y},
-                                                  {"vx", &vx},
-                                                  {"vy", &vy},
-                                                  {"polar_order", &order},
-                                                  {"heading", &heading},
+                    for (const auto& [name, v] : {std::pair{"time", &c.time},
+                                                  {"size", &c.size},
+                                                  {"x", &c.x},
+                                                  {"y", &c.y},
+                                                  {"vx", &c.vx},
+                                                  {"vy", &c.vy},
+                                                  {"polar_order", &c.polar_order},
+                                                  {"heading", &c.heading},
                                                   {"leader", &leader}})
                         d[name] = array(*v);
                     d["leaders"] = t.leaders;

@@ -60,6 +60,21 @@ std::vector<FlockSummary> summarise_flocks(std::span<const int> labels,
     return flocks;
 }
 
+void FlockStateColumns::append(const FlockTrack& t) {
+    for (const FlockState& s : t.states) {
+        track.push_back(t.id);
+        time.push_back(s.time);
+        size.push_back(static_cast<double>(s.size));
+        x.push_back(s.centre.x);
+        y.push_back(s.centre.y);
+        vx.push_back(s.velocity.x);
+        vy.push_back(s.velocity.y);
+        polar_order.push_back(s.polar_order);
+        heading.push_back(s.heading);
+        leader.push_back(s.leader);
+    }
+}
+
 const char* to_string(FlockEvent::Kind kind) {
     switch (kind) {
         case FlockEvent::Kind::birth:

@@ -55,6 +55,14 @@ struct FlockTrack {
     double lifetime() const { return (ended >= 0.0 ? ended : states.back().time) - born; }
 };
 
+// Tracks' states as columns, one entry per track and frame, in the order appended.
+struct FlockStateColumns {
+    std::vector<int> track;
+    std::vector<double> time, size, x, y, vx, vy, polar_order, heading;
+    std::vector<std::uint32_t> leader;  // index among the rods given to the tracker
+    void append(const FlockTrack& t);
+};
+
 struct FlockEvent {
     enum class Kind { birth, death, merge, split };
     Kind kind;

@@ -8,6 +8,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
@@ -188,9 +189,12 @@ std::optional<RunAnalysis> reuse_run_analysis(const PreparedRun& run, const fs::
     if (j.is_discarded() || !j.is_object() || !j.contains("cache_key") ||
         !j["cache_key"].is_string() || j["cache_key"].get<std::string>() != run.cache_key)
         return std::nullopt;
-    // JSON has no NaN: nlohmann wrote it as null.
+    // JSON has no NaN: nlohmann wrote it as null. Anything else is not what write_run_analysis
+    // wrote: the run is analysed again.
     const auto number = [](const Json& v) {
-        return v.is_number() ? v.get<double>() : std::numeric_limits<double>::quiet_NaN();
+        if (v.is_null()) return std::numeric_limits<double>::quiet_NaN();
+        if (!v.is_number()) throw std::invalid_argument("not a number");
+        return v.get<double>();
     };
     RunAnalysis a;
     a.run = run;
@@ -215,8 +219,11 @@ std::optional<RunAnalysis> reuse_run_analysis(const PreparedRun& run, const fs::
         }
     } catch (const Json::exception&) {
         return std::nullopt;  // not what write_run_analysis writes: analyse again
+    } catch (const std::invalid_argument&) {
+        return std::nullopt;
     }
-    a.seconds = number(j.value("seconds", Json()));
+    a.seconds =
+        j.contains("seconds") && j["seconds"].is_number() ? j["seconds"].get<double>() : 0.0;
     return a;
 }
 

@@ -21,9 +21,9 @@ void add_flock_track_results(const FlockTracker& tracker, const std::vector<std:
         {"", "s", "s", "s", "s", "", "", "", "mm/s", "", "", "s"},
         {}};
     std::vector<double> lifetimes, tenures;
-    std::vector<std::int32_t> id, size, leader;
-    std::vector<double> t, x, y, vx, vy, order, heading;
+    FlockStateColumns states;
     for (const FlockTrack& track : tracker.tracks()) {
+        states.append(track);
         double sizes = 0.0, largest = 0.0, speed = 0.0, polar = 0.0;
         int moving = 0;
         for (const FlockState& s : track.states) {
@@ -34,16 +34,6 @@ void add_flock_track_results(const FlockTracker& tracker, const std::vector<std:
                 speed += std::hypot(s.velocity.x, s.velocity.y);
                 ++moving;
             }
-            id.push_back(track.id);
-            size.push_back(static_cast<std::int32_t>(s.size));
-            leader.push_back(static_cast<std::int32_t>(bodies[s.leader]));
-            t.push_back(s.time);
-            x.push_back(s.centre.x);
-            y.push_back(s.centre.y);
-            vx.push_back(s.velocity.x);
-            vy.push_back(s.velocity.y);
-            order.push_back(s.polar_order);
-            heading.push_back(s.heading);
         }
         const auto frames = static_cast<double>(track.states.size());
         int longest = 0;
@@ -97,24 +87,33 @@ void add_flock_track_results(const FlockTracker& tracker, const std::vector<std:
                          "mean time a rod stays its flock's leader (flocks born and ended in the "
                          "steady window)",
                          estimate_mean(tenures)});
-    const auto n = static_cast<std::uint64_t>(t.size());
+    // Track ids, sizes and leaders as integers; leaders by their body index in the trajectory.
+    std::vector<std::int32_t> id(states.track.begin(), states.track.end()), size, leader;
+    for (std::size_t k = 0; k < states.time.size(); ++k) {
+        size.push_back(static_cast<std::int32_t>(states.size[k]));
+        leader.push_back(static_cast<std::int32_t>(bodies[states.leader[k]]));
+    }
+    const auto n = static_cast<std::uint64_t>(states.time.size());
     r.datasets.push_back(
         {"flock_tracks/track", "track of each state (flock_tracks.csv)", "", {n}, id});
-    r.datasets.push_back({"flock_tracks/time", "time", "s", {n}, t});
+    r.datasets.push_back({"flock_tracks/time", "time", "s", {n}, states.time});
     r.datasets.push_back({"flock_tracks/size", "polar rods in the flock", "", {n}, size});
-    r.datasets.push_back({"flock_tracks/x", "centre, x (periodic mean)", "mm", {n}, x});
-    r.datasets.push_back({"flock_tracks/y", "centre, y", "mm", {n}, y});
+    r.datasets.push_back({"flock_tracks/x", "centre, x (periodic mean)", "mm", {n}, states.x});
+    r.datasets.push_back({"flock_tracks/y", "centre, y", "mm", {n}, states.y});
     r.datasets.push_back({"flock_tracks/vx",
                           "velocity of the centre over the last frame interval, x (NaN in a "
                           "track's first frame)",
                           "mm/s",
                           {n},
-                          vx});
-    r.datasets.push_back({"flock_tracks/vy", "velocity of the centre, y", "mm/s", {n}, vy});
+                          states.vx});
+    r.datasets.push_back({"flock_tracks/vy", "velocity of the centre, y", "mm/s", {n}, states.vy});
+    r.datasets.push_back({"flock_tracks/polar_order",
+                          "polar order of the flock's rods",
+                          "",
+                          {n},
+                          states.polar_order});
     r.datasets.push_back(
-        {"flock_tracks/polar_order", "polar order of the flock's rods", "", {n}, order});
-    r.datasets.push_back(
-        {"flock_tracks/heading", "mean direction of the flock's rods", "rad", {n}, heading});
+        {"flock_tracks/heading", "mean direction of the flock's rods", "rad", {n}, states.heading});
     r.datasets.push_back({"flock_tracks/leader",
                           "the leading rod (furthest ahead along the motion), body index in the "
                           "trajectory",
