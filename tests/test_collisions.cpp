@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "each_backend.hpp"
 #include "rodsea/engine/cpu/free_flight.hpp"
 #include "rodsea/random.hpp"
 #include "rodsea/scenes/scenes.hpp"
@@ -19,7 +20,9 @@ using testing::BodySpec;
 using testing::normal_relative_velocity;
 using testing::two_body_simulation;
 
-const Vec3 kCentre{20.0, 20.0, 10.0};  // middle of the box and of the 20 mm gap
+const Vec3 kCentre{20.0, 20.0, 10.0};
+
+class TwoBodyCollision : public testing::EachBackend {};  // middle of the box and of the 20 mm gap
 
 struct Outcome {
     size_t contacts = 0;
@@ -29,8 +32,8 @@ struct Outcome {
 
 // One step; checks the conservation laws and returns what happened.
 Outcome collide(const Species& a, const Species& b, const BodySpec& sa, const BodySpec& sb,
-                ContactCoefficients coefficients) {
-    Simulation sim = two_body_simulation(a, b, sa, sb, coefficients);
+                ContactCoefficients coefficients, const BackendOptions& options) {
+    Simulation sim = two_body_simulation(a, b, sa, sb, coefficients, options);
     const Vec3 fixed_point{3.0, -7.0, 1.0};
     const Vec3 p0 = sim.linear_momentum(), l0 = sim.angular_momentum(fixed_point);
     const double e0 = sim.kinetic_energy();
@@ -75,22 +78,23 @@ double deepest_overlap(const Shape& a, const Vec3& xa, const Quat& qa, const Sha
     return deepest;
 }
 
-TEST(TwoBodyCollision, HeadOnSpheresFrictionless) {
+TEST_P(TwoBodyCollision, HeadOnSpheresFrictionless) {
     const Species bead = bead_species();
     const double gap = 0.8 - 1e-4;  // centres: overlapping by 0.1 µm
-    const Outcome o = collide(bead, bead, {kCentre, {}, {30, 0, 0}, {}},
-                              {kCentre + Vec3{gap, 0, 0}, {}, {-10, 0, 0}, {}}, {0.0, 0.3});
+    const Outcome o =
+        collide(bead, bead, {kCentre, {}, {30, 0, 0}, {}},
+                {kCentre + Vec3{gap, 0, 0}, {}, {-10, 0, 0}, {}}, {0.0, 0.3}, options());
     ASSERT_EQ(o.contacts, 1u);
     EXPECT_NEAR(o.un_before, -40.0, 1e-6);
     EXPECT_NEAR(o.un_after / o.un_before, -0.3, 1e-12);
 }
 
-TEST(TwoBodyCollision, ObliqueSpinningSpheresWithFriction) {
+TEST_P(TwoBodyCollision, ObliqueSpinningSpheresWithFriction) {
     const Species bead = bead_species();
     const Vec3 n = normalized(Vec3{1.0, 0.6, 0.3});
     const Outcome o =
         collide(bead, bead, {kCentre, {}, {30, 5, -3}, {40, -10, 25}},
-                {kCentre + (0.8 - 1e-4) * n, {}, {-10, 2, 4}, {-5, 60, 0}}, {0.05, 0.3});
+                {kCentre + (0.8 - 1e-4) * n, {}, {-10, 2, 4}, {-5, 60, 0}}, {0.05, 0.3}, options());
     ASSERT_EQ(o.contacts, 1u);
     EXPECT_EQ(o.impulses, 1u);
     // With friction the normal ratio is still e when the contact sticks; in the slide it is
@@ -98,19 +102,19 @@ TEST(TwoBodyCollision, ObliqueSpinningSpheresWithFriction) {
     EXPECT_NEAR(o.un_after / o.un_before, -0.3, 1e-9);
 }
 
-TEST(TwoBodyCollision, HeadOnRodsEndToEndFrictionless) {
+TEST_P(TwoBodyCollision, HeadOnRodsEndToEndFrictionless) {
     const Species rod = apolar_rod_species(2.5);
     const Quat along_x = flat_orientation(0.0);
     // End spheres (radius 0.2 mm, centres 1.05 mm from the centre) overlap by 0.1 µm.
     const double separation = 2 * 1.05 + 0.4 - 1e-4;
-    const Outcome o =
-        collide(rod, rod, {kCentre, along_x, {25, 0, 0}, {}},
-                {kCentre + Vec3{separation, 0, 0}, along_x, {-25, 0, 0}, {}}, {0.0, 0.3});
+    const Outcome o = collide(rod, rod, {kCentre, along_x, {25, 0, 0}, {}},
+                              {kCentre + Vec3{separation, 0, 0}, along_x, {-25, 0, 0}, {}},
+                              {0.0, 0.3}, options());
     ASSERT_EQ(o.contacts, 1u);
     EXPECT_NEAR(o.un_after / o.un_before, -0.3, 1e-12);
 }
 
-TEST(TwoBodyCollision, ObliqueRodsWithFriction) {
+TEST_P(TwoBodyCollision, ObliqueRodsWithFriction) {
     const Species polar = polar_rod_species();
     const Species apolar = apolar_rod_species(4.5);
     // The polar rod's thin end (+x) meets the side of a tilted apolar rod crossing in front.
@@ -123,7 +127,7 @@ TEST(TwoBodyCollision, ObliqueRodsWithFriction) {
     const double reach = sa.radii.back() + 0.4 - 1e-4;  // apolar centre sphere radius 0.4 mm
     const Vec3 xb = tip + reach * n;  // apolar rod's centre sphere is at its centre of mass
     const Outcome o = collide(polar, apolar, {kCentre, qa, 40.0 * n, {0, 0, 5}},
-                              {xb, qb, {0, -3, 1}, {2, 0, -8}}, {0.05, 0.3});
+                              {xb, qb, {0, -3, 1}, {2, 0, -8}}, {0.05, 0.3}, options());
     EXPECT_GE(o.contacts, 1u);
     EXPECT_GE(o.impulses, 1u);
 }
@@ -131,7 +135,7 @@ TEST(TwoBodyCollision, ObliqueRodsWithFriction) {
 // Random rod pairs in random 3D orientations, touching at one sphere pair, with random
 // velocities and spins: the conservation laws hold in every trial (checked inside collide),
 // and the frictionless single-contact trials reverse the normal velocity by e.
-TEST(TwoBodyCollision, RandomRodPairsConserveMomentumAndNeverGainEnergy) {
+TEST_P(TwoBodyCollision, RandomRodPairsConserveMomentumAndNeverGainEnergy) {
     SplitMix64 rng(2024);
     const Species rods[] = {polar_rod_species(), apolar_rod_species(2.5), apolar_rod_species(1.0),
                             bead_species()};
@@ -164,7 +168,7 @@ TEST(TwoBodyCollision, RandomRodPairsConserveMomentumAndNeverGainEnergy) {
         const Vec3 wb{rng.uniform(-50, 50), rng.uniform(-50, 50), rng.uniform(-50, 50)};
         const ContactCoefficients k =
             trial % 2 ? ContactCoefficients{0.0, 0.3} : ContactCoefficients{0.05, 0.3};
-        const Outcome o = collide(a, b, {kCentre, qa, va, wa}, {xb, qb, vb, wb}, k);
+        const Outcome o = collide(a, b, {kCentre, qa, va, wa}, {xb, qb, vb, wb}, k, options());
         if (o.impulses > 0) ++with_impulse;
         if (k.friction == 0.0 && o.contacts == 1 && o.impulses == 1) {
             ++single_frictionless;
@@ -175,11 +179,15 @@ TEST(TwoBodyCollision, RandomRodPairsConserveMomentumAndNeverGainEnergy) {
     EXPECT_GT(single_frictionless, trials / 10);
 }
 
+RODSEA_ON_EACH_BACKEND(TwoBodyCollision);
+
 }  // namespace
 }  // namespace rodsea
 
 namespace rodsea {
 namespace {
+
+class CollisionCount : public testing::EachBackend {};
 
 // A bead dropped 0.5 mm onto a still base hits it at v₀ = √(2gh) = 99.0 mm/s and bounces with
 // e = 0.3: 99.0, 29.7, 8.9, 2.7, then 0.80 mm/s and less, until it lies on the base and gets an
@@ -187,8 +195,8 @@ namespace {
 // kCollisionSpeed = 1 mm/s) is the 4 bounces faster than that, at any dt (the next, 0.80 mm/s,
 // is 20 % below the threshold, far more than the g·dt ≤ 0.04 mm/s that stepping adds), while
 // the impulses of the resting steps grow as 1/dt.
-TEST(CollisionCount, ABouncingBeadCountsItsBouncesNotItsRestingSteps) {
-    const auto drop = [](double dt) {
+TEST_P(CollisionCount, ABouncingBeadCountsItsBouncesNotItsRestingSteps) {
+    const auto drop = [this](double dt) {
         EngineParameters p;
         p.box = {10.0, 10.0};
         p.drive.gamma = 0.0;  // the base stays at z = 0
@@ -197,7 +205,7 @@ TEST(CollisionCount, ABouncingBeadCountsItsBouncesNotItsRestingSteps) {
         BodyState bodies;
         const double radius = 0.4;
         bodies.add(0, {5.0, 5.0, radius + 0.5}, Quat{}, {}, {});
-        Simulation sim(p, bodies);
+        Simulation sim(p, bodies, options());
         std::size_t body = 0, plate = 0;
         const auto steps = static_cast<std::uint64_t>(std::llround(0.03 / dt));  // 30 ms
         for (std::uint64_t i = 0; i < steps; ++i) {
@@ -218,11 +226,15 @@ TEST(CollisionCount, ABouncingBeadCountsItsBouncesNotItsRestingSteps) {
     EXPECT_NEAR(fine[2] / coarse[2], 4.0, 0.2);
 }
 
+RODSEA_ON_EACH_BACKEND(CollisionCount);
+
 }  // namespace
 }  // namespace rodsea
 
 namespace rodsea {
 namespace {
+
+class PlateProjection : public testing::EachBackend {};
 
 // A bead on a base shaken at Γ = 0.8 never leaves it (the base never accelerates downward faster
 // than g). Each step, free flight lets it sink by about ½ (a + g) dt² relative to the base, and the
@@ -230,7 +242,7 @@ namespace {
 // projection out of the plate undoes that depth every step, so the deepest overlap contact search
 // ever sees is bounded by one step's (1 + e)(Γ + 1) g dt². Without it the depth would add up over
 // the 4 periods to ~½ g T dt ≈ 1e-4 mm, thousands of times that bound.
-TEST(PlateProjection, ABeadRestingOnTheShakenBaseSinksAtMostOneStepsWorth) {
+TEST_P(PlateProjection, ABeadRestingOnTheShakenBaseSinksAtMostOneStepsWorth) {
     EngineParameters p;
     p.box = {10.0, 10.0};
     p.drive.gamma = 0.8;
@@ -240,7 +252,7 @@ TEST(PlateProjection, ABeadRestingOnTheShakenBaseSinksAtMostOneStepsWorth) {
     BodyState bodies;
     // At t = 0 the base is at its top, z = A, and at rest.
     bodies.add(0, {5.0, 5.0, p.drive.amplitude() + radius}, Quat{}, {}, {});
-    Simulation sim(p, bodies);
+    Simulation sim(p, bodies, options());
     const double period = 2.0 * std::numbers::pi / p.drive.angular_frequency;
     const auto steps = static_cast<std::uint64_t>(std::llround(4.0 * period / p.dt));
     double deepest = 0.0, highest = 0.0;
@@ -254,6 +266,8 @@ TEST(PlateProjection, ABeadRestingOnTheShakenBaseSinksAtMostOneStepsWorth) {
     EXPECT_LT(deepest, one_step);
     EXPECT_LT(highest, one_step);  // and stayed on it
 }
+
+RODSEA_ON_EACH_BACKEND(PlateProjection);
 
 }  // namespace
 }  // namespace rodsea

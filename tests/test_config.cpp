@@ -361,6 +361,9 @@ std::vector<KeyCase> key_cases() {
          [](const RunPlan& p) { EXPECT_EQ(p.engine.seed, 9223372036854775807u); }},
         {"run.threads", "[run]\nthreads = 4",
          [](const RunPlan& p) { EXPECT_EQ(p.control.threads, 4); }},
+        // Resolving a config needs no GPU: run refuses an unusable one (test_run.cpp).
+        {"run.backend", "[run]\nbackend = \"gpu\"",
+         [](const RunPlan& p) { EXPECT_EQ(p.control.backend, BackendKind::gpu); }},
         {"initial.orientation", "[initial]\norientation = \"aligned\"",
          [](const RunPlan& p) { EXPECT_EQ(p.builder.orientation, InitialOrientation::aligned); }},
         {"initial.randomisation_sweeps", "[initial]\nrandomisation_sweeps = 0",
@@ -492,6 +495,7 @@ TEST(ConfigErrors, WrongTypeNamesTheTypeGivenAndExpected) {
                    {"a table", "an array of tables ([[species]])"});
     expect_invalid("drive = 3", "drive", {"an integer (3)", "a table ([drive])"});
     expect_invalid("[initial]\norientation = 1", "initial.orientation", {"an integer", "a string"});
+    expect_invalid("[run]\nbackend = \"cuda\"", "run.backend", {"\"cuda\"", "\"cpu\" or \"gpu\""});
     expect_invalid(kTwoSpecies + "[[collisions.pair]]\nspecies = \"polar\"",
                    "collisions.pair[0].species", {"a string", "an array of two strings"});
     expect_invalid(kTwoSpecies + "[[collisions.pair]]\nspecies = [\"polar\"]",

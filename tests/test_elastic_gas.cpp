@@ -3,6 +3,7 @@
 // of axisymmetric bodies, so only round-off remains.
 #include <gtest/gtest.h>
 
+#include "each_backend.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/random.hpp"
 #include "rodsea/scenes/scenes.hpp"
@@ -10,7 +11,9 @@
 namespace rodsea {
 namespace {
 
-TEST(ElasticGas, KeepsKineticEnergyOverTenThousandSteps) {
+class ElasticGas : public testing::EachBackend {};
+
+TEST_P(ElasticGas, KeepsKineticEnergyOverTenThousandSteps) {
     const Box box{20.0, 20.0};
     Scene scene = monolayer(
         {{polar_rod_species(), 20}, {apolar_rod_species(2.5), 80}, {bead_species(), 40}}, box, 5);
@@ -30,7 +33,7 @@ TEST(ElasticGas, KeepsKineticEnergyOverTenThousandSteps) {
         scene.bodies.spin[b] = {rng.uniform(-100, 100), rng.uniform(-100, 100),
                                 rng.uniform(-100, 100)};
     }
-    Simulation sim(scene.params, scene.bodies);
+    Simulation sim(scene.params, scene.bodies, options());
     const double e0 = sim.kinetic_energy();
     sim.run(10000);
     EXPECT_NEAR(sim.kinetic_energy(), e0, 1e-9 * e0);
@@ -38,6 +41,8 @@ TEST(ElasticGas, KeepsKineticEnergyOverTenThousandSteps) {
     // The test means something only if the gas actually collided, with plates and each other.
     EXPECT_GT(sim.totals().impulses, 1000u);
 }
+
+RODSEA_ON_EACH_BACKEND(ElasticGas);
 
 }  // namespace
 }  // namespace rodsea

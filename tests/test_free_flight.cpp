@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 
+#include "each_backend.hpp"
 #include "rodsea/engine/physics/rigid_rotation.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/scenes/scenes.hpp"
@@ -21,11 +22,13 @@ Scene free_body(const Species& species) {
     return scene;
 }
 
-TEST(FreeFlight, BallisticBodyFollowsTheParabola) {
+class FreeFlight : public testing::EachBackend {};
+
+TEST_P(FreeFlight, BallisticBodyFollowsTheParabola) {
     Scene scene = free_body(polar_rod_species());
     const Vec3 x0 = scene.bodies.position[0], v0{3.0, -2.0, 60.0};
     scene.bodies.velocity[0] = v0;
-    Simulation sim(scene.params, scene.bodies);
+    Simulation sim(scene.params, scene.bodies, options());
     const double g = scene.params.drive.gravity;
     for (int block = 0; block < 4; ++block) {
         sim.run(500);
@@ -43,13 +46,13 @@ TEST(FreeFlight, BallisticBodyFollowsTheParabola) {
 constexpr double kRoundOff = 1e-10;
 
 // A symmetric top precesses regularly: its axis turns about the fixed L at |L|/I_⊥.
-TEST(FreeFlight, SymmetricRodPrecessesExactly) {
+TEST_P(FreeFlight, SymmetricRodPrecessesExactly) {
     Scene scene = free_body(polar_rod_species());
     scene.params.drive.gravity = 0.0;
     const Quat q0 = Quat::from_axis_angle(normalized(Vec3{0.3, 1.0, -0.2}), 0.7);
     scene.bodies.orientation[0] = q0;
     scene.bodies.spin[0] = {35.0, -20.0, 80.0};
-    Simulation sim(scene.params, scene.bodies);
+    Simulation sim(scene.params, scene.bodies, options());
     const Vec3 l0 = sim.angular_momentum(sim.bodies().position[0]);
     const double e0 = sim.kinetic_energy();
     sim.run(10000);
@@ -70,6 +73,8 @@ TEST(FreeFlight, SymmetricRodPrecessesExactly) {
                 kRoundOff * norm(l0));
     EXPECT_NEAR(sim.kinetic_energy(), e0, kRoundOff * e0);
 }
+
+RODSEA_ON_EACH_BACKEND(FreeFlight);
 
 // A symmetric body takes small steps through power series and large ones (a half-angle above
 // 0.02 rad) through the library's sin and cos. Both follow the exact flow, so one large step

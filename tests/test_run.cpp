@@ -15,6 +15,7 @@
 #include "rodsea/analysis/steady_state.hpp"
 #include "rodsea/builder/initial_state.hpp"
 #include "rodsea/config/config_file.hpp"
+#include "rodsea/engine/backend_factory.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/checkpoint.hpp"
@@ -476,11 +477,54 @@ TEST(RunInfo, ReportsTheLargestSystemOfThePaper) {
     const auto config = std::filesystem::path(RODSEA_SOURCE_DIR) / "examples" / "largest.toml";
     const ChildResult r = run_rodsea({"info", config.string()}, dir.path());
     ASSERT_EQ(r.exit_code, kExitOk) << r.err;
-    for (const char* expected : {" 101070 ", " 800 ", "101870 bodies, 111470 spheres",
-                                 "A = 43.486 um", "800000 steps", "5.3 MB", "packing  feasible"})
+    for (const char* expected :
+         {" 101070 ", " 800 ", "101870 bodies, 111470 spheres", "A = 43.486 um", "800000 steps",
+          "5.3 MB", "packing  feasible", "backend  cpu, 1 thread (run.threads)"})
         EXPECT_NE(r.out.find(expected), std::string::npos) << expected << " in\n" << r.out;
     for (const std::string& choice : load_config_file(config).choices)
         EXPECT_NE(r.out.find(choice), std::string::npos) << choice;
+}
+
+// A run resumes on the backend --backend names, for that session; the stored config keeps what
+// the run started with. Where no GPU can run, asking for one is refused before any work, naming
+// the key or flag and saying why, and leaves every file as it was.
+TEST(RunBackend, ResumesOnTheBackendAskedForAndRefusesAnUnusableGpu) {
+    const ScratchDir dir("run-backend");
+    const auto config = write_config(dir, small_config(0.01, 0.002));
+    const auto run = dir.path() / "run";
+    ASSERT_EQ(run_rodsea({"run", config.string(), "--out", run.string(), "--quiet"}, dir.path())
+                  .exit_code,
+              kExitOk);
+    const std::string config_text = read_text(run / kConfigFile);
+    EXPECT_EQ(load_config_string(config_text, "c").control.backend, BackendKind::cpu);
+    const ChildResult cpu = run_rodsea(
+        {"run", "--resume", run.string(), "--duration", "0.02", "--backend", "cpu"}, dir.path());
+    ASSERT_EQ(cpu.exit_code, kExitOk) << cpu.err;
+    EXPECT_EQ(cpu.out.find("for this session"), std::string::npos) << cpu.out;  // no change
+
+    const ChildResult bad =
+        run_rodsea({"run", "--resume", run.string(), "--backend", "tpu"}, dir.path());
+    EXPECT_EQ(bad.exit_code, kExitBadInput);
+    EXPECT_NE(bad.err.find("--backend = tpu: allowed cpu or gpu"), std::string::npos) << bad.err;
+
+    const GpuAvailability gpu = gpu_availability();
+    if (gpu.usable) GTEST_SKIP() << "a GPU is usable here: " << gpu.description;
+    const std::string checkpoint = read_text(run / kCheckpointFile);
+    const ChildResult resumed = run_rodsea(
+        {"run", "--resume", run.string(), "--duration", "0.03", "--backend", "gpu"}, dir.path());
+    EXPECT_EQ(resumed.exit_code, kExitBadInput);
+    EXPECT_NE(resumed.err.find("invalid --backend = gpu"), std::string::npos) << resumed.err;
+    EXPECT_NE(resumed.err.find(gpu.description), std::string::npos) << resumed.err;
+    EXPECT_EQ(read_text(run / kCheckpointFile), checkpoint);
+    const auto fresh = dir.path() / "fresh";
+    const ChildResult started = run_rodsea(
+        {"run", config.string(), "--out", fresh.string(), "--backend", "gpu"}, dir.path());
+    EXPECT_EQ(started.exit_code, kExitBadInput);
+    EXPECT_NE(started.err.find("invalid run.backend = gpu"), std::string::npos) << started.err;
+    EXPECT_FALSE(std::filesystem::exists(fresh));
+    const ChildResult info = run_rodsea({"info", config.string()}, dir.path());
+    ASSERT_EQ(info.exit_code, kExitOk);
+    EXPECT_NE(info.out.find("backend  cpu"), std::string::npos) << info.out;
 }
 
 }  // namespace

@@ -14,7 +14,8 @@ struct BodySpec {
 };
 
 inline Simulation two_body_simulation(const Species& a, const Species& b, const BodySpec& sa,
-                                      const BodySpec& sb, ContactCoefficients body_body) {
+                                      const BodySpec& sb, ContactCoefficients body_body,
+                                      const BackendOptions& options = {}) {
     EngineParameters p;
     p.box = {40.0, 40.0};
     p.drive.gamma = 0.0;
@@ -26,7 +27,7 @@ inline Simulation two_body_simulation(const Species& a, const Species& b, const 
     BodyState bodies;
     bodies.add(0, sa.position, sa.orientation, sa.velocity, sa.spin);
     bodies.add(1, sb.position, sb.orientation, sb.velocity, sb.spin);
-    return Simulation(p, bodies);
+    return Simulation(p, bodies, options);
 }
 
 // Relative velocity of a contact's two points along its normal (a − b).

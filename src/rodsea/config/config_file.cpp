@@ -69,6 +69,12 @@ RunPlan with_threads(std::string_view toml, std::string_view source_name, int th
     });
 }
 
+RunPlan with_backend(std::string_view toml, std::string_view source_name, BackendKind backend) {
+    return replanned(toml, source_name, "run", [&](config::TableValues& run) {
+        run.entries["backend"] = {std::string(to_string(backend)), 0};
+    });
+}
+
 std::string config_without_seed(std::string_view toml) {
     return replanned(toml, "stored config", "run",
                      [](config::TableValues& run) {

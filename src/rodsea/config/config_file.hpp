@@ -53,6 +53,8 @@ RunPlan with_run_length(std::string_view toml, std::string_view source_name,
 
 // The config `toml` run on `threads` threads (run.threads; InvalidParameter outside its range).
 RunPlan with_threads(std::string_view toml, std::string_view source_name, int threads);
+// The config `toml` stepped by `backend` (run.backend).
+RunPlan with_backend(std::string_view toml, std::string_view source_name, BackendKind backend);
 
 // The resolved config `toml` with run.seed set to 0: equal for two runs exactly when their
 // configs differ at most in the seed (replicates of one state point).

@@ -9,6 +9,7 @@
 #include "rodsea/builder/placement.hpp"
 #include "rodsea/config/did_you_mean.hpp"
 #include "rodsea/config/schema.hpp"
+#include "rodsea/engine/backend_factory.hpp"
 #include "rodsea/error.hpp"
 
 namespace rodsea::config {
@@ -282,6 +283,7 @@ void build_the_rest(ConfigValues& c, RunPlan& plan, const EpsilonLookup& epsilon
     const TableValues& run = c.one("run");
     plan.engine.seed = static_cast<std::uint64_t>(run.integer("seed"));
     plan.control.threads = static_cast<int>(run.integer("threads"));
+    parse_backend(run.text("backend"), plan.control.backend);  // one of the key's options
     const TableValues& initial = c.one("initial");
     plan.builder.orientation = initial.text("orientation") == "aligned"
                                    ? InitialOrientation::aligned

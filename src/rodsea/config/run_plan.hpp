@@ -7,6 +7,7 @@
 
 #include "rodsea/builder/builder_options.hpp"
 #include "rodsea/engine/parameters.hpp"
+#include "rodsea/engine/step_backend.hpp"
 
 namespace rodsea {
 
@@ -16,6 +17,7 @@ struct RunControl {
     double output_interval = 0.05;      // simulated time between trajectory frames and rows, s
     double checkpoint_interval = 30.0;  // wall-clock minutes between checkpoints
     int threads = 1;
+    BackendKind backend = BackendKind::cpu;  // run.backend
     // Stop when steady: with steady_samples > 0 the run ends at the first frame whose steady
     // window (steady_state.hpp, from every order series) holds at least that many independent
     // samples of steady_series ("all": of every order series), none of those drifting; the

@@ -250,6 +250,15 @@ std::vector<KeySpec> make_keys() {
                     .doc("Threads of the engine's step (OpenMP). The trajectory is the same, bit "
                          "for bit, on any number of threads; more threads than cores only slow "
                          "it down (docs/performance.md)."));
+    k.push_back(Key("run", "backend", ValueType::option)
+                    .def(std::string(to_string(control.backend)))
+                    .options({"cpu", "gpu"})
+                    .doc("What steps the state: cpu, the host's cores (run.threads); gpu, a CUDA "
+                         "device (a build with CUDA and an sm_90 or newer GPU: rodsea info says "
+                         "whether this machine has one, and run refuses gpu before any work "
+                         "where it has none). The GPU's trajectory is statistically the CPU's, "
+                         "not bit for bit (docs/architecture.md); a checkpoint resumes on either "
+                         "(run --resume DIR --backend)."));
     // [initial]
     k.push_back(
         Key("initial", "orientation", ValueType::option)

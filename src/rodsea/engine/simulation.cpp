@@ -5,7 +5,7 @@
 #include <cstring>
 #include <string>
 
-#include "rodsea/engine/cpu/cpu_backend.hpp"
+#include "rodsea/engine/backend_factory.hpp"
 #include "rodsea/engine/state_check.hpp"
 #include "rodsea/error.hpp"
 
@@ -58,7 +58,7 @@ Simulation::Simulation(EngineParameters params, BodyState bodies, std::uint64_t 
     validate_bodies(params_, bodies, fresh_start, time());
     bounds_ = BlowUpBounds::of(params_, bodies.size());
     species_ = std::make_unique<SpeciesTable>(SpeciesTable::from(params_));
-    backend_ = std::make_unique<cpu::CpuBackend>(*species_, std::move(bodies), options_.threads);
+    backend_ = make_backend(*species_, std::move(bodies), options_);
 }
 
 void Simulation::set_threads(int threads) {

@@ -2,11 +2,13 @@
 // The seam between the step's script and its executor. Simulation builds a StepContext each step
 // and hands it to its backend, which owns the state and the scratch of every stage and runs
 // free flight → sphere update → contact search → impulse resolution and plate projection →
-// noise. The CPU backend (engine/cpu/) runs the stages as OpenMP loops; another executor (a GPU)
-// implements the same interface over the same per-element physics (engine/physics/).
+// noise. The CPU backend (engine/cpu/) runs the stages as OpenMP loops; the GPU backend
+// (engine/parallel/ run by engine/cuda/) as kernels; both over the same per-element physics
+// (engine/physics/). backend_factory.hpp picks one.
 //
 // Determinism contract: a backend gives the same trajectory, bit for bit, for the same state,
-// parameters and options. The CPU backend gives the same bits on any number of threads.
+// parameters and options. The CPU backend gives the same bits on any number of threads; the
+// GPU backend on one device with one build.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -44,12 +46,24 @@ struct StageProfile {
     }
 };
 
-// How the step is executed; the trajectory does not depend on it.
+// Which executor steps the state.
+enum class BackendKind {
+    cpu,  // the host's cores (engine/cpu/): the same bits on any number of threads
+    gpu,  // a CUDA device (engine/cuda/): the data-parallel step of engine/parallel/
+    // The GPU's data-parallel step run by host loops: the same algorithm as `gpu` without a
+    // device, for tests and for checking a device's results. Not offered to users.
+    gpu_on_host,
+};
+const char* to_string(BackendKind kind);
+
+// How the step is executed. On one backend the trajectory does not depend on the threads;
+// the GPU backend's is statistically equal to the CPU's, not equal bit for bit.
 struct BackendOptions {
-    int threads = 1;  // OpenMP threads of the CPU backend, >= 1
+    int threads = 1;  // OpenMP threads of the CPU backend (and of gpu_on_host), >= 1
     // Simulation::step throws BlowUpError after a step that crosses a blow-up bound
     // (state_check.hpp). Off only for tests that start from deliberately impossible states.
     bool stop_on_blow_up = true;
+    BackendKind backend = BackendKind::cpu;
 };
 
 // Every sphere of every body in body order: body b owns spheres first_of[b] .. first_of[b+1]−1,

@@ -5,11 +5,13 @@
 #include <numbers>
 #include <optional>
 #include <ostream>
+#include <sstream>
 #include <string>
 
 #include "rodsea/builder/initial_state.hpp"
 #include "rodsea/cli/machine_memory.hpp"
 #include "rodsea/cli/progress.hpp"
+#include "rodsea/engine/backend_factory.hpp"
 #include "rodsea/engine/physics/contact.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/run/steady_stop.hpp"
@@ -25,6 +27,23 @@ constexpr std::uint64_t kBodyBytes = sizeof(std::uint32_t) + 3 * sizeof(Vec3) + 
 // per sphere in a dense monolayer (two neighbours and a plate).
 constexpr std::uint64_t kSphereBytes = sizeof(std::uint32_t) + sizeof(double) + sizeof(Vec3) +
                                        2 * (sizeof(Vec3) + 16) + 3 * sizeof(Contact);
+
+// Which executor will step the run, and whether it can here.
+std::string describe_backend(const RunControl& control) {
+    std::ostringstream text;
+    if (control.backend == BackendKind::cpu) {
+        text << "cpu, " << control.threads << (control.threads == 1 ? " thread" : " threads")
+             << " (run.threads)";
+        return text.str();
+    }
+    const GpuAvailability gpu = gpu_availability();
+    if (gpu.usable)
+        text << "gpu: " << gpu.description;
+    else
+        text << "gpu, NOT usable here: " << gpu.description
+             << " (run refuses it; --backend cpu steps on the cores)";
+    return text.str();
+}
 
 std::string fixed(double v, int digits) {
     char text[64];
@@ -116,7 +135,8 @@ void describe_plan(const RunPlan& plan, std::ostream& out, bool brief) {
     const double period = 2.0 * std::numbers::pi / d.angular_frequency;
     out << "time     dt = " << p.dt * 1e6 << " us, " << plan.total_steps()
         << " steps = " << duration << " s = " << fixed(duration / period, 1)
-        << " drive periods, seed " << p.seed << ", threads " << plan.control.threads << "\n";
+        << " drive periods, seed " << p.seed << "\n";
+    out << "backend  " << describe_backend(plan.control) << "\n";
     if (plan.control.steady_samples > 0)
         out << "         stop when steady: once the steady window holds "
             << plan.control.steady_samples << " independent samples of "

@@ -8,6 +8,7 @@
 
 #include "rodsea/calibration/calibration_table.hpp"
 #include "rodsea/config/config_file.hpp"
+#include "rodsea/engine/backend_factory.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/run/plan_report.hpp"
 #include "rodsea/run/run_driver.hpp"
@@ -18,9 +19,9 @@ namespace rodsea {
 const CommandSpec& run_command_spec() {
     static const CommandSpec spec{
         "run",
-        "CONFIG [--out DIR] [--overwrite] [--threads N] [--quiet]  |  rodsea run --resume DIR "
-        "[--duration T] "
-        "[--steady-samples N] [--quiet]",
+        "CONFIG [--out DIR] [--overwrite] [--threads N] [--backend cpu|gpu] [--quiet]  |  "
+        "rodsea run --resume DIR [--duration T] [--steady-samples N] [--backend cpu|gpu] "
+        "[--quiet]",
         "start a simulation, or continue one from its checkpoint",
         "Reads CONFIG (TOML; every key in docs/config.md), checks all of it and the packing, "
         "prints the plan, builds the initial state (every body flat on the base, no overlaps) "
@@ -41,6 +42,9 @@ const CommandSpec& run_command_spec() {
          {"--threads", "N",
           "run on N threads, replacing run.threads (the stored config says N; a resumed run "
           "keeps the threads it started with)"},
+         {"--backend", "cpu|gpu",
+          "step on the host's cores or a CUDA device, replacing run.backend; with --resume for "
+          "this session only (a run started on the GPU goes on on the CPU, and the other way)"},
          {"--resume", "DIR", "continue the run in DIR from its checkpoint.h5"},
          {"--duration", "T", "with --resume: the run's new duration, s (at least the time done)"},
          {"--steady-samples", "N",
@@ -65,6 +69,12 @@ const CommandSpec& info_command_spec() {
 }
 
 namespace {
+
+BackendKind backend_named(const std::string& text) {
+    BackendKind kind{};
+    if (!parse_backend(text, kind)) throw InvalidParameter("--backend", text, "cpu or gpu");
+    return kind;
+}
 
 bool stdout_is_terminal() {
     return ::isatty(STDOUT_FILENO) == 1;
@@ -93,13 +103,15 @@ int run_command(const std::vector<std::string>& words, std::ostream& out, std::o
     if (const auto dir = a.value("--resume")) {
         if (!a.positional.empty() || a.value("--out") || options.overwrite)
             throw InvalidParameter("--resume", *dir,
-                                   "alone (with --duration, --steady-samples, --quiet at most)",
+                                   "alone (with --duration, --steady-samples, --backend, --quiet "
+                                   "at most)",
                                    "the config and output directory come from DIR");
         options.out_dir = *dir;
         if (const auto t = a.value("--duration"))
             options.duration = parse_number("--duration", *t, 0.0, 1e6, "s");
         if (const auto n = a.value("--steady-samples"))
             options.steady_samples = parse_count("--steady-samples", *n, 0, 1'000'000'000);
+        if (const auto b = a.value("--backend")) options.backend = backend_named(*b);
         return resume_run(*dir, options, out, err, stdout_is_terminal());
     }
     for (const char* flag : {"--duration", "--steady-samples"})
@@ -111,6 +123,8 @@ int run_command(const std::vector<std::string>& words, std::ostream& out, std::o
     if (const auto n = a.value("--threads"))
         plan = with_threads(plan.config_toml, config.string(),
                             static_cast<int>(parse_count("--threads", *n, 1, 1024)));
+    if (const auto b = a.value("--backend"))
+        plan = with_backend(plan.config_toml, config.string(), backend_named(*b));
     options.out_dir =
         a.value("--out").value_or((std::filesystem::path("out") / config.stem()).string());
     return start_run(plan, options, out, err, stdout_is_terminal());

@@ -14,6 +14,7 @@
 #include "rodsea/cli/progress.hpp"
 #include "rodsea/cli/stop_signal.hpp"
 #include "rodsea/config/config_file.hpp"
+#include "rodsea/engine/backend_factory.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/engine/state_check.hpp"
 #include "rodsea/error.hpp"
@@ -438,6 +439,7 @@ int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out,
         throw InvalidParameter("species", "these counts", "a packing that fits", packing.message);
     check_steady_series(plan);
     check_fits_in_memory(plan);
+    require_usable_backend(plan.control.backend, "run.backend");
     const bool created = prepare_output_directory(options.out_dir, options.overwrite);
     const std::filesystem::path& dir = options.out_dir;
     const RunDirectoryLock lock(dir);
@@ -475,7 +477,8 @@ int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out,
                      << ", S = " << built.nematic_order.at(s) << ";";
         out << line.str() << std::endl;
     }
-    Simulation sim(plan.engine, std::move(bodies), {.threads = plan.control.threads});
+    Simulation sim(plan.engine, std::move(bodies),
+                   {.threads = plan.control.threads, .backend = plan.control.backend});
     write_file_atomically(dir / kConfigFile, plan.config_toml);
     const SeriesRecorder columns(plan);
     TrajectoryFile trajectory =
@@ -630,6 +633,12 @@ void commit_extension(const std::filesystem::path& dir, const RunPlan& plan, Che
 
 }  // namespace
 
+void require_usable_backend(BackendKind backend, const std::string& key) {
+    if (backend != BackendKind::gpu) return;
+    const GpuAvailability gpu = gpu_availability();
+    if (!gpu.usable) throw InvalidParameter(key, "gpu", "cpu on this machine", gpu.description);
+}
+
 int resume_run(const std::filesystem::path& dir, const RunOptions& options, std::ostream& out,
                std::ostream& err, bool progress_is_terminal) {
     StopSignalGuard signals;
@@ -651,6 +660,8 @@ int resume_run(const std::filesystem::path& dir, const RunOptions& options, std:
     const bool extending = options.duration || options.steady_samples;
     const RunPlan plan = extending ? extended_plan(c, options, checkpoint_path) : stored;
     check_fits_in_memory(plan);
+    const BackendKind backend = options.backend.value_or(plan.control.backend);
+    require_usable_backend(backend, options.backend ? "--backend" : "run.backend");
     if (c.complete && (!extending || plan.total_steps() == c.step)) {
         if (!options.quiet)
             out << "rodsea: the run in " << dir.string() << " is already complete (step " << c.step
@@ -672,10 +683,16 @@ int resume_run(const std::filesystem::path& dir, const RunOptions& options, std:
             << plan.total_steps() << " (t = " << static_cast<double>(c.step) * plan.engine.dt
             << " s of " << plan.control.duration << " s), " << c.frames_written << " frames kept"
             << (extending ? "; extended, config.toml updated" : "") << std::endl;
+        if (backend != plan.control.backend)
+            out << "backend: " << to_string(backend) << " for this session (the run's config "
+                << "says " << to_string(plan.control.backend)
+                << "): the trajectory goes on statistically, not bit for bit, as the run would "
+                   "have"
+                << std::endl;
     }
     const SeriesRecorder columns(plan);
     Simulation sim = Simulation::resume(plan.engine, std::move(c.bodies), c.step,
-                                        {.threads = plan.control.threads});
+                                        {.threads = plan.control.threads, .backend = backend});
     SeriesCsv csv = SeriesCsv::reopen(dir / kSeriesFile, c.frames_written);
     std::optional<SteadyStop> history;
     if (plan.control.steady_samples > 0) {

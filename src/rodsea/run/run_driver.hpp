@@ -24,7 +24,14 @@ struct RunOptions {
     // and/or change its stop-when-steady sample count; the stored config says the new values.
     std::optional<double> duration;
     std::optional<long long> steady_samples;
+    // Resume only: continue on this backend instead of the stored run.backend, for this session
+    // (the stored config keeps saying how the run started).
+    std::optional<BackendKind> backend;
 };
+
+// Throws InvalidParameter naming `key` when `backend` cannot run on this build and machine (the
+// GPU where there is none), saying why: checked before any work.
+void require_usable_backend(BackendKind backend, const std::string& key);
 
 inline const char* const kConfigFile = "config.toml";
 inline const char* const kTrajectoryFile = "trajectory.h5";

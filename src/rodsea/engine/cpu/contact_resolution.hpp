@@ -43,13 +43,6 @@ struct PlateHit {
     double approach_speed = 0.0;
 };
 
-// A collision, as opposed to a contact that merely persists: an impulse on a contact approaching
-// faster than this. Bodies resting on or pressed against each other or a plate approach at about
-// (Γ + 1) g dt per step (0.09 mm/s at 1.25 µs, 0.4 mm/s at 5 µs) and get an impulse every step,
-// so impulses grow as 1/dt; real impacts in the vibrated cell come at mm/s to tens of mm/s, and
-// their count per second does not depend on dt.
-inline constexpr double kCollisionSpeed = 1.0;  // mm/s
-
 struct ResolutionStats {
     int sweeps = 0;
     size_t impulses = 0;

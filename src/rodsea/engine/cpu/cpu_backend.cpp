@@ -1,29 +1,10 @@
 #include "rodsea/engine/cpu/cpu_backend.hpp"
 
-#include <chrono>
-
 #include "rodsea/engine/cpu/free_flight.hpp"
 #include "rodsea/engine/cpu/plate_noise.hpp"
+#include "rodsea/engine/stage_timer.hpp"
 
 namespace rodsea::cpu {
-
-namespace {
-
-class StageTimer {
-  public:
-    explicit StageTimer(double& sink) : sink_(sink), start_(std::chrono::steady_clock::now()) {}
-    ~StageTimer() {
-        sink_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    }
-    StageTimer(const StageTimer&) = delete;
-    StageTimer& operator=(const StageTimer&) = delete;
-
-  private:
-    double& sink_;
-    std::chrono::steady_clock::time_point start_;
-};
-
-}  // namespace
 
 CpuBackend::CpuBackend(const SpeciesTable& species, BodyState bodies, int threads)
     : species_(species), bodies_(std::move(bodies)), threads_(threads) {

@@ -1,0 +1,86 @@
+#include "rodsea/engine/backend_factory.hpp"
+
+#include "rodsea/engine/cpu/cpu_backend.hpp"
+#include "rodsea/engine/parallel/host_executor.hpp"
+#include "rodsea/engine/parallel/parallel_backend.hpp"
+#include "rodsea/engine/state_check.hpp"
+#include "rodsea/error.hpp"
+
+#if defined(RODSEA_HAVE_CUDA)
+#include "rodsea/engine/cuda/gpu_backend.hpp"
+#endif
+
+namespace rodsea {
+
+const char* to_string(BackendKind kind) {
+    switch (kind) {
+        case BackendKind::cpu:
+            return "cpu";
+        case BackendKind::gpu:
+            return "gpu";
+        case BackendKind::gpu_on_host:
+            return "gpu-on-host";
+    }
+    return "?";
+}
+
+bool parse_backend(const std::string& text, BackendKind& kind) {
+    if (text == "cpu") {
+        kind = BackendKind::cpu;
+        return true;
+    }
+    if (text == "gpu") {
+        kind = BackendKind::gpu;
+        return true;
+    }
+    return false;
+}
+
+GpuAvailability gpu_availability() {
+#if defined(RODSEA_HAVE_CUDA)
+    return cuda::probe_device();
+#else
+    return {false,
+            "this rodsea was built without CUDA (no nvcc when it was configured): install the "
+            "CUDA toolkit, set CUDA_HOME to it and configure with -DRODSEA_CUDA=ON"};
+#endif
+}
+
+namespace {
+
+parallel::InitialSpheres initial_spheres(const SpeciesTable& species, BodyState& bodies) {
+    cpu::SphereTable table;
+    table.assign(bodies.species, species);
+    table.update_positions(bodies.view(), species, 1);
+    return {std::move(table.body), std::move(table.radius), std::move(table.position),
+            std::move(table.first_of)};
+}
+
+}  // namespace
+
+std::unique_ptr<StepBackend> make_backend(const SpeciesTable& species, BodyState bodies,
+                                          const BackendOptions& options) {
+    switch (options.backend) {
+        case BackendKind::cpu:
+            return std::make_unique<cpu::CpuBackend>(species, std::move(bodies), options.threads);
+        case BackendKind::gpu_on_host: {
+            parallel::InitialSpheres spheres = initial_spheres(species, bodies);
+            return std::make_unique<parallel::ParallelBackend<parallel::HostExecutor>>(
+                "gpu-on-host", species, std::move(bodies), std::move(spheres),
+                kGrossOverlapFraction, parallel::HostExecutor(options.threads));
+        }
+        case BackendKind::gpu: {
+            const GpuAvailability gpu = gpu_availability();
+            if (!gpu.usable)
+                throw InvalidParameter("backend", "\"gpu\"", "\"cpu\" here", gpu.description);
+#if defined(RODSEA_HAVE_CUDA)
+            parallel::InitialSpheres spheres = initial_spheres(species, bodies);
+            return cuda::make_gpu_backend(species, std::move(bodies), std::move(spheres),
+                                          kGrossOverlapFraction);
+#endif
+        }
+    }
+    throw InvalidParameter("backend", to_string(options.backend), "\"cpu\" or \"gpu\"");
+}
+
+}  // namespace rodsea

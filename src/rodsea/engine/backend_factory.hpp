@@ -1,0 +1,29 @@
+#pragma once
+// Makes the backend a Simulation asks for, and says whether this build and machine can run the
+// GPU backend at all, before any work (`rodsea info`, config validation).
+#include <memory>
+#include <string>
+
+#include "rodsea/engine/body_state.hpp"
+#include "rodsea/engine/species_table.hpp"
+#include "rodsea/engine/step_backend.hpp"
+
+namespace rodsea {
+
+struct GpuAvailability {
+    bool usable = false;
+    // The device that would run ("NVIDIA H100 80GB HBM3, sm_90, 79.1 GiB"), or why none can:
+    // a build without CUDA (and how to build one), or no usable device (and the driver's reason).
+    std::string description;
+};
+GpuAvailability gpu_availability();
+
+// Reads "cpu" or "gpu" (what users may ask for) into `kind`; false for anything else.
+bool parse_backend(const std::string& text, BackendKind& kind);
+
+// `species` must outlive the backend. Throws InvalidParameter naming "backend" when the GPU is
+// asked for and gpu_availability() says it cannot be used.
+std::unique_ptr<StepBackend> make_backend(const SpeciesTable& species, BodyState bodies,
+                                          const BackendOptions& options);
+
+}  // namespace rodsea

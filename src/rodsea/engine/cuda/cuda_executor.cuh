@@ -1,0 +1,226 @@
+#pragma once
+// Runs the data-parallel step's kernels on a CUDA device: HostExecutor's interface
+// (engine/parallel/host_executor.hpp) over device memory, one kernel launch per launch(), CUB's
+// radix sort, scan and reductions (deterministic: no floating-point atomics). Every call is
+// ordered on the default stream; the few values the host needs (sums, flags, the colour ranges)
+// are copied back synchronously.
+#include <cuda_runtime.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <cub/device/device_radix_sort.cuh>
+#include <cub/device/device_reduce.cuh>
+#include <cub/device/device_scan.cuh>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rodsea::cuda {
+
+inline void check(cudaError_t status, const char* what) {
+    if (status != cudaSuccess)
+        throw std::runtime_error(std::string("rodsea GPU backend: ") + what + ": " +
+                                 cudaGetErrorString(status));
+}
+
+template <class Kernel>
+__global__ void run_kernel(Kernel kernel, std::uint32_t n) {
+    const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i < n) kernel(i);
+}
+
+template <class T>
+__global__ void fill_kernel(T* data, std::uint32_t n, T value) {
+    const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i < n) data[i] = value;
+}
+
+class CudaExecutor {
+  public:
+    // Device memory; resize() drops the contents when it grows.
+    template <class T>
+    class Array {
+      public:
+        Array() = default;
+        Array(const Array&) = delete;
+        Array& operator=(const Array&) = delete;
+        Array(Array&& o) noexcept
+            : data_(std::exchange(o.data_, nullptr)),
+              size_(std::exchange(o.size_, 0)),
+              capacity_(std::exchange(o.capacity_, 0)) {}
+        Array& operator=(Array&& o) noexcept {
+            std::swap(data_, o.data_);
+            std::swap(size_, o.size_);
+            std::swap(capacity_, o.capacity_);
+            return *this;
+        }
+        ~Array() { cudaFree(data_); }
+
+        void resize(std::size_t n) {
+            if (n <= capacity_) {
+                size_ = n;
+                return;
+            }
+            T* grown = nullptr;
+            check(cudaMalloc(&grown, n * sizeof(T)), "cudaMalloc");
+            cudaFree(data_);
+            data_ = grown;
+            size_ = capacity_ = n;
+        }
+        std::size_t size() const { return size_; }
+        T* data() { return data_; }
+        const T* data() const { return data_; }
+
+      private:
+        T* data_ = nullptr;
+        std::size_t size_ = 0, capacity_ = 0;
+    };
+
+    CudaExecutor() = default;
+    CudaExecutor(CudaExecutor&& o) noexcept
+        : scratch_(std::exchange(o.scratch_, nullptr)),
+          scratch_bytes_(std::exchange(o.scratch_bytes_, 0)),
+          sorted_keys_(std::move(o.sorted_keys_)),
+          sorted_values_(std::move(o.sorted_values_)),
+          sum_(std::move(o.sum_)),
+          max_double_(std::move(o.max_double_)),
+          max_int_(std::move(o.max_int_)) {}
+    CudaExecutor& operator=(CudaExecutor&&) = delete;
+    ~CudaExecutor() { cudaFree(scratch_); }
+
+    void set_threads(int) {}  // the device's threads are not the host's
+
+    template <class Kernel>
+    void launch(std::size_t n, const Kernel& kernel) const {
+        if (n == 0) return;
+        const auto count = static_cast<std::uint32_t>(n);
+        run_kernel<<<(count + kBlock - 1) / kBlock, kBlock>>>(kernel, count);
+        check(cudaGetLastError(), "kernel launch");
+    }
+
+    void finish() const { check(cudaDeviceSynchronize(), "kernel"); }
+
+    template <class T>
+    void fill(Array<T>& a, std::size_t n, const T& value) const {
+        if (n == 0) return;
+        const auto count = static_cast<std::uint32_t>(n);
+        fill_kernel<<<(count + kBlock - 1) / kBlock, kBlock>>>(a.data(), count, value);
+        check(cudaGetLastError(), "fill");
+    }
+
+    std::uint64_t exclusive_scan(const Array<std::uint32_t>& in, Array<std::uint32_t>& out,
+                                 std::size_t n) {
+        if (n == 0) return 0;
+        std::size_t bytes = 0;
+        check(cub::DeviceScan::ExclusiveSum(nullptr, bytes, in.data(), out.data(),
+                                            static_cast<int>(n)),
+              "scan");
+        check(cub::DeviceScan::ExclusiveSum(scratch(bytes), bytes, in.data(), out.data(),
+                                            static_cast<int>(n)),
+              "scan");
+        return std::uint64_t{read(out, n - 1)} + read(in, n - 1);
+    }
+
+    // LSD radix sort: stable, so equal keys keep their order.
+    void sort_by_key(Array<std::uint32_t>& keys, Array<std::uint32_t>& values, std::size_t n,
+                     int bits) {
+        if (n == 0) return;
+        sorted_keys_.resize(n);
+        sorted_values_.resize(n);
+        std::size_t bytes = 0;
+        const auto count = static_cast<int>(n);
+        check(cub::DeviceRadixSort::SortPairs(nullptr, bytes, keys.data(), sorted_keys_.data(),
+                                              values.data(), sorted_values_.data(), count, 0, bits),
+              "sort");
+        check(
+            cub::DeviceRadixSort::SortPairs(scratch(bytes), bytes, keys.data(), sorted_keys_.data(),
+                                            values.data(), sorted_values_.data(), count, 0, bits),
+            "sort");
+        check(cudaMemcpy(keys.data(), sorted_keys_.data(), n * sizeof(std::uint32_t),
+                         cudaMemcpyDeviceToDevice),
+              "sort copy");
+        check(cudaMemcpy(values.data(), sorted_values_.data(), n * sizeof(std::uint32_t),
+                         cudaMemcpyDeviceToDevice),
+              "sort copy");
+    }
+
+    double max_of(const Array<double>& a, std::size_t n) { return reduce_max(a, n, 0.0); }
+    int max_of(const Array<int>& a, std::size_t n) { return reduce_max(a, n, 0); }
+
+    std::uint64_t sum_of(const Array<std::uint32_t>& a, std::size_t from, std::size_t to) {
+        if (to <= from) return 0;
+        Array<unsigned long long>& result = sum_;
+        result.resize(1);
+        std::size_t bytes = 0;
+        const auto count = static_cast<int>(to - from);
+        // Integer sums: exact in any order.
+        check(cub::DeviceReduce::Sum(nullptr, bytes, a.data() + from, result.data(), count), "sum");
+        check(cub::DeviceReduce::Sum(scratch(bytes), bytes, a.data() + from, result.data(), count),
+              "sum");
+        return read(result, 0);
+    }
+
+    template <class T>
+    void upload(Array<T>& a, const std::vector<T>& from) const {
+        a.resize(from.size());
+        if (!from.empty())
+            check(
+                cudaMemcpy(a.data(), from.data(), from.size() * sizeof(T), cudaMemcpyHostToDevice),
+                "upload");
+    }
+    template <class T>
+    void download(const Array<T>& a, std::size_t n, std::vector<T>& to) const {
+        to.resize(n);
+        if (n > 0)
+            check(cudaMemcpy(to.data(), a.data(), n * sizeof(T), cudaMemcpyDeviceToHost),
+                  "download");
+    }
+    template <class T>
+    T read(const Array<T>& a, std::size_t i) const {
+        T value;
+        check(cudaMemcpy(&value, a.data() + i, sizeof(T), cudaMemcpyDeviceToHost), "read");
+        return value;
+    }
+    template <class T>
+    void write(Array<T>& a, std::size_t i, const T& value) const {
+        check(cudaMemcpy(a.data() + i, &value, sizeof(T), cudaMemcpyHostToDevice), "write");
+    }
+
+  private:
+    static constexpr std::uint32_t kBlock = 256;
+
+    void* scratch(std::size_t bytes) {
+        if (bytes > scratch_bytes_) {
+            cudaFree(scratch_);
+            scratch_ = nullptr;
+            check(cudaMalloc(&scratch_, bytes), "cudaMalloc");
+            scratch_bytes_ = bytes;
+        }
+        return scratch_;
+    }
+
+    // Maxima of non-negative values: a maximum is exact in any order.
+    template <class T>
+    T reduce_max(const Array<T>& a, std::size_t n, T empty) {
+        if (n == 0) return empty;
+        Array<T>& result = max_scratch(T{});
+        result.resize(1);
+        std::size_t bytes = 0;
+        const auto count = static_cast<int>(n);
+        check(cub::DeviceReduce::Max(nullptr, bytes, a.data(), result.data(), count), "max");
+        check(cub::DeviceReduce::Max(scratch(bytes), bytes, a.data(), result.data(), count), "max");
+        return read(result, 0);
+    }
+    Array<double>& max_scratch(double) { return max_double_; }
+    Array<int>& max_scratch(int) { return max_int_; }
+
+    void* scratch_ = nullptr;
+    std::size_t scratch_bytes_ = 0;
+    Array<std::uint32_t> sorted_keys_, sorted_values_;
+    Array<unsigned long long> sum_;
+    Array<double> max_double_;
+    Array<int> max_int_;
+};
+
+}  // namespace rodsea::cuda

@@ -1,0 +1,43 @@
+// The GPU backend: the data-parallel step (engine/parallel/) instantiated with the CUDA executor.
+// The only translation unit nvcc compiles for the engine.
+#include <cuda_runtime.h>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "rodsea/engine/cuda/cuda_executor.cuh"
+#include "rodsea/engine/cuda/gpu_backend.hpp"
+#include "rodsea/engine/parallel/parallel_backend.hpp"
+
+namespace rodsea::cuda {
+
+GpuAvailability probe_device() {
+    int count = 0;
+    const cudaError_t status = cudaGetDeviceCount(&count);
+    if (status != cudaSuccess)
+        return {false, std::string("no usable CUDA device: ") + cudaGetErrorString(status)};
+    if (count == 0) return {false, "no CUDA device on this machine"};
+    cudaDeviceProp p{};
+    if (cudaGetDeviceProperties(&p, 0) != cudaSuccess)
+        return {false, "the CUDA device did not answer"};
+    char text[256];
+    std::snprintf(text, sizeof text, "%s, sm_%d%d, %.1f GiB", p.name, p.major, p.minor,
+                  static_cast<double>(p.totalGlobalMem) / (1024.0 * 1024.0 * 1024.0));
+    // The build's code is sm_90 with compute_90 PTX: older devices cannot run it.
+    if (p.major < 9)
+        return {false, std::string(text) +
+                           ": older than the sm_90 this rodsea was built for (set "
+                           "CMAKE_CUDA_ARCHITECTURES to build for it)"};
+    return {true, text};
+}
+
+std::unique_ptr<StepBackend> make_gpu_backend(const SpeciesTable& species, BodyState bodies,
+                                              parallel::InitialSpheres spheres,
+                                              double gross_overlap_fraction) {
+    return std::make_unique<parallel::ParallelBackend<CudaExecutor>>(
+        "gpu", species, std::move(bodies), std::move(spheres), gross_overlap_fraction,
+        CudaExecutor());
+}
+
+}  // namespace rodsea::cuda

@@ -1,0 +1,92 @@
+#pragma once
+// What the data-parallel step's kernels read and write: raw pointers into one executor's memory
+// (host vectors or device buffers), plain values, so that a kernel object is copied to a device
+// as it is.
+#include <cstdint>
+
+#include "rodsea/engine/physics/contact.hpp"
+#include "rodsea/engine/physics/rigid_rotation.hpp"
+#include "rodsea/math/hostdevice.hpp"
+#include "rodsea/math/mat3.hpp"
+#include "rodsea/math/periodic_box.hpp"
+#include "rodsea/math/quat.hpp"
+
+namespace rodsea::parallel {
+
+struct BodyArrays {
+    const std::uint32_t* species = nullptr;
+    Vec3* position = nullptr;  // mm, x and y wrapped into the box
+    Quat* orientation = nullptr;
+    Vec3* velocity = nullptr;  // mm/s
+    Vec3* spin = nullptr;      // rad/s, world frame
+    std::uint32_t count = 0;
+};
+
+// The SpeciesTable's arrays.
+struct SpeciesArrays {
+    const double* inverse_mass = nullptr;
+    const Vec3* inverse_inertia = nullptr;
+    const physics::Rotor* rotor = nullptr;
+    const double* reach2 = nullptr;
+    const int* sphere_axis = nullptr;
+    const std::uint32_t* first_sphere = nullptr;
+    const Vec3* sphere_offset = nullptr;
+    const ContactCoefficients* plate = nullptr;
+    const ContactCoefficients* pair = nullptr;  // species × species, row-major
+    const std::uint8_t* polar = nullptr;
+    std::uint32_t count = 0;
+
+    RODSEA_HD const ContactCoefficients& pair_coefficients(std::uint32_t a, std::uint32_t b) const {
+        return pair[a * count + b];
+    }
+};
+
+// Every sphere of every body, in body order (SphereView's layout).
+struct SphereArrays {
+    const std::uint32_t* body = nullptr;
+    const double* radius = nullptr;  // mm
+    Vec3* position = nullptr;        // mm, world, x and y not wrapped
+    const std::uint32_t* first_of = nullptr;
+    std::uint32_t count = 0;
+};
+
+// The cell list: the box cut into nx × ny cells no narrower than the widest contact reach, so
+// that a sphere's partners lie in its own and the eight surrounding cells. Cell (cx, cy) holds
+// sorted_sphere[start[c] .. end[c]), c = cy nx + cx, in sphere order.
+struct CellGrid {
+    std::uint32_t nx = 1, ny = 1;
+    double width_x = 0.0, width_y = 0.0;  // mm
+
+    RODSEA_HD std::uint32_t cells() const { return nx * ny; }
+    RODSEA_HD std::uint32_t column_of(double x, double lx) const {
+        const auto c = static_cast<std::uint32_t>(PeriodicBox2D::wrap(x, lx) / width_x);
+        return c < nx ? c : nx - 1;  // x just below lx may round to nx
+    }
+    RODSEA_HD std::uint32_t row_of(double y, double ly) const {
+        const auto r = static_cast<std::uint32_t>(PeriodicBox2D::wrap(y, ly) / width_y);
+        return r < ny ? r : ny - 1;
+    }
+};
+
+struct CellList {
+    CellGrid grid;
+    const std::uint32_t* sorted_sphere = nullptr;
+    const std::uint32_t* start = nullptr;
+    const std::uint32_t* end = nullptr;
+};
+
+// Which contacts touch each body: the contacts adjacent[start[b] .. end[b]), in contact order.
+struct Incidence {
+    const std::uint32_t* contact = nullptr;
+    const std::uint32_t* start = nullptr;
+    const std::uint32_t* end = nullptr;
+};
+
+// What the sweeps count per contact, summed after the step.
+struct ContactTallies {
+    std::uint32_t* impulses = nullptr;
+    std::uint32_t* collisions = nullptr;  // impulses approaching faster than kCollisionSpeed
+    double* hit_speed = nullptr;          // plate contacts: the fastest approach given an impulse
+};
+
+}  // namespace rodsea::parallel
