@@ -1,0 +1,169 @@
+// Times the engine's step on the GPU backend and, beside it, on the CPU backend with every core,
+// for the system sizes (10⁴, 10⁵, 10⁶ spheres of the reference mixture, and the paper's
+// largest rod and bead systems), and checks that two GPU runs give the same bits. Needs only the
+// engine and the builder (no Google Benchmark, no Debian packages): bench/gpu/run.sh builds it on
+// a machine that has CUDA and nothing else.
+//
+//   rodsea_gpu_bench [--seconds S] [--cpu-threads T] [--only NAME] [--skip-cpu]
+//
+// Prints one CSV row per system and backend: spheres, steps/s, sphere-steps/s, the seconds per
+// step of each stage, the contacts and sweeps of the last step.
+#include <omp.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "rodsea/engine/backend_factory.hpp"
+#include "rodsea/engine/simulation.hpp"
+#include "rodsea/scenes/scenes.hpp"
+
+namespace {
+
+struct System {
+    std::string name;
+    rodsea::Scene scene;
+};
+
+// The reference mixture (polar rods at φ_p = 0.05 in 2.5 mm apolar rods at φ_a = 0.5) with about
+// `spheres` spheres: its 90 mm box holds about 28 000.
+rodsea::Scene mixture_with(double spheres) {
+    const double side = 90.0 * std::sqrt(spheres / 28'000.0);
+    return rodsea::polar_in_apolar_mixture(0.05, 2.5, 0.5, side, 1);
+}
+
+// The paper's largest systems by their bodies, at φ = 0.5 so that the start can be built (the
+// paper packs them into 252 mm; bench_step.cpp does the same).
+rodsea::Scene paper_rods() {
+    const double apolar_area = rodsea::apolar_rod_species(2.5).shape.projected_area;
+    const double polar_area = rodsea::polar_rod_species().shape.projected_area;
+    const double side = std::sqrt(37147.0 * apolar_area / 0.5);
+    return rodsea::polar_in_apolar_mixture(3203.0 * polar_area / (side * side), 2.5, 0.5, side, 1);
+}
+rodsea::Scene paper_beads() {
+    const rodsea::Species polar = rodsea::polar_rod_species(), bead = rodsea::bead_species();
+    const double side = std::sqrt((800.0 * polar.shape.projected_area +
+                                   101070.0 * bead.shape.projected_area) /
+                                  0.5);
+    return rodsea::monolayer({{polar, 800}, {bead, 101070}}, {side, side}, 1);
+}
+
+struct Timing {
+    double steps_per_second = 0.0;
+    rodsea::StageProfile per_step;
+    std::size_t contacts = 0;
+    int sweeps = 0;
+};
+
+// Steps for `seconds` of wall time after 200 steps that let the start spread out.
+Timing time_steps(const rodsea::Scene& scene, const rodsea::BackendOptions& options,
+                  double seconds) {
+    rodsea::Simulation sim(scene.params, scene.bodies, options);
+    sim.run(200);
+    const rodsea::StageProfile before = sim.profile();
+    const auto start = std::chrono::steady_clock::now();
+    std::uint64_t steps = 0;
+    double elapsed = 0.0;
+    while (elapsed < seconds) {
+        sim.run(50);
+        steps += 50;
+        elapsed =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    const rodsea::StageProfile& p = sim.profile();
+    const double n = static_cast<double>(steps);
+    Timing t;
+    t.steps_per_second = n / elapsed;
+    t.per_step = {(p.free_flight - before.free_flight) / n,
+                  (p.sphere_update - before.sphere_update) / n,
+                  (p.contact_search - before.contact_search) / n,
+                  (p.resolution - before.resolution) / n, (p.noise - before.noise) / n};
+    t.contacts = sim.last_step().body_contacts + sim.last_step().plate_contacts;
+    t.sweeps = sim.last_step().sweeps;
+    return t;
+}
+
+void print_row(const std::string& system, const char* backend, int threads, double spheres,
+               const Timing& t) {
+    const rodsea::StageProfile& s = t.per_step;
+    std::printf("%s,%s,%d,%.0f,%.1f,%.4g,%.3g,%.3g,%.3g,%.3g,%.3g,%zu,%d\n", system.c_str(),
+                backend, threads, spheres, t.steps_per_second, t.steps_per_second * spheres,
+                s.free_flight * 1e6, s.sphere_update * 1e6, s.contact_search * 1e6,
+                s.resolution * 1e6, s.noise * 1e6, t.contacts, t.sweeps);
+    std::fflush(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    double seconds = 5.0;
+    int cpu_threads = omp_get_num_procs();
+    std::string only;
+    bool skip_cpu = false;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--seconds" && i + 1 < argc)
+            seconds = std::atof(argv[++i]);
+        else if (arg == "--cpu-threads" && i + 1 < argc)
+            cpu_threads = std::atoi(argv[++i]);
+        else if (arg == "--only" && i + 1 < argc)
+            only = argv[++i];
+        else if (arg == "--skip-cpu")
+            skip_cpu = true;
+        else {
+            std::fprintf(stderr,
+                         "usage: rodsea_gpu_bench [--seconds S] [--cpu-threads T] [--only NAME] "
+                         "[--skip-cpu]\n");
+            return 2;
+        }
+    }
+    const rodsea::GpuAvailability gpu = rodsea::gpu_availability();
+    std::fprintf(stderr, "GPU: %s%s\n", gpu.usable ? "" : "none usable: ",
+                 gpu.description.c_str());
+
+    std::vector<System> systems;
+    const auto want = [&only](const char* name) { return only.empty() || only == name; };
+    if (want("mixture-1e4")) systems.push_back({"mixture-1e4", mixture_with(1e4)});
+    if (want("mixture-1e5")) systems.push_back({"mixture-1e5", mixture_with(1e5)});
+    if (want("mixture-1e6")) systems.push_back({"mixture-1e6", mixture_with(1e6)});
+    if (want("paper-rods")) systems.push_back({"paper-rods", paper_rods()});
+    if (want("paper-beads")) systems.push_back({"paper-beads", paper_beads()});
+
+    std::printf(
+        "system,backend,threads,spheres,steps_per_s,sphere_steps_per_s,free_flight_us,"
+        "spheres_us,search_us,resolution_us,noise_us,contacts,sweeps\n");
+    for (const System& s : systems) {
+        rodsea::Simulation probe(s.scene.params, s.scene.bodies);
+        const auto spheres = static_cast<double>(probe.spheres().size());
+        if (gpu.usable) {
+            rodsea::BackendOptions o;
+            o.backend = rodsea::BackendKind::gpu;
+            print_row(s.name, "gpu", 0, spheres, time_steps(s.scene, o, seconds));
+        }
+        if (!skip_cpu) {
+            rodsea::BackendOptions o;
+            o.threads = cpu_threads;
+            print_row(s.name, "cpu", cpu_threads, spheres, time_steps(s.scene, o, seconds));
+        }
+    }
+
+    // Determinism: the same start stepped twice on the GPU gives the same bits.
+    if (gpu.usable) {
+        rodsea::Scene scene = mixture_with(1e5);
+        scene.params.noise_epsilon = 0.02;
+        rodsea::BackendOptions o;
+        o.backend = rodsea::BackendKind::gpu;
+        rodsea::Simulation a(scene.params, scene.bodies, o), b(scene.params, scene.bodies, o);
+        a.run(2000);
+        b.run(2000);
+        std::fprintf(stderr, "determinism: two GPU runs of 2000 steps: %s (%016llx, %016llx)\n",
+                     a.state_hash() == b.state_hash() ? "same bits" : "DIFFERENT",
+                     static_cast<unsigned long long>(a.state_hash()),
+                     static_cast<unsigned long long>(b.state_hash()));
+        if (a.state_hash() != b.state_hash()) return 1;
+    }
+    return 0;
+}
