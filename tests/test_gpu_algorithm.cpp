@@ -7,11 +7,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <set>
 #include <tuple>
 #include <vector>
 
 #include "each_backend.hpp"
+#include "rodsea/engine/ensemble.hpp"
 #include "rodsea/engine/parallel/contact_colouring.hpp"
 #include "rodsea/engine/parallel/host_executor.hpp"
 #include "rodsea/engine/simulation.hpp"
@@ -25,9 +27,7 @@ namespace {
 // Polar rods in a dense medium of apolar rods with noise, thrown about as a shaken layer is
 // (in-plane speeds up to 100 mm/s, vertical 30 mm/s, spins 100 rad/s): every stage has work
 // from the first step.
-Scene noisy_dense_mixture(std::uint64_t seed) {
-    Scene scene = polar_in_apolar_mixture(0.10, 2.5, 0.55, 20.0, seed);
-    scene.params.noise_epsilon = 0.05;
+Scene shaken(Scene scene, std::uint64_t seed) {
     SplitMix64 rng(seed);
     for (size_t b = 0; b < scene.bodies.size(); ++b) {
         scene.bodies.velocity[b] = {rng.uniform(-100, 100), rng.uniform(-100, 100),
@@ -36,6 +36,12 @@ Scene noisy_dense_mixture(std::uint64_t seed) {
                                 rng.uniform(-100, 100)};
     }
     return scene;
+}
+
+Scene noisy_dense_mixture(std::uint64_t seed) {
+    Scene scene = polar_in_apolar_mixture(0.10, 2.5, 0.55, 20.0, seed);
+    scene.params.noise_epsilon = 0.05;
+    return shaken(std::move(scene), seed);
 }
 
 BackendOptions on(BackendKind kind, int threads = 1) {
@@ -134,6 +140,42 @@ TEST_P(GpuAlgorithm, DenseMixtureHasTheCpuStatistics) {
     EXPECT_NEAR(other.kinetic_energy() / cpu.kinetic_energy(), 1.0, 0.2);
 }
 
+// An ensemble of unlike systems (rods with noise, a denser medium without, beads in another box
+// and with another seed) steps each of them to the same bits as it steps alone on the same
+// backend: nothing a system computes depends on its neighbours in the kernels. One of them is
+// resumed from a later step, so the systems are at different times too.
+TEST_P(GpuAlgorithm, AnEnsembleStepsEachSystemAsItStepsAlone) {
+    std::vector<Scene> scenes = {
+        noisy_dense_mixture(21), noisy_dense_mixture(22),
+        shaken(monolayer({{polar_rod_species(), 6}, {bead_species(), 150}}, {14.0, 17.0}, 23), 23)};
+    scenes[1].params.noise_epsilon = 0.0;
+    scenes[2].params.seed = 99;
+    scenes[2].params.max_sweeps = 7;
+    const std::uint64_t starts[] = {0, 0, 250};
+    const auto system = [&](std::size_t m) {
+        return Simulation::resume(scenes[m].params, scenes[m].bodies, starts[m], options());
+    };
+    std::vector<Simulation> members;
+    for (std::size_t m = 0; m < scenes.size(); ++m)
+        members.push_back(system(m));
+    Ensemble ensemble(std::move(members), options());
+    ensemble.run(600);
+    for (std::size_t m = 0; m < scenes.size(); ++m) {
+        Simulation alone = system(m);
+        alone.run(600);
+        SCOPED_TRACE("system " + std::to_string(m));
+        EXPECT_EQ(ensemble.step_count(m), starts[m] + 600);
+        EXPECT_EQ(ensemble.state_hash(m), alone.state_hash());
+        EXPECT_EQ(ensemble.totals(m).impulses, alone.totals().impulses);
+        EXPECT_EQ(ensemble.totals(m).noise_kicks, alone.totals().noise_kicks);
+        EXPECT_EQ(ensemble.totals(m).max_sweeps, alone.totals().max_sweeps);
+        EXPECT_EQ(ensemble.last_step(m).max_planar_speed, alone.last_step().max_planar_speed);
+        EXPECT_GT(ensemble.totals(m).impulses, 10u);  // each system has impulses to get right
+    }
+    EXPECT_GT(ensemble.totals(0).noise_kicks, 0u);
+    EXPECT_EQ(ensemble.totals(1).noise_kicks, 0u);
+}
+
 RODSEA_ON_EACH_BACKEND(GpuAlgorithm);
 
 // The colouring on a random contact graph much denser than a monolayer's: every contact gets a
@@ -162,8 +204,10 @@ TEST(ContactColouring, ContactsOfOneColourShareNoBody) {
     const auto count = static_cast<std::uint32_t>(list.size());
     Exec::Array<Contact> contacts;
     exec.upload(contacts, list);
+    std::vector<std::uint32_t> rank(count);  // one system: a contact's rank is its index
+    std::iota(rank.begin(), rank.end(), 0u);
     parallel::ContactColouring<Exec> colouring;
-    colouring.colour(exec, contacts, count, body_contacts, bodies);
+    colouring.colour(exec, contacts, rank.data(), count, body_contacts, bodies);
 
     std::vector<int> colour;
     exec.download(colouring.colour_of(), count, colour);

@@ -1,6 +1,7 @@
 // Times the engine's step on the GPU backend and, beside it, on the CPU backend with every core,
-// for the system sizes (10⁴, 10⁵, 10⁶ spheres of the reference mixture, and the paper's
-// largest rod and bead systems), and checks that two GPU runs give the same bits. Needs only the
+// for the system sizes (10⁴, 10⁵, 10⁶ spheres of the reference mixture, the paper's
+// largest rod and bead systems, and an ensemble of 64 systems of 10⁴ spheres), and checks that
+// two GPU runs give the same bits. Needs only the
 // engine and the builder (no Google Benchmark, no Debian packages): bench/gpu/run.sh builds it on
 // a machine that has CUDA and nothing else.
 //
@@ -10,6 +11,7 @@
 // step of each stage, the contacts and sweeps of the last step.
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -18,6 +20,7 @@
 #include <vector>
 
 #include "rodsea/engine/backend_factory.hpp"
+#include "rodsea/engine/ensemble.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/scenes/scenes.hpp"
 
@@ -45,9 +48,8 @@ rodsea::Scene paper_rods() {
 }
 rodsea::Scene paper_beads() {
     const rodsea::Species polar = rodsea::polar_rod_species(), bead = rodsea::bead_species();
-    const double side = std::sqrt((800.0 * polar.shape.projected_area +
-                                   101070.0 * bead.shape.projected_area) /
-                                  0.5);
+    const double side = std::sqrt(
+        (800.0 * polar.shape.projected_area + 101070.0 * bead.shape.projected_area) / 0.5);
     return rodsea::monolayer({{polar, 800}, {bead, 101070}}, {side, side}, 1);
 }
 
@@ -70,8 +72,7 @@ Timing time_steps(const rodsea::Scene& scene, const rodsea::BackendOptions& opti
     while (elapsed < seconds) {
         sim.run(50);
         steps += 50;
-        elapsed =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
     const rodsea::StageProfile& p = sim.profile();
     const double n = static_cast<double>(steps);
@@ -83,6 +84,42 @@ Timing time_steps(const rodsea::Scene& scene, const rodsea::BackendOptions& opti
                   (p.resolution - before.resolution) / n, (p.noise - before.noise) / n};
     t.contacts = sim.last_step().body_contacts + sim.last_step().plate_contacts;
     t.sweeps = sim.last_step().sweeps;
+    return t;
+}
+
+// The same for an ensemble of `count` mixtures of 10⁴ spheres, different seeds: steps/s of the
+// whole ensemble.
+Timing time_ensemble(int count, const rodsea::BackendOptions& options, double seconds) {
+    std::vector<rodsea::Simulation> systems;
+    for (int i = 0; i < count; ++i) {
+        const double side = 90.0 * std::sqrt(1e4 / 28'000.0);
+        const rodsea::Scene s = rodsea::polar_in_apolar_mixture(0.05, 2.5, 0.5, side,
+                                                                static_cast<std::uint64_t>(i + 1));
+        systems.emplace_back(s.params, s.bodies);
+    }
+    rodsea::Ensemble ensemble(std::move(systems), options);
+    ensemble.run(200);
+    const rodsea::StageProfile before = ensemble.profile();
+    const auto start = std::chrono::steady_clock::now();
+    std::uint64_t steps = 0;
+    double elapsed = 0.0;
+    while (elapsed < seconds) {
+        ensemble.run(20);
+        steps += 20;
+        elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    const rodsea::StageProfile& p = ensemble.profile();
+    const double n = static_cast<double>(steps);
+    Timing t;
+    t.steps_per_second = n / elapsed;
+    t.per_step = {(p.free_flight - before.free_flight) / n,
+                  (p.sphere_update - before.sphere_update) / n,
+                  (p.contact_search - before.contact_search) / n,
+                  (p.resolution - before.resolution) / n, (p.noise - before.noise) / n};
+    for (std::size_t m = 0; m < ensemble.size(); ++m) {
+        t.contacts += ensemble.last_step(m).body_contacts + ensemble.last_step(m).plate_contacts;
+        t.sweeps = std::max(t.sweeps, ensemble.last_step(m).sweeps);
+    }
     return t;
 }
 
@@ -121,8 +158,7 @@ int main(int argc, char** argv) {
         }
     }
     const rodsea::GpuAvailability gpu = rodsea::gpu_availability();
-    std::fprintf(stderr, "GPU: %s%s\n", gpu.usable ? "" : "none usable: ",
-                 gpu.description.c_str());
+    std::fprintf(stderr, "GPU: %s%s\n", gpu.usable ? "" : "none usable: ", gpu.description.c_str());
 
     std::vector<System> systems;
     const auto want = [&only](const char* name) { return only.empty() || only == name; };
@@ -147,6 +183,21 @@ int main(int argc, char** argv) {
             rodsea::BackendOptions o;
             o.threads = cpu_threads;
             print_row(s.name, "cpu", cpu_threads, spheres, time_steps(s.scene, o, seconds));
+        }
+    }
+
+    if (want("ensemble-64x1e4")) {
+        const double spheres = 64 * 1e4;  // about: each mixture holds ~10⁴
+        if (gpu.usable) {
+            rodsea::BackendOptions o;
+            o.backend = rodsea::BackendKind::gpu;
+            print_row("ensemble-64x1e4", "gpu", 0, spheres, time_ensemble(64, o, seconds));
+        }
+        if (!skip_cpu) {
+            rodsea::BackendOptions o;
+            o.threads = cpu_threads;
+            print_row("ensemble-64x1e4", "cpu", cpu_threads, spheres,
+                      time_ensemble(64, o, seconds));
         }
     }
 

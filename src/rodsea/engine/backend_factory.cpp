@@ -3,6 +3,7 @@
 #include "rodsea/engine/cpu/cpu_backend.hpp"
 #include "rodsea/engine/parallel/host_executor.hpp"
 #include "rodsea/engine/parallel/parallel_backend.hpp"
+#include "rodsea/engine/parallel/parallel_ensemble.hpp"
 #include "rodsea/engine/state_check.hpp"
 #include "rodsea/error.hpp"
 
@@ -48,7 +49,7 @@ GpuAvailability gpu_availability() {
 
 namespace {
 
-parallel::InitialSpheres initial_spheres(const SpeciesTable& species, BodyState& bodies) {
+parallel::InitialSpheres initial_spheres(const SpeciesTable& species, BodyState bodies) {
     cpu::SphereTable table;
     table.assign(bodies.species, species);
     table.update_positions(bodies.view(), species, 1);
@@ -58,29 +59,40 @@ parallel::InitialSpheres initial_spheres(const SpeciesTable& species, BodyState&
 
 }  // namespace
 
-std::unique_ptr<StepBackend> make_backend(const SpeciesTable& species, BodyState bodies,
-                                          const BackendOptions& options) {
+std::unique_ptr<parallel::EnsembleStepper> make_ensemble_stepper(
+    const std::vector<std::pair<const SpeciesTable*, BodyState>>& systems,
+    const BackendOptions& options) {
+    std::vector<parallel::EnsembleMember> members;
+    for (const auto& [species, bodies] : systems)
+        members.push_back({species, bodies, initial_spheres(*species, bodies)});
     switch (options.backend) {
-        case BackendKind::cpu:
-            return std::make_unique<cpu::CpuBackend>(species, std::move(bodies), options.threads);
-        case BackendKind::gpu_on_host: {
-            parallel::InitialSpheres spheres = initial_spheres(species, bodies);
-            return std::make_unique<parallel::ParallelBackend<parallel::HostExecutor>>(
-                "gpu-on-host", species, std::move(bodies), std::move(spheres),
-                kGrossOverlapFraction, parallel::HostExecutor(options.threads));
-        }
+        case BackendKind::gpu_on_host:
+            return std::make_unique<parallel::ParallelEnsemble<parallel::HostExecutor>>(
+                std::move(members), kGrossOverlapFraction, parallel::HostExecutor(options.threads));
         case BackendKind::gpu: {
             const GpuAvailability gpu = gpu_availability();
             if (!gpu.usable)
                 throw InvalidParameter("backend", "\"gpu\"", "\"cpu\" here", gpu.description);
 #if defined(RODSEA_HAVE_CUDA)
-            parallel::InitialSpheres spheres = initial_spheres(species, bodies);
-            return cuda::make_gpu_backend(species, std::move(bodies), std::move(spheres),
-                                          kGrossOverlapFraction);
+            return cuda::make_gpu_ensemble(std::move(members), kGrossOverlapFraction);
 #endif
+            break;
         }
+        case BackendKind::cpu:
+            break;
     }
-    throw InvalidParameter("backend", to_string(options.backend), "\"cpu\" or \"gpu\"");
+    throw InvalidParameter("backend", to_string(options.backend), "\"gpu\"",
+                           "the data-parallel step runs the GPU backend's algorithm");
+}
+
+std::unique_ptr<StepBackend> make_backend(const SpeciesTable& species, BodyState bodies,
+                                          const BackendOptions& options) {
+    if (options.backend == BackendKind::cpu)
+        return std::make_unique<cpu::CpuBackend>(species, std::move(bodies), options.threads);
+    std::vector<std::pair<const SpeciesTable*, BodyState>> one;
+    one.emplace_back(&species, std::move(bodies));
+    return std::make_unique<parallel::OneSystemBackend>(to_string(options.backend),
+                                                        make_ensemble_stepper(one, options));
 }
 
 }  // namespace rodsea

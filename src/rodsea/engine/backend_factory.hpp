@@ -4,11 +4,18 @@
 #include <memory>
 #include <string>
 
+#include <utility>
+#include <vector>
+
 #include "rodsea/engine/body_state.hpp"
 #include "rodsea/engine/species_table.hpp"
 #include "rodsea/engine/step_backend.hpp"
 
 namespace rodsea {
+
+namespace parallel {
+class EnsembleStepper;
+}
 
 struct GpuAvailability {
     bool usable = false;
@@ -25,5 +32,11 @@ bool parse_backend(const std::string& text, BackendKind& kind);
 // asked for and gpu_availability() says it cannot be used.
 std::unique_ptr<StepBackend> make_backend(const SpeciesTable& species, BodyState bodies,
                                           const BackendOptions& options);
+
+// The data-parallel step of many systems (gpu or gpu_on_host), each given as its species (which
+// must outlive the stepper) and state. Throws InvalidParameter as make_backend does.
+std::unique_ptr<parallel::EnsembleStepper> make_ensemble_stepper(
+    const std::vector<std::pair<const SpeciesTable*, BodyState>>& systems,
+    const BackendOptions& options);
 
 }  // namespace rodsea

@@ -95,12 +95,7 @@ void Simulation::step() {
     const StepContext context = step_context(params_, step_count_ + 1);
     backend_->step(context, last_, profile_);
     step_count_ = context.step;
-    totals_.impulses += last_.impulses;
-    totals_.unresolved += last_.unresolved;
-    totals_.noise_kicks += last_.noise_kicks;
-    totals_.max_sweeps = std::max(totals_.max_sweeps, last_.sweeps);
-    totals_.max_overlap_fraction =
-        std::max(totals_.max_overlap_fraction, last_.max_overlap_fraction);
+    totals_.add(last_);
     if (!options_.stop_on_blow_up) return;
     if (auto blown = detect_blow_up(bounds_, last_)) throw BlowUpError(*blown, step_count_, time());
 }
@@ -145,10 +140,21 @@ Vec3 Simulation::angular_momentum(const Vec3& about) const {
     return l;
 }
 
+void RunTotals::add(const StepStatistics& step) {
+    impulses += step.impulses;
+    unresolved += step.unresolved;
+    noise_kicks += step.noise_kicks;
+    max_sweeps = std::max(max_sweeps, step.sweeps);
+    max_overlap_fraction = std::max(max_overlap_fraction, step.max_overlap_fraction);
+}
+
 std::uint64_t Simulation::state_hash() const {
+    return rodsea::state_hash(bodies(), step_count_);
+}
+
+std::uint64_t state_hash(const BodyState& state, std::uint64_t step_count) {
     std::uint64_t h = 14695981039346656037ULL;
-    const BodyState& state = bodies();
-    hash_bytes(h, std::vector<std::uint64_t>{step_count_});
+    hash_bytes(h, std::vector<std::uint64_t>{step_count});
     hash_bytes(h, state.species);
     hash_bytes(h, state.position);
     hash_bytes(h, state.orientation);

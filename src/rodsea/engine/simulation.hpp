@@ -32,7 +32,12 @@ struct RunTotals {
     std::uint64_t noise_kicks = 0;
     int max_sweeps = 0;
     double max_overlap_fraction = 0.0;
+
+    void add(const StepStatistics& step);
 };
+
+// FNV-1a over the step count and every bit of the state: equal hashes, equal trajectories.
+std::uint64_t state_hash(const BodyState& state, std::uint64_t step_count);
 
 class Simulation {
   public:

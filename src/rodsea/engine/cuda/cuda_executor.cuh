@@ -11,6 +11,7 @@
 #include <cub/device/device_radix_sort.cuh>
 #include <cub/device/device_reduce.cuh>
 #include <cub/device/device_scan.cuh>
+#include <cub/device/device_segmented_reduce.cuh>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -85,7 +86,10 @@ class CudaExecutor {
           sorted_values_(std::move(o.sorted_values_)),
           sum_(std::move(o.sum_)),
           max_double_(std::move(o.max_double_)),
-          max_int_(std::move(o.max_int_)) {}
+          max_int_(std::move(o.max_int_)),
+          segment_offsets_(std::move(o.segment_offsets_)),
+          segment_max_(std::move(o.segment_max_)),
+          segment_sum_(std::move(o.segment_sum_)) {}
     CudaExecutor& operator=(CudaExecutor&&) = delete;
     ~CudaExecutor() { cudaFree(scratch_); }
 
@@ -161,6 +165,29 @@ class CudaExecutor {
         return read(result, 0);
     }
 
+    // out[s] = the largest of a[offsets[s] .. offsets[s + 1]), 0 for none (the values are >= 0).
+    void segmented_max(const Array<double>& a, const std::vector<std::uint32_t>& offsets,
+                       std::vector<double>& out) {
+        segmented(a, offsets, out, segment_max_, [&](void* scratch, std::size_t& bytes) {
+            return cub::DeviceSegmentedReduce::Max(scratch, bytes, a.data(), segment_max_.data(),
+                                                   segments(offsets), segment_offsets_.data(),
+                                                   segment_offsets_.data() + 1);
+        });
+        for (double& m : out)
+            if (m < 0.0) m = 0.0;  // an empty segment's maximum is the lowest double
+    }
+    // out[s] = the sum of a[offsets[s] .. offsets[s + 1]); integers, exact in any order.
+    void segmented_sum(const Array<std::uint32_t>& a, const std::vector<std::uint32_t>& offsets,
+                       std::vector<std::uint64_t>& out) {
+        std::vector<unsigned long long> sums;
+        segmented(a, offsets, sums, segment_sum_, [&](void* scratch, std::size_t& bytes) {
+            return cub::DeviceSegmentedReduce::Sum(scratch, bytes, a.data(), segment_sum_.data(),
+                                                   segments(offsets), segment_offsets_.data(),
+                                                   segment_offsets_.data() + 1);
+        });
+        out.assign(sums.begin(), sums.end());
+    }
+
     template <class T>
     void upload(Array<T>& a, const std::vector<T>& from) const {
         a.resize(from.size());
@@ -171,9 +198,13 @@ class CudaExecutor {
     }
     template <class T>
     void download(const Array<T>& a, std::size_t n, std::vector<T>& to) const {
+        download(a, 0, n, to);
+    }
+    template <class T>
+    void download(const Array<T>& a, std::size_t first, std::size_t n, std::vector<T>& to) const {
         to.resize(n);
         if (n > 0)
-            check(cudaMemcpy(to.data(), a.data(), n * sizeof(T), cudaMemcpyDeviceToHost),
+            check(cudaMemcpy(to.data(), a.data() + first, n * sizeof(T), cudaMemcpyDeviceToHost),
                   "download");
     }
     template <class T>
@@ -212,6 +243,24 @@ class CudaExecutor {
         check(cub::DeviceReduce::Max(scratch(bytes), bytes, a.data(), result.data(), count), "max");
         return read(result, 0);
     }
+    int segments(const std::vector<std::uint32_t>& offsets) {
+        return static_cast<int>(offsets.size() - 1);
+    }
+    // Uploads the offsets, runs `reduce` (CUB's two calls: size, then work) into `result` and
+    // copies the per-segment values back.
+    template <class In, class T, class Reduce>
+    void segmented(const Array<In>&, const std::vector<std::uint32_t>& offsets, std::vector<T>& out,
+                   Array<T>& result, Reduce reduce) {
+        out.clear();
+        if (offsets.size() < 2) return;
+        upload(segment_offsets_, offsets);
+        result.resize(offsets.size() - 1);
+        std::size_t bytes = 0;
+        check(reduce(nullptr, bytes), "segmented reduce");
+        check(reduce(scratch(bytes), bytes), "segmented reduce");
+        download(result, offsets.size() - 1, out);
+    }
+
     Array<double>& max_scratch(double) { return max_double_; }
     Array<int>& max_scratch(int) { return max_int_; }
 
@@ -221,6 +270,9 @@ class CudaExecutor {
     Array<unsigned long long> sum_;
     Array<double> max_double_;
     Array<int> max_int_;
+    Array<std::uint32_t> segment_offsets_;
+    Array<double> segment_max_;
+    Array<unsigned long long> segment_sum_;
 };
 
 }  // namespace rodsea::cuda

@@ -1,4 +1,5 @@
-// The GPU backend: the data-parallel step (engine/parallel/) instantiated with the CUDA executor.
+// The GPU backend: the data-parallel ensemble step (engine/parallel/) instantiated with the CUDA
+// executor.
 // The only translation unit nvcc compiles for the engine.
 #include <cuda_runtime.h>
 
@@ -8,7 +9,7 @@
 
 #include "rodsea/engine/cuda/cuda_executor.cuh"
 #include "rodsea/engine/cuda/gpu_backend.hpp"
-#include "rodsea/engine/parallel/parallel_backend.hpp"
+#include "rodsea/engine/parallel/parallel_ensemble.hpp"
 
 namespace rodsea::cuda {
 
@@ -32,12 +33,10 @@ GpuAvailability probe_device() {
     return {true, text};
 }
 
-std::unique_ptr<StepBackend> make_gpu_backend(const SpeciesTable& species, BodyState bodies,
-                                              parallel::InitialSpheres spheres,
-                                              double gross_overlap_fraction) {
-    return std::make_unique<parallel::ParallelBackend<CudaExecutor>>(
-        "gpu", species, std::move(bodies), std::move(spheres), gross_overlap_fraction,
-        CudaExecutor());
+std::unique_ptr<parallel::EnsembleStepper> make_gpu_ensemble(
+    std::vector<parallel::EnsembleMember> members, double gross_overlap_fraction) {
+    return std::make_unique<parallel::ParallelEnsemble<CudaExecutor>>(
+        std::move(members), gross_overlap_fraction, CudaExecutor());
 }
 
 }  // namespace rodsea::cuda

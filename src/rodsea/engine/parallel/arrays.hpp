@@ -6,6 +6,7 @@
 
 #include "rodsea/engine/physics/contact.hpp"
 #include "rodsea/engine/physics/rigid_rotation.hpp"
+#include "rodsea/engine/physics/step_context.hpp"
 #include "rodsea/math/hostdevice.hpp"
 #include "rodsea/math/mat3.hpp"
 #include "rodsea/math/periodic_box.hpp"
@@ -68,11 +69,38 @@ struct CellGrid {
     }
 };
 
-struct CellList {
+// One system's grid; its cells are first_cell .. first_cell + grid.cells() − 1 of the cell list.
+struct SystemGrid {
     CellGrid grid;
+    std::uint32_t first_cell = 0;
+};
+
+struct CellList {
     const std::uint32_t* sorted_sphere = nullptr;
     const std::uint32_t* start = nullptr;
     const std::uint32_t* end = nullptr;
+};
+
+// Where one system's contacts are in the step's list: its body contacts, then (after every
+// system's body contacts) its plate contacts.
+struct ContactRange {
+    std::uint32_t body_first = 0, body_count = 0, plate_first = 0;
+};
+
+// The independent systems stepped together (an ensemble; a lone run is one system): each body's
+// system, and each system's step, first body, grid and contacts. Bodies, spheres and contacts
+// of a system are contiguous, in system order.
+struct Systems {
+    const StepContext* context = nullptr;
+    const std::uint32_t* of_body = nullptr;
+    const std::uint32_t* first_body = nullptr;
+    const SystemGrid* grid = nullptr;
+    const ContactRange* contacts = nullptr;
+    std::uint32_t count = 0;
+
+    RODSEA_HD std::uint32_t of_sphere(const SphereArrays& spheres, std::uint32_t s) const {
+        return of_body[spheres.body[s]];
+    }
 };
 
 // Which contacts touch each body: the contacts adjacent[start[b] .. end[b]), in contact order.

@@ -29,9 +29,10 @@ class ContactColouring {
     using Array = typename Executor::template Array<T>;
 
     // Contacts [0, body_contacts) are between bodies, the rest with a plate; bodies number
-    // `bodies`. Afterwards colour c's contacts are order()[range(c).first ..] in contact order.
-    void colour(Executor& exec, const Array<Contact>& contacts, std::uint32_t count,
-                std::uint32_t body_contacts, std::uint32_t bodies) {
+    // `bodies`; `rank` orders the contacts (RankContactsInTheirSystem). Afterwards colour c's
+    // contacts are order()[range(c).first ..].
+    void colour(Executor& exec, const Array<Contact>& contacts, const std::uint32_t* rank,
+                std::uint32_t count, std::uint32_t body_contacts, std::uint32_t bodies) {
         reserve(count, bodies);
         const std::uint32_t incidences = body_contacts + count;  // 2B + P
         exec.launch(count, ListIncidences{contacts.data(), body_contacts, incidence_body_.data(),
@@ -47,8 +48,8 @@ class ContactColouring {
             if (static_cast<std::uint32_t>(round) > count)
                 throw std::logic_error("rodsea: the contact colouring did not finish");
             exec.write(waiting_, 0, 0);
-            exec.launch(count, ColourRound{contacts.data(), incidence(), round, colour_.data(),
-                                           coloured_in_.data(), waiting_.data()});
+            exec.launch(count, ColourRound{contacts.data(), rank, incidence(), round,
+                                           colour_.data(), coloured_in_.data(), waiting_.data()});
             if (exec.read(waiting_, 0) == 0) break;
         }
         colours_ = count == 0 ? 0 : exec.max_of(colour_, count) + 1;

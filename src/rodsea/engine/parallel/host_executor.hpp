@@ -82,13 +82,34 @@ class HostExecutor {
                                std::uint64_t{0});
     }
 
+    // out[s] = the largest of a[offsets[s] .. offsets[s + 1]), 0 for none (the values are >= 0).
+    void segmented_max(const Array<double>& a, const std::vector<std::uint32_t>& offsets,
+                       std::vector<double>& out) const {
+        out.assign(offsets.size() - 1, 0.0);
+        for (std::size_t s = 0; s + 1 < offsets.size(); ++s)
+            for (std::uint32_t i = offsets[s]; i < offsets[s + 1]; ++i)
+                out[s] = std::max(out[s], a.data_[i]);
+    }
+    // out[s] = the sum of a[offsets[s] .. offsets[s + 1]).
+    void segmented_sum(const Array<std::uint32_t>& a, const std::vector<std::uint32_t>& offsets,
+                       std::vector<std::uint64_t>& out) const {
+        out.assign(offsets.size() - 1, 0);
+        for (std::size_t s = 0; s + 1 < offsets.size(); ++s)
+            for (std::uint32_t i = offsets[s]; i < offsets[s + 1]; ++i)
+                out[s] += a.data_[i];
+    }
+
     template <class T>
     void upload(Array<T>& a, const std::vector<T>& from) const {
         a.data_ = from;
     }
     template <class T>
     void download(const Array<T>& a, std::size_t n, std::vector<T>& to) const {
-        to.assign(a.data_.begin(), a.data_.begin() + to_end(n));
+        download(a, 0, n, to);
+    }
+    template <class T>
+    void download(const Array<T>& a, std::size_t first, std::size_t n, std::vector<T>& to) const {
+        to.assign(a.data_.begin() + to_end(first), a.data_.begin() + to_end(first + n));
     }
     template <class T>
     T read(const Array<T>& a, std::size_t i) const {

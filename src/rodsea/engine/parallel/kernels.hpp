@@ -9,6 +9,10 @@
 // two of one colour do. Sums and maxima are taken afterwards by the executor's reductions, and
 // orders by stable sorts, so a trajectory is the same bit for bit on every run of one build on
 // one device.
+//
+// The kernels step many independent systems at once (Systems): each element reads its own
+// system's step (box, plates, noise, solver settings). Nothing a system's elements compute
+// depends on the other systems, so a system steps to the same bits in an ensemble as alone.
 #include <cstdint>
 
 #include "rodsea/engine/parallel/arrays.hpp"
@@ -28,11 +32,12 @@ namespace rodsea::parallel {
 struct FlyBodies {
     BodyArrays bodies;
     SpeciesArrays species;
-    StepContext step;
+    Systems systems;
     double* drift2;
     double* turn2;
 
     RODSEA_HD void operator()(std::uint32_t i) const {
+        const StepContext& step = systems.context[systems.of_body[i]];
         const std::uint32_t k = bodies.species[i];
         const physics::Rotor& rotor = species.rotor[k];
         const physics::PlanarSpeed2 s = physics::planar_speed2(
@@ -63,16 +68,28 @@ struct PlaceSpheres {
 // Stage 3a, per sphere: its cell, as a key for the sort that builds the cell list.
 struct KeySpheresByCell {
     SphereArrays spheres;
-    CellGrid grid;
-    PeriodicBox2D box;
+    Systems systems;
     std::uint32_t* key;
     std::uint32_t* sphere;
 
     RODSEA_HD void operator()(std::uint32_t s) const {
+        const std::uint32_t system = systems.of_sphere(spheres, s);
+        const SystemGrid& g = systems.grid[system];
+        const PeriodicBox2D& box = systems.context[system].box;
         const Vec3& p = spheres.position[s];
-        key[s] = grid.row_of(p.y, box.ly) * grid.nx + grid.column_of(p.x, box.lx);
+        key[s] =
+            g.first_cell + g.grid.row_of(p.y, box.ly) * g.grid.nx + g.grid.column_of(p.x, box.lx);
         sphere[s] = s;
     }
+};
+
+// out[i] = values[at[i]]: a few entries of a long array, to copy to the host.
+struct GatherAt {
+    const std::uint32_t* values;
+    const std::uint32_t* at;
+    std::uint32_t* out;
+
+    RODSEA_HD void operator()(std::uint32_t i) const { out[i] = values[at[i]]; }
 };
 
 // Per element of a sorted key array: where each key's run begins and ends (start[key] .. end[key]);
@@ -91,12 +108,14 @@ struct MarkRuns {
 
 // visit(contact, r_j) for each sphere j > i of another body that overlaps sphere i: the contact
 // as the CPU's search makes it (d = p_i − p_j, minimum image; normal from j's body into i's),
-// without its coefficients. Partners are looked for in i's cell and the eight around it.
+// without its coefficients. Partners are looked for in i's cell and the eight around it, in i's
+// system's grid.
 template <class Visit>
 RODSEA_HD void for_each_touching_partner(std::uint32_t i, const SphereArrays& spheres,
                                          const BodyArrays& bodies, const CellList& cells,
-                                         const PeriodicBox2D& box, Visit&& visit) {
-    const CellGrid& grid = cells.grid;
+                                         const SystemGrid& system_grid, const PeriodicBox2D& box,
+                                         Visit&& visit) {
+    const CellGrid& grid = system_grid.grid;
     const Vec3 p = spheres.position[i];
     const std::uint32_t bi = spheres.body[i];
     const double ri = spheres.radius[i];
@@ -109,7 +128,7 @@ RODSEA_HD void for_each_touching_partner(std::uint32_t i, const SphereArrays& sp
         const std::uint32_t row = (cy + grid.ny + static_cast<std::uint32_t>(dy)) % grid.ny;
         for (int dx = x_from; dx <= x_to; ++dx) {
             const std::uint32_t column = (cx + grid.nx + static_cast<std::uint32_t>(dx)) % grid.nx;
-            const std::uint32_t c = row * grid.nx + column;
+            const std::uint32_t c = system_grid.first_cell + row * grid.nx + column;
             for (std::uint32_t m = cells.start[c]; m < cells.end[c]; ++m) {
                 const std::uint32_t j = cells.sorted_sphere[m];
                 const std::uint32_t bj = spheres.body[j];
@@ -130,13 +149,15 @@ struct CountContacts {
     SphereArrays spheres;
     BodyArrays bodies;
     CellList cells;
-    StepContext step;
+    Systems systems;
     std::uint32_t* body_count;
     std::uint32_t* plate_count;
 
     RODSEA_HD void operator()(std::uint32_t i) const {
+        const std::uint32_t system = systems.of_sphere(spheres, i);
+        const StepContext& step = systems.context[system];
         std::uint32_t n = 0;
-        for_each_touching_partner(i, spheres, bodies, cells, step.box,
+        for_each_touching_partner(i, spheres, bodies, cells, systems.grid[system], step.box,
                                   [&n](const Contact&, double) { ++n; });
         body_count[i] = n;
         const physics::PlateOverlaps o =
@@ -153,7 +174,7 @@ struct WriteContacts {
     BodyArrays bodies;
     SpeciesArrays species;
     CellList cells;
-    StepContext step;
+    Systems systems;
     const std::uint32_t* body_offset;
     const std::uint32_t* plate_offset;
     std::uint32_t body_contacts;  // where the plate contacts begin
@@ -161,16 +182,19 @@ struct WriteContacts {
     double* depth;
 
     RODSEA_HD void operator()(std::uint32_t i) const {
+        const std::uint32_t system = systems.of_sphere(spheres, i);
+        const StepContext& step = systems.context[system];
         const double ri = spheres.radius[i];
         std::uint32_t at = body_offset[i];
-        for_each_touching_partner(i, spheres, bodies, cells, step.box, [&](Contact& c, double rj) {
-            const ContactCoefficients& k =
-                species.pair_coefficients(bodies.species[c.a], bodies.species[c.b]);
-            c.friction = k.friction;
-            c.restitution = k.restitution;
-            depth[at] = c.overlap / (ri < rj ? ri : rj);
-            contacts[at++] = c;
-        });
+        for_each_touching_partner(
+            i, spheres, bodies, cells, systems.grid[system], step.box, [&](Contact& c, double rj) {
+                const ContactCoefficients& k =
+                    species.pair_coefficients(bodies.species[c.a], bodies.species[c.b]);
+                c.friction = k.friction;
+                c.restitution = k.restitution;
+                depth[at] = c.overlap / (ri < rj ? ri : rj);
+                contacts[at++] = c;
+            });
         const std::uint32_t b = spheres.body[i];
         const Vec3& p = spheres.position[i];
         const physics::PlateOverlaps o = physics::plate_overlaps(p.z, ri, step.plates);
@@ -225,6 +249,21 @@ struct ListIncidences {
     }
 };
 
+// Per contact: its index within its own system's list (body contacts, then plate contacts, as
+// that system alone would list them), which ranks it in the colouring: a system's colours then do
+// not depend on the systems beside it.
+struct RankContactsInTheirSystem {
+    const Contact* contacts;
+    Systems systems;
+    std::uint32_t body_contacts;  // of every system
+    std::uint32_t* rank;
+
+    RODSEA_HD void operator()(std::uint32_t k) const {
+        const ContactRange& r = systems.contacts[systems.of_body[contacts[k].a]];
+        rank[k] = k < body_contacts ? k - r.body_first : r.body_count + (k - r.plate_first);
+    }
+};
+
 // The contacts that share a body with contact k (k itself excluded; a contact that shares both
 // bodies is visited twice).
 template <class Visit>
@@ -237,12 +276,12 @@ RODSEA_HD void for_each_neighbour(std::uint32_t k, const Contact& c, const Incid
         if (incidence.contact[m] != k) visit(incidence.contact[m]);
 }
 
-// Whether contact k1 goes before contact k2 in the colouring: by a hash of the index, so that
-// runs of neighbouring contacts (often consecutive in the list) do not form long chains of
-// decreasing rank, each of which costs a round.
-RODSEA_HD inline bool outranks(std::uint32_t k1, std::uint32_t k2) {
-    const std::uint64_t h1 = splitmix64(k1), h2 = splitmix64(k2);
-    return h1 != h2 ? h1 > h2 : k1 > k2;
+// Whether a contact of rank r1 goes before one of rank r2 (RankContactsInTheirSystem) in the
+// colouring: by a hash of the rank, so that runs of neighbouring contacts (often consecutive in
+// the list) do not form long chains of decreasing priority, each of which costs a round.
+RODSEA_HD inline bool outranks(std::uint32_t r1, std::uint32_t r2) {
+    const std::uint64_t h1 = splitmix64(r1), h2 = splitmix64(r2);
+    return h1 != h2 ? h1 > h2 : r1 > r2;
 }
 
 RODSEA_HD inline int lowest_clear_bit(std::uint64_t used) {
@@ -262,6 +301,7 @@ RODSEA_HD inline int lowest_clear_bit(std::uint64_t used) {
 // rounds. Sets `waiting` while a contact is left for a later round.
 struct ColourRound {
     const Contact* contacts;
+    const std::uint32_t* rank;
     Incidence incidence;
     int round;
     int* colour;
@@ -274,7 +314,7 @@ struct ColourRound {
         bool waits = false;
         for_each_neighbour(k, c, incidence, [&](std::uint32_t n) {
             const int r = load_shared(coloured_in + n);
-            if ((r < 0 || r == round) && outranks(n, k)) waits = true;
+            if ((r < 0 || r == round) && outranks(rank[n], rank[k])) waits = true;
         });
         if (waits) {
             store_shared(waiting, 1);
@@ -329,15 +369,18 @@ struct SweepColour {
     BodyArrays bodies;
     const double* inv_mass;
     const Mat3* inv_inertia;
-    StepContext step;
+    Systems systems;
     int sweep;
     int* last_changed;  // per body: the last sweep that gave it an impulse
     ContactTallies tallies;
-    int* any_impulse;
+    int* any_impulse;  // per system
 
     RODSEA_HD void operator()(std::uint32_t index) const {
         const std::uint32_t k = order[first + index];
         const Contact& c = contacts[k];
+        const std::uint32_t system = systems.of_body[c.a];
+        const StepContext& step = systems.context[system];
+        if (sweep > step.max_sweeps) return;  // this system's cap (another's may be higher)
         const bool plate = c.with_plate();
         const int changed =
             plate ? last_changed[c.a]
@@ -367,7 +410,7 @@ struct SweepColour {
         }
         ++tallies.impulses[k];
         if (-un > kCollisionSpeed) ++tallies.collisions[k];
-        store_shared(any_impulse, 1);
+        store_shared(any_impulse + system, 1);
     }
 };
 
@@ -375,11 +418,12 @@ struct SweepColour {
 struct FlagApproaching {
     const Contact* contacts;
     BodyArrays bodies;
-    StepContext step;
+    Systems systems;
     std::uint32_t* approaching;
 
     RODSEA_HD void operator()(std::uint32_t k) const {
         const Contact& c = contacts[k];
+        const StepContext& step = systems.context[systems.of_body[c.a]];
         const Vec3 u = contact_relative_velocity(c, bodies, {0.0, 0.0, step.plates.velocity_z});
         approaching[k] = dot(u, c.normal) < -step.approach_tolerance ? 1u : 0u;
     }
@@ -390,9 +434,10 @@ struct FlagApproaching {
 struct ProjectOutOfPlates {
     BodyArrays bodies;
     SphereArrays spheres;
-    physics::PlateState plates;
+    Systems systems;
 
     RODSEA_HD void operator()(std::uint32_t b) const {
+        const physics::PlateState& plates = systems.context[systems.of_body[b]].plates;
         double base = 0.0, lid = 0.0;
         const std::uint32_t first = spheres.first_of[b], last = spheres.first_of[b + 1];
         for (std::uint32_t s = first; s < last; ++s) {
@@ -410,19 +455,24 @@ struct ProjectOutOfPlates {
 };
 
 // Stage 5, per body: a polar body's spin kick for each plate it hit this step (MODEL.md §3), the
-// lid's before the base's as on the CPU, with the fastest approach that got an impulse.
+// lid's before the base's as on the CPU, with the fastest approach that got an impulse. The noise
+// hashes the body's index in its own system. No kick at ε = 0 (the CPU's rule: a kick of ±0
+// would still change the sign of a zero spin).
 struct KickPolarBodies {
     BodyArrays bodies;
     SpeciesArrays species;
     const Contact* contacts;
     Incidence incidence;
     const double* hit_speed;
-    StepContext step;
+    Systems systems;
     std::uint32_t* kicks;
 
     RODSEA_HD void operator()(std::uint32_t b) const {
         kicks[b] = 0;
-        if (!species.polar[bodies.species[b]]) return;
+        const std::uint32_t system = systems.of_body[b];
+        const StepContext& step = systems.context[system];
+        if (step.noise_epsilon == 0.0 || !species.polar[bodies.species[b]]) return;
+        const std::uint32_t own = b - systems.first_body[system];
         double lid = 0.0, base = 0.0;
         for (std::uint32_t m = incidence.start[b]; m < incidence.end[b]; ++m) {
             const std::uint32_t k = incidence.contact[m];
@@ -431,13 +481,13 @@ struct KickPolarBodies {
             if (plate == kBasePlate && hit_speed[k] > base) base = hit_speed[k];
         }
         if (lid > 0.0) {
-            bodies.spin[b].z +=
-                step.noise_epsilon * lid * physics::noise_sign(step.seed, step.step, b, kLidPlate);
+            bodies.spin[b].z += step.noise_epsilon * lid *
+                                physics::noise_sign(step.seed, step.step, own, kLidPlate);
             ++kicks[b];
         }
         if (base > 0.0) {
             bodies.spin[b].z += step.noise_epsilon * base *
-                                physics::noise_sign(step.seed, step.step, b, kBasePlate);
+                                physics::noise_sign(step.seed, step.step, own, kBasePlate);
             ++kicks[b];
         }
     }

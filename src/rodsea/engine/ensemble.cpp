@@ -1,0 +1,98 @@
+#include "rodsea/engine/ensemble.hpp"
+
+#include <sstream>
+#include <string>
+
+#include "rodsea/engine/backend_factory.hpp"
+#include "rodsea/engine/parallel/parallel_ensemble.hpp"
+#include "rodsea/error.hpp"
+
+namespace rodsea {
+
+Ensemble::Ensemble(std::vector<Simulation> systems, BackendOptions options) : options_(options) {
+    if (systems.empty()) throw InvalidParameter("systems", "none", "at least one");
+    if (options_.threads < 1)
+        throw InvalidParameter("threads", std::to_string(options_.threads), ">= 1");
+    for (const Simulation& s : systems) {
+        params_.push_back(s.parameters());
+        step_count_.push_back(s.step_count());
+        bounds_.push_back(BlowUpBounds::of(s.parameters(), s.bodies().size()));
+    }
+    last_.resize(systems.size());
+    totals_.resize(systems.size());
+    if (options_.backend == BackendKind::cpu) {
+        for (Simulation& s : systems)
+            s.set_threads(options_.threads);
+        cpu_systems_ = std::move(systems);
+        return;
+    }
+    std::vector<std::pair<const SpeciesTable*, BodyState>> states;
+    for (std::size_t m = 0; m < systems.size(); ++m) {
+        species_.push_back(std::make_unique<SpeciesTable>(SpeciesTable::from(params_[m])));
+        states.emplace_back(species_.back().get(), systems[m].bodies());
+    }
+    stepper_ = make_ensemble_stepper(states, options_);
+}
+
+Ensemble::Ensemble(Ensemble&&) noexcept = default;
+Ensemble& Ensemble::operator=(Ensemble&&) noexcept = default;
+Ensemble::~Ensemble() = default;
+
+const char* Ensemble::backend_name() const {
+    return to_string(options_.backend);
+}
+
+void Ensemble::step() {
+    if (!cpu_systems_.empty()) {
+        for (std::size_t m = 0; m < cpu_systems_.size(); ++m) {
+            cpu_systems_[m].step();  // throws its own BlowUpError
+            step_count_[m] = cpu_systems_[m].step_count();
+            last_[m] = cpu_systems_[m].last_step();
+            totals_[m] = cpu_systems_[m].totals();
+        }
+        profile_ = {};
+        for (const Simulation& s : cpu_systems_) {
+            profile_.free_flight += s.profile().free_flight;
+            profile_.sphere_update += s.profile().sphere_update;
+            profile_.contact_search += s.profile().contact_search;
+            profile_.resolution += s.profile().resolution;
+            profile_.noise += s.profile().noise;
+        }
+        return;
+    }
+    std::vector<StepContext> contexts;
+    for (std::size_t m = 0; m < size(); ++m)
+        contexts.push_back(step_context(params_[m], step_count_[m] + 1));
+    stepper_->step(contexts, last_, profile_);
+    for (std::size_t m = 0; m < size(); ++m) {
+        ++step_count_[m];
+        totals_[m].add(last_[m]);
+    }
+    for (std::size_t m = 0; m < size(); ++m)
+        check_blow_up(m);
+}
+
+void Ensemble::check_blow_up(std::size_t m) const {
+    if (!options_.stop_on_blow_up) return;
+    if (auto blown = detect_blow_up(bounds_[m], last_[m])) {
+        std::ostringstream what;
+        what << "system " << m << ": " << blown->what;
+        blown->what = what.str();
+        throw BlowUpError(*blown, step_count_[m], time(m));
+    }
+}
+
+void Ensemble::run(std::uint64_t steps) {
+    for (std::uint64_t i = 0; i < steps; ++i)
+        step();
+}
+
+const BodyState& Ensemble::bodies(std::size_t m) const {
+    return cpu_systems_.empty() ? stepper_->bodies(m) : cpu_systems_[m].bodies();
+}
+
+std::uint64_t Ensemble::state_hash(std::size_t m) const {
+    return rodsea::state_hash(bodies(m), step_count_[m]);
+}
+
+}  // namespace rodsea

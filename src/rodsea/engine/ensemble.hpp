@@ -1,0 +1,71 @@
+#pragma once
+// Many independent systems stepped together: a phase diagram's dozens of small systems, each too
+// small to fill a GPU, share one device's kernels (each kernel's elements are the bodies,
+// spheres or contacts of every system). On the CPU they are stepped one after another. Each
+// system steps exactly as it would alone on the same backend: the same bits.
+//
+//   std::vector<Simulation> systems;
+//   for (double phi : {0.2, 0.5, 0.8}) systems.emplace_back(params(phi), bodies(phi));
+//   Ensemble ensemble(std::move(systems), {.backend = BackendKind::gpu});
+//   ensemble.run(100000);
+//   ensemble.bodies(1);  ensemble.time(1);
+//
+// The systems come as Simulations, new or resumed: they are validated as Simulations are, and
+// each keeps its own parameters (box, drive, species, noise, seed, solver) and step count; they
+// must share dt only in the sense that each step advances every system by its own dt.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "rodsea/engine/simulation.hpp"
+
+namespace rodsea {
+
+namespace parallel {
+class EnsembleStepper;
+}
+
+class Ensemble {
+  public:
+    // Throws InvalidParameter for no systems, or for a backend this build or machine cannot
+    // run (naming "backend"). options.threads: the CPU backend's, for each system in turn.
+    Ensemble(std::vector<Simulation> systems, BackendOptions options);
+    Ensemble(Ensemble&&) noexcept;
+    Ensemble& operator=(Ensemble&&) noexcept;
+    ~Ensemble();
+
+    std::size_t size() const { return params_.size(); }
+    const char* backend_name() const;
+
+    // Every system by one step. Throws BlowUpError (its message naming the system) after a step
+    // in which one crossed a blow-up bound, as Simulation::step does.
+    void step();
+    void run(std::uint64_t steps);
+
+    const EngineParameters& parameters(std::size_t m) const { return params_[m]; }
+    std::uint64_t step_count(std::size_t m) const { return step_count_[m]; }
+    double time(std::size_t m) const { return static_cast<double>(step_count_[m]) * params_[m].dt; }
+    const BodyState& bodies(std::size_t m) const;
+    const StepStatistics& last_step(std::size_t m) const { return last_[m]; }
+    const RunTotals& totals(std::size_t m) const { return totals_[m]; }
+    std::uint64_t state_hash(std::size_t m) const;
+    // The time of each stage over every system together.
+    const StageProfile& profile() const { return profile_; }
+
+  private:
+    void check_blow_up(std::size_t m) const;
+
+    BackendOptions options_;
+    std::vector<EngineParameters> params_;
+    std::vector<std::uint64_t> step_count_;
+    std::vector<BlowUpBounds> bounds_;
+    std::vector<StepStatistics> last_;
+    std::vector<RunTotals> totals_;
+    StageProfile profile_;
+    // The CPU steps each Simulation; the data-parallel backends one stepper for all.
+    std::vector<Simulation> cpu_systems_;
+    std::vector<std::unique_ptr<SpeciesTable>> species_;
+    std::unique_ptr<parallel::EnsembleStepper> stepper_;
+};
+
+}  // namespace rodsea
