@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "child_process.hpp"
+#include "rodsea/engine/backend_factory.hpp"
 #include "scratch_dir.hpp"
 namespace rodsea {
 namespace {
@@ -86,6 +87,25 @@ TEST_F(CalibrateCli, TinyGridGivesAWellFormedTableWhateverTheThreadCount) {
     // The same table, bit for bit, on one thread and on two.
     EXPECT_EQ(read_text(path("out1") / "calibration.csv"),
               read_text(path("out2") / "calibration.csv"));
+}
+
+// --backend gpu where no GPU can run is refused before any work, saying why; a bad name too.
+TEST_F(CalibrateCli, AnUnusableGpuIsRefusedBeforeAnyRun) {
+    const ChildResult bad = run_rodsea({"calibrate", path("grid.toml").string(), "--out",
+                                        path("bad").string(), "--backend", "tpu"},
+                                       scratch_->path());
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_NE(bad.err.find("--backend = tpu"), std::string::npos) << bad.err;
+    EXPECT_FALSE(fs::exists(path("bad")));
+    const GpuAvailability gpu = gpu_availability();
+    if (gpu.usable) GTEST_SKIP() << "a GPU is usable here: " << gpu.description;
+    const ChildResult r = run_rodsea({"calibrate", path("grid.toml").string(), "--out",
+                                      path("gpu").string(), "--backend", "gpu"},
+                                     scratch_->path());
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("invalid --backend = gpu"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(gpu.description), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(path("gpu")));
 }
 
 TEST_F(CalibrateCli, BadConfigIsRefusedByKeyBeforeAnyRun) {

@@ -16,6 +16,7 @@
 #include "rodsea/calibration/calibration_table.hpp"
 #include "rodsea/calibration/single_body_experiment.hpp"
 #include "rodsea/config/config_file.hpp"
+#include "rodsea/engine/backend_factory.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/random.hpp"
 #include "scratch_dir.hpp"
@@ -75,6 +76,44 @@ TEST(SingleBodyExperiment, WithoutNoiseALonePolarRodKeepsItsAxisAndTravelsAlongI
     EXPECT_GT(std::abs(r.axial_speed.mean), 5.0 * r.axial_speed.error);
     EXPECT_GT(std::abs(r.axial_speed.mean), 3.0 * std::abs(r.transverse_speed.mean));
     EXPECT_EQ(r.unresolved, 0u);
+}
+
+// The copies of several points stepped together as one ensemble (what `rodsea calibrate
+// --backend gpu` does on a device) give each copy the trace it has alone on the same backend, bit
+// for bit: here on the CPU and on the GPU's algorithm run by the host.
+TEST(SingleBodyExperiment, CopiesSteppedTogetherHaveTheirLoneTraces) {
+    std::vector<SingleBodyExperiment> points(2);
+    for (SingleBodyExperiment& e : points) {
+        e.species = polar_rod_species();
+        e.warmup = 0.01;
+        e.duration = 0.05;
+    }
+    points[1].epsilon = 0.02;
+    points[1].drive.gap = 1.5;
+    const int copies = 2;
+    for (const BackendKind kind : {BackendKind::cpu, BackendKind::gpu_on_host}) {
+        BackendOptions options;
+        options.backend = kind;
+        int calls = 0;
+        const auto together =
+            run_single_body_copies_together(points, copies, options, [&calls](double) { ++calls; });
+        ASSERT_TRUE(together.has_value());
+        EXPECT_EQ(calls, 12);  // 2 warm-up + 10 measured periods of 5 ms
+        for (std::size_t p = 0; p < points.size(); ++p)
+            for (int c = 0; c < copies; ++c) {
+                const SingleBodyTrace alone = run_single_body_copy(points[p], c, options);
+                const SingleBodyTrace& t = (*together)[p][static_cast<std::size_t>(c)];
+                SCOPED_TRACE(std::string(to_string(kind)) + " point " + std::to_string(p) +
+                             " copy " + std::to_string(c));
+                ASSERT_EQ(t.angle.size(), 10u);
+                EXPECT_EQ(t.angle, alone.angle);
+                EXPECT_EQ(t.axial, alone.axial);
+                EXPECT_EQ(t.transverse, alone.transverse);
+            }
+    }
+    // Points with another dt cannot step in lockstep.
+    points[1].dt = 2.5e-6;
+    EXPECT_THROW(run_single_body_copies_together(points, copies, {}), InvalidParameter);
 }
 
 TEST(SingleBodyExperiment, NoiseMakesTheAxisDiffuse) {

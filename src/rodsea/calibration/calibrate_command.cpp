@@ -20,6 +20,7 @@
 #include "rodsea/cli/arguments.hpp"
 #include "rodsea/cli/count_progress.hpp"
 #include "rodsea/cli/stop_signal.hpp"
+#include "rodsea/engine/backend_factory.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
 #include "rodsea/number_text.hpp"
@@ -29,14 +30,17 @@ namespace rodsea {
 const CommandSpec& calibrate_command_spec() {
     static const CommandSpec spec{
         "calibrate",
-        "CONFIG [--out DIR] [--threads N] [--quiet]",
+        "CONFIG [--out DIR] [--threads N] [--backend cpu|gpu] [--quiet]",
         "single-body speed and D_r over ε, gap and dt",
         "Single-body experiments (docs/validation.md): for every combination of the ε, gaps and "
         "time steps in CONFIG's [calibrate] table, `copies` independent bodies of one kind are "
         "each shaken alone for `warmup` + `duration` seconds. Each point gives the mean speed "
         "along the body's axis (+: toward body +x, thick → thin for a polar rod) and the "
         "fraction of copies going that way, the speed distribution (per drive period), and D_r "
-        "from C(t) = exp(−D_r t) with a jackknife error. The points run in parallel. DIR "
+        "from C(t) = exp(−D_r t) with a jackknife error. The points run in parallel: on the CPU "
+        "one "
+        "copy per thread, on the GPU (--backend gpu) every copy of the points that share dt in "
+        "the same kernels, each copy's trace the one it has alone on the GPU. DIR "
         "(default out/<CONFIG name>) receives:\n"
         "calibration.csv: one row per point: gap, dt, ε, D_r ± err, speed ± err, ...\n"
         "speed_distribution.csv: the per-period axial speeds of each point as a histogram\n"
@@ -45,6 +49,9 @@ const CommandSpec& calibrate_command_spec() {
           "output directory (replaced files: calibration.csv, speed_distribution.csv, "
           "calibrate.toml)"},
          {"--threads", "N", "worker threads, [1, 256] (default: the machine's cores)"},
+         {"--backend", "cpu|gpu",
+          "what steps the copies (default cpu); gpu needs a build with CUDA and a device, and is "
+          "refused before any work where there is none"},
          {"--quiet", "", "no plan and no progress"}},
         std::string("CONFIG keys (units and ranges):\n") + kCalibrationKeysHelp};
     return spec;
@@ -169,6 +176,37 @@ std::optional<std::vector<std::vector<SingleBodyTrace>>> run_copies(
     return traces;
 }
 
+// The same on the GPU: the points grouped by dt (copies of a group step in lockstep), each group
+// one ensemble of all its copies.
+std::optional<std::vector<std::vector<SingleBodyTrace>>> run_copies_together(
+    const std::vector<SingleBodyExperiment>& experiments, int copies, const BackendOptions& options,
+    CountProgress& progress) {
+    std::vector<std::vector<SingleBodyTrace>> traces(experiments.size());
+    std::vector<char> done(experiments.size(), 0);
+    std::size_t finished = 0;  // copies
+    for (std::size_t first = 0; first < experiments.size(); ++first) {
+        if (done[first]) continue;
+        std::vector<std::size_t> group;
+        std::vector<SingleBodyExperiment> members;
+        for (std::size_t i = first; i < experiments.size(); ++i)
+            if (!done[i] && experiments[i].dt == experiments[first].dt) {
+                group.push_back(i);
+                members.push_back(experiments[i]);
+                done[i] = 1;
+            }
+        const double copies_in_group = static_cast<double>(group.size() * copies);
+        const auto result =
+            run_single_body_copies_together(members, copies, options, [&](double fraction) {
+                progress.update(finished + static_cast<std::size_t>(fraction * copies_in_group));
+            });
+        if (!result) return std::nullopt;
+        for (std::size_t k = 0; k < group.size(); ++k)
+            traces[group[k]] = (*result)[k];
+        finished += group.size() * static_cast<std::size_t>(copies);
+    }
+    return traces;
+}
+
 void print_points(const std::vector<PointResult>& points, std::ostream& out) {
     out << "  gap/mm  dt/s      ε/(1/mm)  D_r/(rad²/s)        speed/(mm/s)\n";
     for (const PointResult& p : points) {
@@ -205,6 +243,12 @@ int calibrate_command(const std::vector<std::string>& words, std::ostream& out, 
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
     const int threads = static_cast<int>(
         parse_count("--threads", args.value("--threads").value_or(std::to_string(cores)), 1, 256));
+    BackendOptions backend;
+    if (const auto b = args.value("--backend")) {
+        if (!parse_backend(*b, backend.backend))
+            throw InvalidParameter("--backend", *b, "cpu or gpu");
+        require_usable_backend(backend.backend, "--backend");
+    }
     const std::filesystem::path dir =
         args.value("--out").value_or((std::filesystem::path("out") / config.stem()).string());
     if (std::filesystem::exists(dir) && !std::filesystem::is_directory(dir))
@@ -217,13 +261,17 @@ int calibrate_command(const std::vector<std::string>& words, std::ostream& out, 
         out << "rodsea calibrate " << config.string() << ": " << experiments.size() << " points ("
             << grid.gap.size() << " gaps × " << grid.dt.size() << " dt × " << grid.epsilon.size()
             << " ε) × " << grid.copies << " copies of one " << to_string(grid.species.kind) << ", "
-            << format_number(grid.warmup) << " + " << format_number(grid.duration) << " s each, on "
-            << threads << " threads → " << dir.string() << "\n";
+            << format_number(grid.warmup) << " + " << format_number(grid.duration) << " s each, "
+            << (backend.backend == BackendKind::gpu ? std::string("on the GPU")
+                                                    : "on " + std::to_string(threads) + " threads")
+            << " → " << dir.string() << "\n";
 
     const StopSignalGuard stop_guard;
     CountProgress progress(out, choose_progress_style(quiet, ::isatty(STDOUT_FILENO) == 1),
                            experiments.size() * static_cast<std::size_t>(grid.copies), "copies");
-    const auto traces = run_copies(experiments, grid.copies, threads, progress);
+    const auto traces = backend.backend == BackendKind::gpu
+                            ? run_copies_together(experiments, grid.copies, backend, progress)
+                            : run_copies(experiments, grid.copies, threads, progress);
     if (!traces) {
         const int signal = stop_signal_received();
         out << "\nrodsea calibrate: stopped by signal " << signal << "; nothing written\n";

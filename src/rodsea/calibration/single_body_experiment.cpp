@@ -6,7 +6,9 @@
 #include "rodsea/analysis/statistics.hpp"
 #include "rodsea/builder/placement.hpp"
 #include "rodsea/cli/stop_signal.hpp"
+#include "rodsea/engine/ensemble.hpp"
 #include "rodsea/engine/simulation.hpp"
+#include "rodsea/error.hpp"
 #include "rodsea/random.hpp"
 
 namespace rodsea {
@@ -49,7 +51,11 @@ std::vector<double> correlation_of(const std::vector<const SingleBodyTrace*>& tr
 
 }  // namespace
 
-SingleBodyTrace run_single_body_copy(const SingleBodyExperiment& e, int index) {
+namespace {
+
+// Copy `index` of an experiment as a Simulation, before its warm-up.
+Simulation single_body_copy(const SingleBodyExperiment& e, int index,
+                            const BackendOptions& options) {
     SplitMix64 rng(e.seed * 0x9e3779b97f4a7c15ULL + static_cast<std::uint64_t>(index) + 1);
     // A small tilt and a slow spin: a perfectly flat, still rod is a mirror-symmetric start that
     // the vibration alone takes long to leave. No initial translation, which would coast.
@@ -68,48 +74,121 @@ SingleBodyTrace run_single_body_copy(const SingleBodyExperiment& e, int index) {
     BodyState body;
     body.add(0, {0.5 * kBoxSide, 0.5 * kBoxSide, resting_height(e.species.shape, q, e.drive)}, q,
              {}, spin);
-    Simulation sim(params, body);
+    return Simulation(params, body, options);
+}
 
+// A copy's steps per drive period, and its warm-up and measured periods.
+struct CopySchedule {
+    std::uint64_t steps_per_period, warmup_periods;
+    std::size_t periods;
+};
+CopySchedule schedule_of(const SingleBodyExperiment& e) {
     const double period = 2.0 * std::numbers::pi / e.drive.angular_frequency;
-    const auto steps = static_cast<std::uint64_t>(std::llround(period / e.dt));
-    const auto warmup = static_cast<std::uint64_t>(std::llround(e.warmup / period));
-    const auto periods = static_cast<std::size_t>(std::llround(e.duration / period));
-    SingleBodyTrace trace;
-    // A stop signal ends the copy within a drive period (its partial trace is then discarded by
-    // the caller), so that Ctrl-C answers in well under a second, not after the copy.
-    for (std::uint64_t p = 0; p < warmup; ++p) {
-        if (stop_signal_received() != 0) return trace;
-        sim.run(steps);
-    }
+    return {static_cast<std::uint64_t>(std::llround(period / e.dt)),
+            static_cast<std::uint64_t>(std::llround(e.warmup / period)),
+            static_cast<std::size_t>(std::llround(e.duration / period))};
+}
 
-    const PeriodicBox2D box{kBoxSide, kBoxSide};
-    Vec3 last = sim.bodies().position[0];
-    double previous_angle = 0.0;
-    for (std::size_t p = 0; p < periods; ++p) {
-        if (stop_signal_received() != 0) return trace;
-        sim.run(steps);
-        const Vec3 now = sim.bodies().position[0];
-        const Vec3 d = box.minimum_image(now - last);
-        last = now;
-        const Vec3 axis = rotate(sim.bodies().orientation[0], Vec3{1.0, 0.0, 0.0});
+// Samples a copy at the end of each measured period.
+class SingleBodyTracer {
+  public:
+    explicit SingleBodyTracer(const Vec3& start) : last_(start) {}
+
+    void add_period(const BodyState& body) {
+        const PeriodicBox2D box{kBoxSide, kBoxSide};
+        const Vec3 now = body.position[0];
+        const Vec3 d = box.minimum_image(now - last_);
+        last_ = now;
+        const Vec3 axis = rotate(body.orientation[0], Vec3{1.0, 0.0, 0.0});
         const double angle = std::atan2(axis.y, axis.x);
         const double in_plane = std::hypot(axis.x, axis.y);
         const double ux = axis.x / in_plane, uy = axis.y / in_plane;
-        trace.axial.push_back(d.x * ux + d.y * uy);
-        trace.transverse.push_back(-d.x * uy + d.y * ux);
+        trace_.axial.push_back(d.x * ux + d.y * uy);
+        trace_.transverse.push_back(-d.x * uy + d.y * ux);
         // Unwrapped: a turn of less than π per period (D_r of 10³ rad²/s would be needed to
         // break this) is taken as the short way round.
         double unwrapped = angle;
-        if (!trace.angle.empty()) {
-            double step = angle - previous_angle;
+        if (!trace_.angle.empty()) {
+            double step = angle - previous_angle_;
             step -= 2.0 * std::numbers::pi * std::round(step / (2.0 * std::numbers::pi));
-            unwrapped = trace.angle.back() + step;
+            unwrapped = trace_.angle.back() + step;
         }
-        previous_angle = angle;
-        trace.angle.push_back(unwrapped);
+        previous_angle_ = angle;
+        trace_.angle.push_back(unwrapped);
     }
-    trace.unresolved = sim.totals().unresolved;
-    return trace;
+    SingleBodyTrace finish(std::uint64_t unresolved) {
+        trace_.unresolved = unresolved;
+        return std::move(trace_);
+    }
+
+  private:
+    Vec3 last_;
+    double previous_angle_ = 0.0;
+    SingleBodyTrace trace_;
+};
+
+}  // namespace
+
+SingleBodyTrace run_single_body_copy(const SingleBodyExperiment& e, int index,
+                                     const BackendOptions& options) {
+    Simulation sim = single_body_copy(e, index, options);
+    const CopySchedule plan = schedule_of(e);
+    // A stop signal ends the copy within a drive period (its partial trace is then discarded by
+    // the caller), so that Ctrl-C answers in well under a second, not after the copy.
+    for (std::uint64_t p = 0; p < plan.warmup_periods; ++p) {
+        if (stop_signal_received() != 0) return {};
+        sim.run(plan.steps_per_period);
+    }
+    SingleBodyTracer tracer(sim.bodies().position[0]);
+    for (std::size_t p = 0; p < plan.periods; ++p) {
+        if (stop_signal_received() != 0) return tracer.finish(0);
+        sim.run(plan.steps_per_period);
+        tracer.add_period(sim.bodies());
+    }
+    return tracer.finish(sim.totals().unresolved);
+}
+
+std::optional<std::vector<std::vector<SingleBodyTrace>>> run_single_body_copies_together(
+    const std::vector<SingleBodyExperiment>& experiments, int copies, const BackendOptions& options,
+    const std::function<void(double)>& on_period) {
+    if (experiments.empty() || copies < 1) return std::vector<std::vector<SingleBodyTrace>>{};
+    const CopySchedule plan = schedule_of(experiments.front());
+    for (const SingleBodyExperiment& e : experiments) {
+        const CopySchedule other = schedule_of(e);
+        if (e.dt != experiments.front().dt || other.steps_per_period != plan.steps_per_period ||
+            other.warmup_periods != plan.warmup_periods || other.periods != plan.periods)
+            throw InvalidParameter("experiments", "different dt, drive periods or lengths",
+                                   "one schedule for every copy stepped together");
+    }
+    std::vector<Simulation> systems;
+    for (const SingleBodyExperiment& e : experiments)
+        for (int c = 0; c < copies; ++c)
+            systems.push_back(single_body_copy(e, c, {}));
+    Ensemble ensemble(std::move(systems), options);
+    const std::size_t total_periods = plan.warmup_periods + plan.periods;
+    const auto report = [&](std::size_t done) {
+        if (on_period) on_period(static_cast<double>(done) / static_cast<double>(total_periods));
+    };
+    for (std::uint64_t p = 0; p < plan.warmup_periods; ++p) {
+        if (stop_signal_received() != 0) return std::nullopt;
+        ensemble.run(plan.steps_per_period);
+        report(p + 1);
+    }
+    std::vector<SingleBodyTracer> tracers;
+    for (std::size_t m = 0; m < ensemble.size(); ++m)
+        tracers.emplace_back(ensemble.bodies(m).position[0]);
+    for (std::size_t p = 0; p < plan.periods; ++p) {
+        if (stop_signal_received() != 0) return std::nullopt;
+        ensemble.run(plan.steps_per_period);
+        for (std::size_t m = 0; m < ensemble.size(); ++m)
+            tracers[m].add_period(ensemble.bodies(m));
+        report(plan.warmup_periods + p + 1);
+    }
+    std::vector<std::vector<SingleBodyTrace>> traces(experiments.size());
+    for (std::size_t m = 0; m < ensemble.size(); ++m)
+        traces[m / static_cast<std::size_t>(copies)].push_back(
+            tracers[m].finish(ensemble.totals(m).unresolved));
+    return traces;
 }
 
 double rotational_diffusion_from_correlation(const std::vector<double>& c, double interval) {

@@ -5,9 +5,12 @@
 // ties the model to the experiment (MODEL.md §7) and the ε → D_r map the paper's control
 // parameter needs (MODEL.md §3).
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <vector>
 
 #include "rodsea/engine/parameters.hpp"
+#include "rodsea/engine/step_backend.hpp"
 
 namespace rodsea {
 
@@ -47,9 +50,20 @@ struct SingleBodyResult {
 };
 
 // Runs copy `index` (start angle, tilt, spin and noise seed drawn from experiment.seed and
-// index). Throws InvalidParameter for parameters the engine refuses. Returns early, with a
-// partial trace, once a stop signal (cli/stop_signal.hpp) has arrived.
-SingleBodyTrace run_single_body_copy(const SingleBodyExperiment& experiment, int index);
+// index) on `options`' backend. Throws InvalidParameter for parameters the engine refuses.
+// Returns early, with a partial trace, once a stop signal (cli/stop_signal.hpp) has arrived.
+SingleBodyTrace run_single_body_copy(const SingleBodyExperiment& experiment, int index,
+                                     const BackendOptions& options = {});
+
+// Runs copies 0 .. copies − 1 of every experiment as one Ensemble (engine/ensemble.hpp) on
+// `options`' backend: on a GPU, every copy in the same kernels. Each copy's trace is the one
+// run_single_body_copy gives on that backend, bit for bit. The experiments must share dt, the
+// drive frequency, the warm-up and the duration (they step in lockstep, sampled each period);
+// InvalidParameter otherwise. traces[point][copy]; none once a stop signal has arrived;
+// `on_period` (may be empty) is called after each drive period with the fraction done.
+std::optional<std::vector<std::vector<SingleBodyTrace>>> run_single_body_copies_together(
+    const std::vector<SingleBodyExperiment>& experiments, int copies, const BackendOptions& options,
+    const std::function<void(double)>& on_period = {});
 
 // Combines the copies' traces. `period` is the sampling interval, s.
 SingleBodyResult combine_single_body_traces(const std::vector<SingleBodyTrace>& traces,

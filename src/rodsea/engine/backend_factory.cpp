@@ -47,6 +47,12 @@ GpuAvailability gpu_availability() {
 #endif
 }
 
+void require_usable_backend(BackendKind backend, const std::string& key) {
+    if (backend != BackendKind::gpu) return;
+    const GpuAvailability gpu = gpu_availability();
+    if (!gpu.usable) throw InvalidParameter(key, "gpu", "cpu on this machine", gpu.description);
+}
+
 namespace {
 
 parallel::InitialSpheres initial_spheres(const SpeciesTable& species, BodyState bodies) {

@@ -25,6 +25,10 @@ struct GpuAvailability {
 };
 GpuAvailability gpu_availability();
 
+// Throws InvalidParameter naming `key` when `backend` cannot run on this build and machine (the
+// GPU where there is none), saying why: for commands to check before any work.
+void require_usable_backend(BackendKind backend, const std::string& key);
+
 // Reads "cpu" or "gpu" (what users may ask for) into `kind`; false for anything else.
 bool parse_backend(const std::string& text, BackendKind& kind);
 

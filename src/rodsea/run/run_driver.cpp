@@ -633,12 +633,6 @@ void commit_extension(const std::filesystem::path& dir, const RunPlan& plan, Che
 
 }  // namespace
 
-void require_usable_backend(BackendKind backend, const std::string& key) {
-    if (backend != BackendKind::gpu) return;
-    const GpuAvailability gpu = gpu_availability();
-    if (!gpu.usable) throw InvalidParameter(key, "gpu", "cpu on this machine", gpu.description);
-}
-
 int resume_run(const std::filesystem::path& dir, const RunOptions& options, std::ostream& out,
                std::ostream& err, bool progress_is_terminal) {
     StopSignalGuard signals;

@@ -29,10 +29,6 @@ struct RunOptions {
     std::optional<BackendKind> backend;
 };
 
-// Throws InvalidParameter naming `key` when `backend` cannot run on this build and machine (the
-// GPU where there is none), saying why: checked before any work.
-void require_usable_backend(BackendKind backend, const std::string& key);
-
 inline const char* const kConfigFile = "config.toml";
 inline const char* const kTrajectoryFile = "trajectory.h5";
 inline const char* const kSeriesFile = "timeseries.csv";
