@@ -10,6 +10,7 @@
 #include "config.hpp"
 #include "rodsea/builder/initial_state.hpp"
 #include "rodsea/config/config_file.hpp"
+#include "rodsea/engine/backend_factory.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/checkpoint.hpp"
@@ -33,7 +34,8 @@ class PySimulation {
     PySimulation(RunPlan plan, BodyState bodies, std::uint64_t step, int threads)
         : plan_(std::move(plan)),
           sim_(std::make_shared<Simulation>(
-              Simulation::resume(plan_.engine, std::move(bodies), step, {.threads = threads}))) {}
+              Simulation::resume(plan_.engine, std::move(bodies), step,
+                                 {.threads = threads, .backend = plan_.control.backend}))) {}
 
     // Steps without the GIL: other Python threads run meanwhile. Exactly one of steps and
     // seconds (rounded to whole steps of dt).
@@ -71,8 +73,8 @@ class PySimulation {
 
     // Replaces the state (arrays as numpy gives them), checked as a resumed state is.
     void set_state(const BodyState& bodies) {
-        sim_ = std::make_shared<Simulation>(Simulation::resume(
-            plan_.engine, bodies, sim_->step_count(), {.threads = sim_->options().threads}));
+        sim_ = std::make_shared<Simulation>(
+            Simulation::resume(plan_.engine, bodies, sim_->step_count(), sim_->options()));
     }
 
   private:
@@ -83,9 +85,12 @@ class PySimulation {
                                    packing.message);
         BodyState bodies =
             build_initial_state(plan.engine, plan.counts, plan.builder, plan.engine.seed);
-        return std::make_shared<Simulation>(
-            plan.engine, std::move(bodies),
-            BackendOptions{.threads = threads.value_or(plan.control.threads)});
+        require_usable_backend(plan.control.backend, "run.backend");
+        return std::make_shared<Simulation>(plan.engine, std::move(bodies),
+                                            BackendOptions{
+                                                .threads = threads.value_or(plan.control.threads),
+                                                .backend = plan.control.backend,
+                                            });
     }
     RunPlan plan_;
     std::shared_ptr<Simulation> sim_;
@@ -126,7 +131,9 @@ void bind_simulation(py::module_& m) {
     py::class_<PySimulation>(m, "Simulation",
                              "The engine on a config's initial state (as `rodsea run` builds it). "
                              "Arrays are read-only views of the engine's state, in mm, mm/s, "
-                             "rad/s; they follow the simulation as it steps.")
+                             "rad/s; they follow the simulation as it steps (on the GPU backend, "
+                             "run.backend = \"gpu\", they are the host's copy as of when the "
+                             "property was read).")
         .def(py::init<const Config&, std::optional<int>>(), py::arg("config"),
              py::arg("threads") = py::none())
         .def("run", &PySimulation::run, py::arg("steps") = py::none(),
