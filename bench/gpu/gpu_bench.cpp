@@ -60,21 +60,21 @@ struct Timing {
     int sweeps = 0;
 };
 
-// Steps for `seconds` of wall time after 200 steps that let the start spread out.
-Timing time_steps(const rodsea::Scene& scene, const rodsea::BackendOptions& options,
-                  double seconds) {
-    rodsea::Simulation sim(scene.params, scene.bodies, options);
-    sim.run(200);
-    const rodsea::StageProfile before = sim.profile();
+// Steps a Simulation or an Ensemble for `seconds` of wall time, in chunks of `chunk` steps,
+// after 200 steps that let the start spread out: steps/s and seconds per step of each stage.
+template <class Stepper>
+Timing time_stepping(Stepper& stepper, double seconds, std::uint64_t chunk) {
+    stepper.run(200);
+    const rodsea::StageProfile before = stepper.profile();
     const auto start = std::chrono::steady_clock::now();
     std::uint64_t steps = 0;
     double elapsed = 0.0;
     while (elapsed < seconds) {
-        sim.run(50);
-        steps += 50;
+        stepper.run(chunk);
+        steps += chunk;
         elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
-    const rodsea::StageProfile& p = sim.profile();
+    const rodsea::StageProfile& p = stepper.profile();
     const double n = static_cast<double>(steps);
     Timing t;
     t.steps_per_second = n / elapsed;
@@ -82,6 +82,13 @@ Timing time_steps(const rodsea::Scene& scene, const rodsea::BackendOptions& opti
                   (p.sphere_update - before.sphere_update) / n,
                   (p.contact_search - before.contact_search) / n,
                   (p.resolution - before.resolution) / n, (p.noise - before.noise) / n};
+    return t;
+}
+
+Timing time_steps(const rodsea::Scene& scene, const rodsea::BackendOptions& options,
+                  double seconds) {
+    rodsea::Simulation sim(scene.params, scene.bodies, options);
+    Timing t = time_stepping(sim, seconds, 50);
     t.contacts = sim.last_step().body_contacts + sim.last_step().plate_contacts;
     t.sweeps = sim.last_step().sweeps;
     return t;
@@ -98,24 +105,7 @@ Timing time_ensemble(int count, const rodsea::BackendOptions& options, double se
         systems.emplace_back(s.params, s.bodies);
     }
     rodsea::Ensemble ensemble(std::move(systems), options);
-    ensemble.run(200);
-    const rodsea::StageProfile before = ensemble.profile();
-    const auto start = std::chrono::steady_clock::now();
-    std::uint64_t steps = 0;
-    double elapsed = 0.0;
-    while (elapsed < seconds) {
-        ensemble.run(20);
-        steps += 20;
-        elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    }
-    const rodsea::StageProfile& p = ensemble.profile();
-    const double n = static_cast<double>(steps);
-    Timing t;
-    t.steps_per_second = n / elapsed;
-    t.per_step = {(p.free_flight - before.free_flight) / n,
-                  (p.sphere_update - before.sphere_update) / n,
-                  (p.contact_search - before.contact_search) / n,
-                  (p.resolution - before.resolution) / n, (p.noise - before.noise) / n};
+    Timing t = time_stepping(ensemble, seconds, 20);
     for (std::size_t m = 0; m < ensemble.size(); ++m) {
         t.contacts += ensemble.last_step(m).body_contacts + ensemble.last_step(m).plate_contacts;
         t.sweeps = std::max(t.sweeps, ensemble.last_step(m).sweeps);
