@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "rodsea/engine/physics/impulse.hpp"
+#include "rodsea/engine/physics/island_sweep.hpp"
 
 namespace rodsea::cpu {
 
@@ -67,69 +68,35 @@ void ContactResolver::find_islands(const std::vector<Contact>& contacts, size_t 
         island_contacts_[island_cursor_[contact_island_[k]]++] = static_cast<std::uint32_t>(k);
 }
 
+namespace {
+
+// The bodies as physics::sweep_island reads them: the state, and the inverse mass and inertia
+// of the bodies in contact.
+struct SweptBodies {
+    BodyView bodies;
+    const InverseInertia& inertia;
+
+    Vec3& velocity(std::uint32_t b) const { return bodies.velocity[b]; }
+    Vec3& spin(std::uint32_t b) const { return bodies.spin[b]; }
+    double inv_mass(std::uint32_t b) const { return inertia.inv_mass(b); }
+    const Mat3& inv_inertia(std::uint32_t b) const { return inertia.inv_inertia(b); }
+};
+
+}  // namespace
+
 ResolutionStats ContactResolver::sweep_island(size_t island, const std::vector<Contact>& contacts,
                                               BodyView bodies, const InverseInertia& inertia,
                                               const StepContext& step,
                                               std::vector<PlateHit>& hits) {
-    ResolutionStats stats;
-    const Vec3 plate_velocity{0.0, 0.0, step.plates.velocity_z};
-    const Mat3 zero = Mat3::zero();
-    const auto relative_velocity = [&](const Contact& c) {
-        const Vec3 va = physics::point_velocity(bodies.velocity[c.a], bodies.spin[c.a], c.arm_a);
-        return c.with_plate()
-                   ? va - plate_velocity
-                   : va - physics::point_velocity(bodies.velocity[c.b], bodies.spin[c.b], c.arm_b);
-    };
-    const std::uint32_t* first = island_contacts_.data() + island_start_[island];
-    const std::uint32_t* last = island_contacts_.data() + island_start_[island + 1];
-
-    bool any_impulse = true;
-    while (any_impulse && stats.sweeps < step.max_sweeps) {
-        ++stats.sweeps;
-        const int sweep = stats.sweeps;
-        any_impulse = false;
-        for (const std::uint32_t* k = first; k != last; ++k) {
-            const Contact& c = contacts[*k];
-            const bool plate = c.with_plate();
-            const int changed =
-                plate ? last_changed_[c.a] : std::max(last_changed_[c.a], last_changed_[c.b]);
-            if (sweep > 1 && changed < sweep - 1) continue;  // nothing moved since last check
-
-            const Vec3 u = relative_velocity(c);
-            const double un = dot(u, c.normal);
-            if (un >= -step.approach_tolerance) continue;
-
-            const Mat3 k_matrix =
-                plate ? physics::collision_matrix(inertia.inv_mass(c.a), inertia.inv_inertia(c.a),
-                                                  c.arm_a, 0.0, zero, {})
-                      : physics::collision_matrix(inertia.inv_mass(c.a), inertia.inv_inertia(c.a),
-                                                  c.arm_a, inertia.inv_mass(c.b),
-                                                  inertia.inv_inertia(c.b), c.arm_b);
-            const physics::Impulse impulse =
-                physics::stronge_impulse(u, c.normal, k_matrix, c.friction, c.restitution);
-
-            bodies.velocity[c.a] += inertia.inv_mass(c.a) * impulse.p;
-            bodies.spin[c.a] += inertia.inv_inertia(c.a) * cross(c.arm_a, impulse.p);
-            last_changed_[c.a] = sweep;
-            if (plate) {
-                hits.push_back({c.a, c.b, -un});
-            } else {
-                bodies.velocity[c.b] -= inertia.inv_mass(c.b) * impulse.p;
-                bodies.spin[c.b] -= inertia.inv_inertia(c.b) * cross(c.arm_b, impulse.p);
-                last_changed_[c.b] = sweep;
-            }
-            ++stats.impulses;
-            if (-un > kCollisionSpeed) ++(plate ? stats.plate_collisions : stats.body_collisions);
-            any_impulse = true;
-        }
-    }
-    if (any_impulse) {
-        for (const std::uint32_t* k = first; k != last; ++k)
-            if (dot(relative_velocity(contacts[*k]), contacts[*k].normal) <
-                -step.approach_tolerance)
-                ++stats.unresolved;
-    }
-    return stats;
+    SweptBodies swept{bodies, inertia};
+    const std::uint32_t first = island_start_[island];
+    const physics::IslandSweep s = physics::sweep_island(
+        contacts.data(), island_contacts_.data() + first, island_start_[island + 1] - first, swept,
+        last_changed_.data(), Vec3{0.0, 0.0, step.plates.velocity_z}, step.approach_tolerance,
+        step.max_sweeps, [&](std::uint32_t k, double approach) {
+            hits.push_back({contacts[k].a, contacts[k].b, approach});
+        });
+    return {s.sweeps, s.impulses, s.body_collisions, s.plate_collisions, s.unresolved};
 }
 
 ResolutionStats ContactResolver::resolve(const std::vector<Contact>& contacts, BodyView bodies,

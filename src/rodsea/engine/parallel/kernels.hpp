@@ -20,6 +20,7 @@
 #include "rodsea/engine/physics/contact_geometry.hpp"
 #include "rodsea/engine/physics/free_flight.hpp"
 #include "rodsea/engine/physics/impulse.hpp"
+#include "rodsea/engine/physics/island_sweep.hpp"
 #include "rodsea/engine/physics/plate_noise.hpp"
 #include "rodsea/engine/physics/sphere_placement.hpp"
 #include "rodsea/engine/physics/step_context.hpp"
@@ -106,7 +107,7 @@ struct MarkRuns {
     }
 };
 
-// visit(contact, r_j) for each sphere j > i of another body that overlaps sphere i: the contact
+// visit(contact, j) for each sphere j > i of another body that overlaps sphere i: the contact
 // as the CPU's search makes it (d = p_i − p_j, minimum image; normal from j's body into i's),
 // without its coefficients. Partners are looked for in i's cell and the eight around it, in i's
 // system's grid.
@@ -137,7 +138,7 @@ RODSEA_HD void for_each_touching_partner(std::uint32_t i, const SphereArrays& sp
                 if (physics::sphere_sphere_contact(
                         box.minimum_image(p - spheres.position[j]), bi, p, ri, bodies.position[bi],
                         bj, spheres.position[j], spheres.radius[j], bodies.position[bj], contact))
-                    visit(contact, spheres.radius[j]);
+                    visit(contact, j);
             }
         }
     }
@@ -158,7 +159,7 @@ struct CountContacts {
         const StepContext& step = systems.context[system];
         std::uint32_t n = 0;
         for_each_touching_partner(i, spheres, bodies, cells, systems.grid[system], step.box,
-                                  [&n](const Contact&, double) { ++n; });
+                                  [&n](const Contact&, std::uint32_t) { ++n; });
         body_count[i] = n;
         const physics::PlateOverlaps o =
             physics::plate_overlaps(spheres.position[i].z, spheres.radius[i], step.plates);
@@ -166,9 +167,9 @@ struct CountContacts {
     }
 };
 
-// Stage 3c, per sphere: writes its contacts where the counts put them: body contacts first, in
-// sphere order, then plate contacts in sphere order (base before lid), like the CPU's list;
-// `depth` takes each one's overlap over the smaller radius.
+// Stage 3c, per sphere: writes its contacts where the counts put them: body contacts first, by
+// sphere and then by partner sphere, then plate contacts in sphere order (base before lid): the
+// CPU's list, contact for contact. `depth` takes each one's overlap over the smaller radius.
 struct WriteContacts {
     SphereArrays spheres;
     BodyArrays bodies;
@@ -180,21 +181,34 @@ struct WriteContacts {
     std::uint32_t body_contacts;  // where the plate contacts begin
     Contact* contacts;
     double* depth;
+    std::uint32_t* partner;  // scratch: each body contact's sphere j
 
     RODSEA_HD void operator()(std::uint32_t i) const {
         const std::uint32_t system = systems.of_sphere(spheres, i);
         const StepContext& step = systems.context[system];
         const double ri = spheres.radius[i];
-        std::uint32_t at = body_offset[i];
-        for_each_touching_partner(
-            i, spheres, bodies, cells, systems.grid[system], step.box, [&](Contact& c, double rj) {
-                const ContactCoefficients& k =
-                    species.pair_coefficients(bodies.species[c.a], bodies.species[c.b]);
-                c.friction = k.friction;
-                c.restitution = k.restitution;
-                depth[at] = c.overlap / (ri < rj ? ri : rj);
-                contacts[at++] = c;
-            });
+        const std::uint32_t first = body_offset[i];
+        std::uint32_t at = first;
+        for_each_touching_partner(i, spheres, bodies, cells, systems.grid[system], step.box,
+                                  [&](Contact& c, std::uint32_t j) {
+                                      const ContactCoefficients& k = species.pair_coefficients(
+                                          bodies.species[c.a], bodies.species[c.b]);
+                                      c.friction = k.friction;
+                                      c.restitution = k.restitution;
+                                      const double rj = spheres.radius[j];
+                                      // Insertion by partner: the cells are visited in grid order,
+                                      // the CPU's pairs in sphere order. A sphere has a handful of
+                                      // partners.
+                                      std::uint32_t slot = at++;
+                                      for (; slot > first && partner[slot - 1] > j; --slot) {
+                                          contacts[slot] = contacts[slot - 1];
+                                          depth[slot] = depth[slot - 1];
+                                          partner[slot] = partner[slot - 1];
+                                      }
+                                      contacts[slot] = c;
+                                      depth[slot] = c.overlap / (ri < rj ? ri : rj);
+                                      partner[slot] = j;
+                                  });
         const std::uint32_t b = spheres.body[i];
         const Vec3& p = spheres.position[i];
         const physics::PlateOverlaps o = physics::plate_overlaps(p.z, ri, step.plates);
@@ -226,210 +240,111 @@ struct WorldInverseInertia {
     }
 };
 
-// Stage 4b, per contact: its (body, contact) incidences, for a sort by body. Body contacts
-// [0, B) take slots 2k and 2k + 1, plate contacts k >= B one slot, 2B + (k − B).
-struct ListIncidences {
+// Stage 4b, per body: its own island to start with (union–find's forest).
+struct InitIslands {
+    std::uint32_t* parent;
+
+    RODSEA_HD void operator()(std::uint32_t b) const { parent[b] = b; }
+};
+
+// The root of body b's island as far as the hooks so far go.
+RODSEA_HD inline std::uint32_t island_root(const std::uint32_t* parent, std::uint32_t b) {
+    for (std::uint32_t up = load_shared(parent + b); up != b; up = load_shared(parent + b))
+        b = up;
+    return b;
+}
+
+// Stage 4c, per body contact: joins its two bodies' islands, the larger root under the smaller.
+// Roots only ever point to smaller bodies, so whatever order the hooks run in, every island ends
+// with its smallest body as its root: the partition and its labels are the same on every run.
+struct HookIslands {
     const Contact* contacts;
-    std::uint32_t body_contacts;
-    std::uint32_t* body;
-    std::uint32_t* contact;
+    std::uint32_t* parent;
 
     RODSEA_HD void operator()(std::uint32_t k) const {
         const Contact& c = contacts[k];
-        if (k < body_contacts) {
-            body[2 * k] = c.a;
-            contact[2 * k] = k;
-            body[2 * k + 1] = c.b;
-            contact[2 * k + 1] = k;
-        } else {
-            const std::uint32_t at = body_contacts + k;  // 2B + (k − B)
-            body[at] = c.a;
-            contact[at] = k;
+        for (;;) {
+            const std::uint32_t a = island_root(parent, c.a), b = island_root(parent, c.b);
+            if (a == b) return;
+            const std::uint32_t low = a < b ? a : b, high = a < b ? b : a;
+            if (compare_and_swap(parent + high, high, low)) return;  // else another hook won
         }
     }
 };
 
-// Per contact: its index within its own system's list (body contacts, then plate contacts, as
-// that system alone would list them), which ranks it in the colouring: a system's colours then do
-// not depend on the systems beside it.
-struct RankContactsInTheirSystem {
+// Stage 4d, per contact: its island (its first body's root), the key of the stable sort that
+// lists each island's contacts together, in list order.
+struct KeyContactsByIsland {
     const Contact* contacts;
-    Systems systems;
-    std::uint32_t body_contacts;  // of every system
-    std::uint32_t* rank;
-
-    RODSEA_HD void operator()(std::uint32_t k) const {
-        const ContactRange& r = systems.contacts[systems.of_body[contacts[k].a]];
-        rank[k] = k < body_contacts ? k - r.body_first : r.body_count + (k - r.plate_first);
-    }
-};
-
-// The contacts that share a body with contact k (k itself excluded; a contact that shares both
-// bodies is visited twice).
-template <class Visit>
-RODSEA_HD void for_each_neighbour(std::uint32_t k, const Contact& c, const Incidence& incidence,
-                                  Visit&& visit) {
-    for (std::uint32_t m = incidence.start[c.a]; m < incidence.end[c.a]; ++m)
-        if (incidence.contact[m] != k) visit(incidence.contact[m]);
-    if (c.with_plate()) return;
-    for (std::uint32_t m = incidence.start[c.b]; m < incidence.end[c.b]; ++m)
-        if (incidence.contact[m] != k) visit(incidence.contact[m]);
-}
-
-// Whether a contact of rank r1 goes before one of rank r2 (RankContactsInTheirSystem) in the
-// colouring: by a hash of the rank, so that runs of neighbouring contacts (often consecutive in
-// the list) do not form long chains of decreasing priority, each of which costs a round.
-RODSEA_HD inline bool outranks(std::uint32_t r1, std::uint32_t r2) {
-    const std::uint64_t h1 = splitmix64(r1), h2 = splitmix64(r2);
-    return h1 != h2 ? h1 > h2 : r1 > r2;
-}
-
-RODSEA_HD inline int lowest_clear_bit(std::uint64_t used) {
-#if defined(__CUDA_ARCH__)
-    return __ffsll(static_cast<long long>(~used)) - 1;
-#else
-    return __builtin_ctzll(~used);
-#endif
-}
-
-// Stage 4c, one round of the colouring (Jones–Plassmann), per contact: an uncoloured contact
-// that outranks every neighbour that was uncoloured when the round began takes the smallest
-// colour none of its coloured neighbours has. Contacts of one colour then share no body and are
-// resolved at once. `coloured_in` is the round that coloured each contact, −1 before: a
-// neighbour coloured in this very round outranks the contact (it was a local maximum), so reading
-// it before or after its write gives the same decision, and colours are only read from earlier
-// rounds. Sets `waiting` while a contact is left for a later round.
-struct ColourRound {
-    const Contact* contacts;
-    const std::uint32_t* rank;
-    Incidence incidence;
-    int round;
-    int* colour;
-    int* coloured_in;
-    int* waiting;
-
-    RODSEA_HD void operator()(std::uint32_t k) const {
-        if (coloured_in[k] >= 0) return;  // only this element writes its own mark
-        const Contact& c = contacts[k];
-        bool waits = false;
-        for_each_neighbour(k, c, incidence, [&](std::uint32_t n) {
-            const int r = load_shared(coloured_in + n);
-            if ((r < 0 || r == round) && outranks(rank[n], rank[k])) waits = true;
-        });
-        if (waits) {
-            store_shared(waiting, 1);
-            return;
-        }
-        for (int window = 0;; window += 64) {  // colours [window, window + 64) at a time
-            std::uint64_t used = 0;
-            for_each_neighbour(k, c, incidence, [&](std::uint32_t n) {
-                const int r = load_shared(coloured_in + n);
-                if (r < 0 || r >= round) return;  // no colour yet (or not one this may read)
-                const int slot = colour[n] - window;
-                if (slot >= 0 && slot < 64) used |= std::uint64_t{1} << slot;
-            });
-            if (~used != 0) {
-                colour[k] = window + lowest_clear_bit(used);
-                break;
-            }
-        }
-        store_shared(coloured_in + k, round);
-    }
-};
-
-// Per contact: its colour as the key of the sort that groups the contacts colour by colour.
-struct KeyContactsByColour {
-    const int* colour;
+    const std::uint32_t* parent;
     std::uint32_t* key;
     std::uint32_t* contact;
 
     RODSEA_HD void operator()(std::uint32_t k) const {
-        key[k] = static_cast<std::uint32_t>(colour[k]);
+        key[k] = island_root(parent, contacts[k].a);
         contact[k] = k;
     }
 };
 
-// The relative velocity (a − b) at a contact's point; a plate moves at `plate_velocity`.
-RODSEA_HD inline Vec3 contact_relative_velocity(const Contact& c, const BodyArrays& bodies,
-                                                const Vec3& plate_velocity) {
-    const Vec3 va = physics::point_velocity(bodies.velocity[c.a], bodies.spin[c.a], c.arm_a);
-    return c.with_plate()
-               ? va - plate_velocity
-               : va - physics::point_velocity(bodies.velocity[c.b], bodies.spin[c.b], c.arm_b);
-}
-
-// Stage 4d, per contact of one colour, in sweep `sweep` (from 1): the impulse on the contact if
-// it approaches, as the CPU's Gauss–Seidel sweep gives it, skipping contacts whose bodies got no
-// impulse since the contact was last looked at (none since sweep − 1 began). Colours are swept in
-// order, so this is Gauss–Seidel in colour order. Each impulse is tallied on its contact.
-struct SweepColour {
-    const Contact* contacts;
-    const std::uint32_t* order;  // contacts sorted by colour
-    std::uint32_t first;         // this colour's first entry in `order`
+// What physics::sweep_island reads and writes of the bodies.
+struct IslandBodies {
     BodyArrays bodies;
-    const double* inv_mass;
-    const Mat3* inv_inertia;
+    const double* inverse_mass;
+    const Mat3* inverse_inertia;
+
+    RODSEA_HD Vec3& velocity(std::uint32_t b) const { return bodies.velocity[b]; }
+    RODSEA_HD Vec3& spin(std::uint32_t b) const { return bodies.spin[b]; }
+    RODSEA_HD double inv_mass(std::uint32_t b) const { return inverse_mass[b]; }
+    RODSEA_HD const Mat3& inv_inertia(std::uint32_t b) const { return inverse_inertia[b]; }
+};
+
+// What an island's sweep found, written at the index of its first contact (zero elsewhere).
+struct IslandTallies {
+    double* sweeps;  // whole numbers, as doubles for the executor's maximum
+    std::uint32_t* impulses;
+    std::uint32_t* body_collisions;
+    std::uint32_t* plate_collisions;
+    std::uint32_t* unresolved;
+    double* hit_speed;  // per plate contact: its fastest approach that got an impulse
+};
+
+// Stage 4e, per entry of the contacts sorted by island: the thread at an island's first entry
+// sweeps the whole island (physics::sweep_island, the CPU backend's own sweep, in list order
+// with its system's sweep cap), so each island gets exactly the impulses it gets on the CPU. In
+// a shaken monolayer islands are small: 72 % hold one contact and none more than 14 at
+// φ_a = 0.78 (docs/performance.md).
+struct SweepIslands {
+    const Contact* contacts;
+    const std::uint32_t* key;    // island of each sorted entry
+    const std::uint32_t* order;  // contacts sorted by island
+    const std::uint32_t* island_end;
+    IslandBodies bodies;
     Systems systems;
-    int sweep;
-    int* last_changed;  // per body: the last sweep that gave it an impulse
-    ContactTallies tallies;
-    int* any_impulse;  // per system
+    int* last_changed;
+    IslandTallies tallies;
 
-    RODSEA_HD void operator()(std::uint32_t index) const {
-        const std::uint32_t k = order[first + index];
-        const Contact& c = contacts[k];
-        const std::uint32_t system = systems.of_body[c.a];
-        const StepContext& step = systems.context[system];
-        if (sweep > step.max_sweeps) return;  // this system's cap (another's may be higher)
-        const bool plate = c.with_plate();
-        const int changed =
-            plate ? last_changed[c.a]
-                  : (last_changed[c.a] > last_changed[c.b] ? last_changed[c.a] : last_changed[c.b]);
-        if (sweep > 1 && changed < sweep - 1) return;  // nothing moved since the last look
-
-        const Vec3 u = contact_relative_velocity(c, bodies, {0.0, 0.0, step.plates.velocity_z});
-        const double un = dot(u, c.normal);
-        if (un >= -step.approach_tolerance) return;
-
-        const Mat3 k_matrix =
-            plate ? physics::collision_matrix(inv_mass[c.a], inv_inertia[c.a], c.arm_a, 0.0,
-                                              Mat3::zero(), {})
-                  : physics::collision_matrix(inv_mass[c.a], inv_inertia[c.a], c.arm_a,
-                                              inv_mass[c.b], inv_inertia[c.b], c.arm_b);
-        const physics::Impulse impulse =
-            physics::stronge_impulse(u, c.normal, k_matrix, c.friction, c.restitution);
-        bodies.velocity[c.a] += inv_mass[c.a] * impulse.p;
-        bodies.spin[c.a] += inv_inertia[c.a] * cross(c.arm_a, impulse.p);
-        last_changed[c.a] = sweep;
-        if (plate) {
-            if (-un > tallies.hit_speed[k]) tallies.hit_speed[k] = -un;
-        } else {
-            bodies.velocity[c.b] -= inv_mass[c.b] * impulse.p;
-            bodies.spin[c.b] -= inv_inertia[c.b] * cross(c.arm_b, impulse.p);
-            last_changed[c.b] = sweep;
-        }
-        ++tallies.impulses[k];
-        if (-un > kCollisionSpeed) ++tallies.collisions[k];
-        store_shared(any_impulse + system, 1);
+    RODSEA_HD void operator()(std::uint32_t p) const {
+        const std::uint32_t island = key[p];
+        if (p > 0 && key[p - 1] == island) return;  // not the island's first entry
+        const std::uint32_t k0 = order[p];
+        const StepContext& step = systems.context[systems.of_body[contacts[k0].a]];
+        IslandBodies b = bodies;
+        const physics::IslandSweep s =
+            physics::sweep_island(contacts, order + p, island_end[island] - p, b, last_changed,
+                                  Vec3{0.0, 0.0, step.plates.velocity_z}, step.approach_tolerance,
+                                  step.max_sweeps, [this](std::uint32_t k, double approach) {
+                                      if (approach > tallies.hit_speed[k])
+                                          tallies.hit_speed[k] = approach;
+                                  });
+        tallies.sweeps[k0] = s.sweeps;
+        tallies.impulses[k0] = s.impulses;
+        tallies.body_collisions[k0] = s.body_collisions;
+        tallies.plate_collisions[k0] = s.plate_collisions;
+        tallies.unresolved[k0] = s.unresolved;
     }
 };
 
-// Per contact, after the last sweep: 1 where it still approaches.
-struct FlagApproaching {
-    const Contact* contacts;
-    BodyArrays bodies;
-    Systems systems;
-    std::uint32_t* approaching;
-
-    RODSEA_HD void operator()(std::uint32_t k) const {
-        const Contact& c = contacts[k];
-        const StepContext& step = systems.context[systems.of_body[c.a]];
-        const Vec3 u = contact_relative_velocity(c, bodies, {0.0, 0.0, step.plates.velocity_z});
-        approaching[k] = dot(u, c.normal) < -step.approach_tolerance ? 1u : 0u;
-    }
-};
-
-// Stage 4e, per body: out of the plates by its deepest overlap (plate_projection.hpp says why).
+// Stage 4f, per body: out of the plates by its deepest overlap (plate_projection.hpp says why).
 // The overlaps are those the contacts were found with: the spheres have not moved since.
 struct ProjectOutOfPlates {
     BodyArrays bodies;
@@ -455,14 +370,17 @@ struct ProjectOutOfPlates {
 };
 
 // Stage 5, per body: a polar body's spin kick for each plate it hit this step (MODEL.md §3), the
-// lid's before the base's as on the CPU, with the fastest approach that got an impulse. The noise
-// hashes the body's index in its own system. No kick at ε = 0 (the CPU's rule: a kick of ±0
-// would still change the sign of a zero spin).
+// lid's before the base's as on the CPU, with the fastest approach that got an impulse. A body's
+// plate contacts are together in the list (its spheres' plate contacts). The noise hashes the
+// body's index in its own system. No kick at ε = 0 (the CPU's rule: a kick of ±0 would still
+// change the sign of a zero spin).
 struct KickPolarBodies {
     BodyArrays bodies;
     SpeciesArrays species;
+    SphereArrays spheres;
     const Contact* contacts;
-    Incidence incidence;
+    const std::uint32_t* plate_offset;  // per sphere, from the plate contacts' scan
+    std::uint32_t body_contacts, contact_count;
     const double* hit_speed;
     Systems systems;
     std::uint32_t* kicks;
@@ -473,12 +391,14 @@ struct KickPolarBodies {
         const StepContext& step = systems.context[system];
         if (step.noise_epsilon == 0.0 || !species.polar[bodies.species[b]]) return;
         const std::uint32_t own = b - systems.first_body[system];
+        const std::uint32_t last_sphere = spheres.first_of[b + 1];
+        const std::uint32_t first = body_contacts + plate_offset[spheres.first_of[b]];
+        const std::uint32_t end =
+            last_sphere < spheres.count ? body_contacts + plate_offset[last_sphere] : contact_count;
         double lid = 0.0, base = 0.0;
-        for (std::uint32_t m = incidence.start[b]; m < incidence.end[b]; ++m) {
-            const std::uint32_t k = incidence.contact[m];
-            const std::uint32_t plate = contacts[k].b;
-            if (plate == kLidPlate && hit_speed[k] > lid) lid = hit_speed[k];
-            if (plate == kBasePlate && hit_speed[k] > base) base = hit_speed[k];
+        for (std::uint32_t k = first; k < end; ++k) {
+            if (contacts[k].b == kLidPlate && hit_speed[k] > lid) lid = hit_speed[k];
+            if (contacts[k].b == kBasePlate && hit_speed[k] > base) base = hit_speed[k];
         }
         if (lid > 0.0) {
             bodies.spin[b].z += step.noise_epsilon * lid *

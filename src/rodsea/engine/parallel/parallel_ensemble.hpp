@@ -10,15 +10,16 @@
 //   3 contact search: spheres sorted by cell (each system's grid a block of one cell list,
 //     rebuilt every step), contacts counted per sphere, placed by an exclusive scan and written:
 //     the list is a function of the state;
-//   4 resolution: contacts coloured (Jones–Plassmann, ranked within their system) so that no two
-//     of a colour share a body, then swept colour by colour until a sweep gives a system no
-//     impulse or reaches its sweep cap (the CPU's stopping rule, per system); the projection out
-//     of the plates per body;
+//   4 resolution: contacts joined into islands (bodies linked by body–body contacts; union–find
+//     with atomic hooks, whose result does not depend on their order), sorted by island, and
+//     each island swept by one thread with the CPU's own sweep (physics/island_sweep.hpp) in
+//     list order; the projection out of the plates per body;
 //   5 noise per polar body, from its plate contacts' fastest approach.
-// Nothing a system computes depends on the systems beside it, so each steps to the same bits as
-// it does alone. What differs from the CPU backend is the order of the impulses (colour order
-// instead of list order within an island): the same physics and stopping rule, statistically
-// equal trajectories, not equal bits.
+// The contact list is the CPU's, contact for contact, and each island gets the CPU's impulses in
+// the CPU's order: run by the host executor the step is the CPU backend's to the last bit. On a
+// device only the rounding of the device's arithmetic can differ (nvcc may fuse a multiply and
+// an add where the host rounds twice; the build asks it not to, -fmad=false). Nothing a system
+// computes depends on the systems beside it, so each steps to the same bits as it does alone.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -26,13 +27,20 @@
 #include <vector>
 
 #include "rodsea/engine/body_state.hpp"
-#include "rodsea/engine/parallel/contact_colouring.hpp"
 #include "rodsea/engine/parallel/kernels.hpp"
 #include "rodsea/engine/species_table.hpp"
 #include "rodsea/engine/stage_timer.hpp"
 #include "rodsea/engine/step_backend.hpp"
 
 namespace rodsea::parallel {
+
+// How many bits a radix sort reads for keys below `distinct`.
+inline int key_bits(std::uint64_t distinct) {
+    int bits = 1;
+    while (bits < 32 && (std::uint64_t{1} << bits) < distinct)
+        ++bits;
+    return bits;
+}
 
 // The spheres as the step starts from them (cpu::SphereTable's arrays).
 struct InitialSpheres {
@@ -85,10 +93,11 @@ class ParallelEnsemble final : public EnsembleStepper {
         inv_inertia_.resize(n);
         last_changed_.resize(n);
         kicks_.resize(n);
+        for (auto* a : {&parent_, &island_start_, &island_end_})
+            a->resize(n);
         for (auto* a : {&cell_key_, &cell_sphere_, &body_count_, &plate_count_, &body_offset_,
                         &plate_offset_})
             a->resize(spheres);
-        flags_.resize(members_.size());
         boundary_values_.resize(members_.size());
         host_grids_.resize(members_.size());
         bodies_stale_.assign(members_.size(), 0);
@@ -181,7 +190,7 @@ class ParallelEnsemble final : public EnsembleStepper {
         }
         {
             StageTimer t(profile.resolution);
-            resolve(contexts, stats);
+            resolve(stats);
             exec_.launch(n, ProjectOutOfPlates{bodies, sphere_arrays(), system_arrays()});
             exec_.finish();
         }
@@ -192,7 +201,8 @@ class ParallelEnsemble final : public EnsembleStepper {
                             [](const StepContext& c) { return c.noise_epsilon != 0.0; });
             if (noisy && contact_count_ > 0) {
                 exec_.launch(
-                    n, KickPolarBodies{bodies, species, contacts_.data(), colouring_.incidence(),
+                    n, KickPolarBodies{bodies, species, sphere_arrays(), contacts_.data(),
+                                       plate_offset_.data(), body_contact_count_, contact_count_,
                                        hit_speed_.data(), system_arrays(), kicks_.data()});
                 std::vector<std::uint64_t> kicks;
                 exec_.segmented_sum(kicks_, first_body_, kicks);
@@ -416,14 +426,17 @@ class ParallelEnsemble final : public EnsembleStepper {
             const std::size_t room = contact_count_ + contact_count_ / 4 + 64;
             contacts_.resize(room);
             depth_.resize(room);
-            for (auto* a : {&impulses_, &collisions_, &approaching_, &rank_})
+            for (auto* a : {&impulses_, &body_collisions_, &plate_collisions_, &unresolved_,
+                            &island_key_, &island_order_, &partner_})
                 a->resize(room);
             hit_speed_.resize(room);
+            island_sweeps_.resize(room);
         }
         exec_.launch(spheres,
                      WriteContacts{sphere_arrays(), body_arrays(), species_arrays(), cells,
                                    system_arrays(), body_offset_.data(), plate_offset_.data(),
-                                   body_contact_count_, contacts_.data(), depth_.data()});
+                                   body_contact_count_, contacts_.data(), depth_.data(),
+                                   partner_.data()});
         std::vector<double> deepest;
         exec_.segmented_max(depth_, segments_, deepest);
         gross_.assign(systems, 0);
@@ -445,7 +458,7 @@ class ParallelEnsemble final : public EnsembleStepper {
             depth.begin(), depth.end(), [this](double d) { return d > gross_overlap_fraction_; }));
     }
 
-    void resolve(const std::vector<StepContext>& contexts, std::vector<StepStatistics>& stats) {
+    void resolve(std::vector<StepStatistics>& stats) {
         const std::size_t systems = members_.size();
         for (std::size_t m = 0; m < systems; ++m)
             stats[m].unresolved = gross_[m];
@@ -455,53 +468,40 @@ class ParallelEnsemble final : public EnsembleStepper {
         const BodyArrays bodies = body_arrays();
         exec_.launch(n, WorldInverseInertia{bodies, species_arrays(), inv_mass_.data(),
                                             inv_inertia_.data()});
-        exec_.launch(c, RankContactsInTheirSystem{contacts_.data(), system_arrays(),
-                                                  body_contact_count_, rank_.data()});
-        colouring_.colour(exec_, contacts_, rank_.data(), c, body_contact_count_, n);
+        exec_.launch(n, InitIslands{parent_.data()});
+        exec_.launch(body_contact_count_, HookIslands{contacts_.data(), parent_.data()});
+        exec_.launch(c, KeyContactsByIsland{contacts_.data(), parent_.data(), island_key_.data(),
+                                            island_order_.data()});
+        exec_.sort_by_key(island_key_, island_order_, c, key_bits(n));
+        exec_.fill(island_start_, n, 0u);
+        exec_.fill(island_end_, n, 0u);
+        exec_.launch(c, MarkRuns{island_key_.data(), c, island_start_.data(), island_end_.data()});
         exec_.fill(last_changed_, n, 0);
-        exec_.fill(impulses_, c, 0u);
-        exec_.fill(collisions_, c, 0u);
+        exec_.fill(island_sweeps_, c, 0.0);
+        for (auto* a : {&impulses_, &body_collisions_, &plate_collisions_, &unresolved_})
+            exec_.fill(*a, c, 0u);
         exec_.fill(hit_speed_, c, 0.0);
-        const ContactTallies tallies{impulses_.data(), collisions_.data(), hit_speed_.data()};
-        // Per system: still sweeping, and whether its last sweep gave an impulse.
-        std::vector<char> sweeping(systems), any_impulse(systems);
-        for (std::size_t m = 0; m < systems; ++m)
-            sweeping[m] = any_impulse[m] = stats[m].body_contacts + stats[m].plate_contacts > 0;
-        std::vector<int> flags;
-        for (int sweep = 1; std::find(sweeping.begin(), sweeping.end(), 1) != sweeping.end();
-             ++sweep) {
-            exec_.fill(flags_, systems, 0);
-            for (int colour = 0; colour < colouring_.colours(); ++colour) {
-                const auto r = colouring_.range(colour);
-                exec_.launch(r.count,
-                             SweepColour{contacts_.data(), colouring_.order(), r.first, bodies,
-                                         inv_mass_.data(), inv_inertia_.data(), system_arrays(),
-                                         sweep, last_changed_.data(), tallies, flags_.data()});
-            }
-            exec_.download(flags_, systems, flags);
-            for (std::size_t m = 0; m < systems; ++m) {
-                if (!sweeping[m]) continue;
-                stats[m].sweeps = sweep;
-                any_impulse[m] = flags[m] != 0;
-                if (!any_impulse[m] || sweep >= contexts[m].max_sweeps) sweeping[m] = 0;
-            }
-        }
-        std::vector<std::uint64_t> impulses, collisions;
+        const IslandTallies tallies{island_sweeps_.data(),   impulses_.data(),
+                                    body_collisions_.data(), plate_collisions_.data(),
+                                    unresolved_.data(),      hit_speed_.data()};
+        exec_.launch(c, SweepIslands{contacts_.data(), island_key_.data(), island_order_.data(),
+                                     island_end_.data(),
+                                     IslandBodies{bodies, inv_mass_.data(), inv_inertia_.data()},
+                                     system_arrays(), last_changed_.data(), tallies});
+        std::vector<double> sweeps;
+        std::vector<std::uint64_t> impulses, body_collisions, plate_collisions, unresolved;
+        exec_.segmented_max(island_sweeps_, segments_, sweeps);
         exec_.segmented_sum(impulses_, segments_, impulses);
-        exec_.segmented_sum(collisions_, segments_, collisions);
+        exec_.segmented_sum(body_collisions_, segments_, body_collisions);
+        exec_.segmented_sum(plate_collisions_, segments_, plate_collisions);
+        exec_.segmented_sum(unresolved_, segments_, unresolved);
         for (std::size_t m = 0; m < systems; ++m) {
-            stats[m].impulses = impulses[m] + impulses[systems + m];
-            stats[m].body_collisions = collisions[m];
-            stats[m].plate_collisions = collisions[systems + m];
-        }
-        if (std::find(any_impulse.begin(), any_impulse.end(), 1) != any_impulse.end()) {
-            exec_.launch(
-                c, FlagApproaching{contacts_.data(), bodies, system_arrays(), approaching_.data()});
-            std::vector<std::uint64_t> approaching;
-            exec_.segmented_sum(approaching_, segments_, approaching);
-            for (std::size_t m = 0; m < systems; ++m)
-                if (any_impulse[m])
-                    stats[m].unresolved += approaching[m] + approaching[systems + m];
+            const std::size_t p = systems + m;  // the system's plate-contact segment
+            stats[m].sweeps = static_cast<int>(std::max(sweeps[m], sweeps[p]));
+            stats[m].impulses = impulses[m] + impulses[p];
+            stats[m].body_collisions = body_collisions[m] + body_collisions[p];
+            stats[m].plate_collisions = plate_collisions[m] + plate_collisions[p];
+            stats[m].unresolved += unresolved[m] + unresolved[p];
         }
     }
 
@@ -549,12 +549,13 @@ class ParallelEnsemble final : public EnsembleStepper {
     Array<Contact> contacts_;
     Array<double> depth_;
     std::uint32_t contact_count_ = 0, body_contact_count_ = 0;
+    Array<std::uint32_t> partner_;
     Array<double> inv_mass_;
     Array<Mat3> inv_inertia_;
-    Array<std::uint32_t> rank_;
-    ContactColouring<Executor> colouring_;
-    Array<int> flags_, last_changed_;
-    Array<std::uint32_t> impulses_, collisions_, approaching_, kicks_;
+    Array<std::uint32_t> parent_, island_key_, island_order_, island_start_, island_end_;
+    Array<int> last_changed_;
+    Array<double> island_sweeps_;
+    Array<std::uint32_t> impulses_, body_collisions_, plate_collisions_, unresolved_, kicks_;
     Array<double> hit_speed_;
     std::uint64_t steps_ = 0;
 
