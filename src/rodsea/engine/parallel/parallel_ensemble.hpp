@@ -432,11 +432,10 @@ class ParallelEnsemble final : public EnsembleStepper {
             hit_speed_.resize(room);
             island_sweeps_.resize(room);
         }
-        exec_.launch(spheres,
-                     WriteContacts{sphere_arrays(), body_arrays(), species_arrays(), cells,
-                                   system_arrays(), body_offset_.data(), plate_offset_.data(),
-                                   body_contact_count_, contacts_.data(), depth_.data(),
-                                   partner_.data()});
+        exec_.launch(spheres, WriteContacts{sphere_arrays(), body_arrays(), species_arrays(), cells,
+                                            system_arrays(), body_offset_.data(),
+                                            plate_offset_.data(), body_contact_count_,
+                                            contacts_.data(), depth_.data(), partner_.data()});
         std::vector<double> deepest;
         exec_.segmented_max(depth_, segments_, deepest);
         gross_.assign(systems, 0);
