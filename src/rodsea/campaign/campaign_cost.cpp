@@ -145,7 +145,10 @@ void describe_campaign(const Campaign& campaign, const CampaignGrid& grid,
         out << " (cost not measured: --no-measure, or a point could not be built even in its own "
                "box)";
     }
-    out << "\n  GPU-hours: no GPU backend yet (issue 17)\n";
+    // The GPU backend exists (run.backend = "gpu") but its speed has not been measured on a
+    // device yet: no figure rather than a guess.
+    out << "\n  GPU-hours: not estimated (the GPU backend's speed is not measured yet: "
+           "bench/gpu/run.sh on a GPU machine)\n";
 }
 
 }  // namespace rodsea
