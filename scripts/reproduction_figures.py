@@ -95,6 +95,11 @@ def series_files():
     files = sorted(f for f in os.listdir(directory) if f.endswith(".series.csv"))
     if not files:
         raise TableError(f"{FIG1C_SERIES}/: no *.series.csv")
+    # A run continued further ("<point>_extended_to_180_s") holds the shorter run's series as
+    # its beginning, bit for bit: draw only the longer one.
+    stems = [f[:-len(".series.csv")] for f in files]
+    files = [f for f, stem in zip(files, stems)
+             if not any(other.startswith(stem + "_extended_to_") for other in stems)]
     return [os.path.join(FIG1C_SERIES, f) for f in files]
 
 
