@@ -9,8 +9,9 @@
 # device (the device tool's `carry`); without it the tests are skipped, saying so.
 #
 # Writes to $OUT (the device tool's folder) or bench/gpu/out: device.txt (nvidia-smi),
-# tests.txt (the physics tests on the GPU, the device's per-element physics), bench.csv (steps/s
-# and stage times, GPU beside all the CPU's cores), bench.log (determinism, the device).
+# tests.txt (the physics tests on the GPU, the device's per-element physics), validate.md (the
+# GPU against the CPU on the validation tier's measurements, rodsea_gpu_validate), bench.csv
+# (steps/s and stage times, GPU beside all the CPU's cores), bench.log (determinism, the device).
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 out=${OUT:-bench/gpu/out}
@@ -34,18 +35,21 @@ fi
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRODSEA_ENGINE_ONLY=ON \
   -DRODSEA_CUDA=ON -DRODSEA_BUILD_TESTS="$tests" -DRODSEA_BUILD_BENCHMARKS=ON "${prefix[@]}" \
   >"$out/configure.log" 2>&1 || { cat "$out/configure.log"; exit 1; }
-targets=(rodsea_gpu_bench)
+targets=(rodsea_gpu_bench rodsea_gpu_validate)
 [ "$tests" = ON ] && targets+=(rodsea_engine_tests rodsea_cuda_tests)
 cmake --build "$build" --target "${targets[@]}" 2>&1 | tail -5
 
 if [ "$tests" = ON ]; then
   {
     "$build/tests/rodsea_cuda_tests" || status=1
-    # Every physics test with an analytic answer, on the GPU backend; the colouring and the
-    # equivalence with the CPU (contacts to the bit, collision statistics).
-    "$build/tests/rodsea_engine_tests" --gtest_filter='Backends/*/gpu:ContactColouring.*' || status=1
+    # Every physics test with an analytic answer on the GPU backend, and its equivalence with
+    # the CPU (the contact list to the bit, the trajectory, ensembles).
+    "$build/tests/rodsea_engine_tests" --gtest_filter='Backends/*/gpu' || status=1
   } 2>&1 | tee -a "$out/tests.txt"
 fi
+
+"$build/bench/gpu/rodsea_gpu_validate" >"$out/validate.md" 2>&1 || status=1
+cat "$out/validate.md"
 
 "$build/bench/gpu/rodsea_gpu_bench" --seconds "${BENCH_SECONDS:-5}" \
   >"$out/bench.csv" 2>"$out/bench.log" || status=1
