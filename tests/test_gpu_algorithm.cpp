@@ -18,6 +18,7 @@
 #include "rodsea/engine/parallel/host_executor.hpp"
 #include "rodsea/engine/parallel/kernels.hpp"
 #include "rodsea/engine/simulation.hpp"
+#include "rodsea/engine/state_check.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/random.hpp"
 #include "rodsea/scenes/scenes.hpp"
@@ -182,6 +183,33 @@ TEST_P(GpuAlgorithm, AnEnsembleStepsEachSystemAsItStepsAlone) {
     }
     EXPECT_GT(ensemble.totals(0).noise_kicks, 0u);
     EXPECT_EQ(ensemble.totals(1).noise_kicks, 0u);
+}
+
+// A system of an ensemble that blows up (two beads started 60 % of a radius inside each other:
+// deeper than impulses can undo) is reported by its index, after every system has taken the
+// step, as Simulation::step reports its own.
+TEST_P(GpuAlgorithm, AnEnsembleNamesTheSystemThatBlewUp) {
+    const Scene healthy = noisy_dense_mixture(31);
+    EngineParameters p;
+    p.box = {10.0, 10.0};
+    p.species = {bead_species()};
+    BodyState beads;
+    const double z = 0.4 + p.drive.amplitude() + 0.01;
+    beads.add(0, {5.0, 5.0, z}, Quat{});
+    beads.add(0, {5.0 + 0.8 - 0.24, 5.0, z}, Quat{});  // overlap 0.24 mm = 0.6 radius
+    std::vector<Simulation> systems;
+    systems.push_back(Simulation(healthy.params, healthy.bodies));
+    systems.push_back(Simulation::resume(p, beads, 0));
+    Ensemble ensemble(std::move(systems), options());
+    try {
+        ensemble.step();
+        FAIL() << "no blow-up";
+    } catch (const BlowUpError& e) {
+        EXPECT_EQ(e.blow_up().what.rfind("system 1: ", 0), 0u) << e.blow_up().what;
+        EXPECT_EQ(e.step(), 1u);
+    }
+    EXPECT_EQ(ensemble.step_count(0), 1u);  // the healthy system took its step too
+    EXPECT_EQ(ensemble.step_count(1), 1u);
 }
 
 RODSEA_ON_EACH_BACKEND(GpuAlgorithm);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "rodsea/engine/physics/contact_geometry.hpp"
@@ -209,3 +210,26 @@ TEST(Physics, NoiseSignIsFairAndDependsOnEveryKey) {
 
 }  // namespace
 }  // namespace rodsea::physics
+
+namespace rodsea {
+namespace {
+
+// A speed or an overlap that is NaN reaches the blow-up check as +∞: a NaN compares false, so
+// std::max drops it while a device's reduction may keep it; as +∞ every executor keeps it.
+TEST(Physics, ANaNSpeedCountsAsInfinite) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(nan_as_infinity(nan), HUGE_VAL);
+    EXPECT_EQ(nan_as_infinity(2.5), 2.5);
+    const physics::Rotor rotor = physics::make_rotor({0.2, 1.1, 1.1});
+    const physics::PlanarSpeed2 s =
+        physics::planar_speed2({nan, 0.0, 0.0}, Quat{}, {0.0, 0.0, nan}, rotor, 4.0);
+    EXPECT_EQ(s.drift2, HUGE_VAL);
+    EXPECT_EQ(s.turn2, HUGE_VAL);
+    const physics::PlanarSpeed2 finite =
+        physics::planar_speed2({3.0, 4.0, 9.0}, Quat{}, {0.0, 0.0, 2.0}, rotor, 4.0);
+    EXPECT_EQ(finite.drift2, 25.0);  // the vertical speed does not count
+    EXPECT_EQ(finite.turn2, 16.0);   // |ω|² reach²
+}
+
+}  // namespace
+}  // namespace rodsea

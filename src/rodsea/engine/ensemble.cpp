@@ -1,5 +1,6 @@
 #include "rodsea/engine/ensemble.hpp"
 
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -8,6 +9,18 @@
 #include "rodsea/error.hpp"
 
 namespace rodsea {
+
+namespace {
+
+// A blow-up's description, saying which system of the ensemble it was.
+BlowUp naming_system(std::size_t m, BlowUp blown) {
+    std::ostringstream what;
+    what << "system " << m << ": " << blown.what;
+    blown.what = what.str();
+    return blown;
+}
+
+}  // namespace
 
 Ensemble::Ensemble(std::vector<Simulation> systems, BackendOptions options) : options_(options) {
     if (systems.empty()) throw InvalidParameter("systems", "none", "at least one");
@@ -21,9 +34,10 @@ Ensemble::Ensemble(std::vector<Simulation> systems, BackendOptions options) : op
     last_.resize(systems.size());
     totals_.resize(systems.size());
     if (options_.backend == BackendKind::cpu) {
-        for (Simulation& s : systems)
-            s.set_threads(options_.threads);
-        cpu_systems_ = std::move(systems);
+        // Each on the ensemble's options (threads, blow-up stop): resumed, so to the last bit.
+        for (const Simulation& s : systems)
+            cpu_systems_.push_back(
+                Simulation::resume(s.parameters(), s.bodies(), s.step_count(), options_));
         return;
     }
     std::vector<std::pair<const SpeciesTable*, BodyState>> states;
@@ -44,8 +58,16 @@ const char* Ensemble::backend_name() const {
 
 void Ensemble::step() {
     if (!cpu_systems_.empty()) {
+        // Every system steps, as on the GPU, before the first blow-up is reported.
+        std::optional<BlowUpError> first_blow_up;
         for (std::size_t m = 0; m < cpu_systems_.size(); ++m) {
-            cpu_systems_[m].step();  // throws its own BlowUpError
+            try {
+                cpu_systems_[m].step();
+            } catch (const BlowUpError& e) {
+                if (!first_blow_up)
+                    first_blow_up.emplace(naming_system(m, e.blow_up()), e.step(),
+                                          cpu_systems_[m].time());
+            }
             step_count_[m] = cpu_systems_[m].step_count();
             last_[m] = cpu_systems_[m].last_step();
             totals_[m] = cpu_systems_[m].totals();
@@ -58,6 +80,7 @@ void Ensemble::step() {
             profile_.resolution += s.profile().resolution;
             profile_.noise += s.profile().noise;
         }
+        if (first_blow_up) throw *first_blow_up;
         return;
     }
     std::vector<StepContext> contexts;
@@ -74,12 +97,8 @@ void Ensemble::step() {
 
 void Ensemble::check_blow_up(std::size_t m) const {
     if (!options_.stop_on_blow_up) return;
-    if (auto blown = detect_blow_up(bounds_[m], last_[m])) {
-        std::ostringstream what;
-        what << "system " << m << ": " << blown->what;
-        blown->what = what.str();
-        throw BlowUpError(*blown, step_count_[m], time(m));
-    }
+    if (const auto blown = detect_blow_up(bounds_[m], last_[m]))
+        throw BlowUpError(naming_system(m, *blown), step_count_[m], time(m));
 }
 
 void Ensemble::run(std::uint64_t steps) {

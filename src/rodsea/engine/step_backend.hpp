@@ -56,8 +56,9 @@ enum class BackendKind {
 };
 const char* to_string(BackendKind kind);
 
-// How the step is executed. On one backend the trajectory does not depend on the threads;
-// the GPU backend's is statistically equal to the CPU's, not equal bit for bit.
+// How the step is executed. On one backend the trajectory does not depend on the threads. The
+// GPU backend runs the CPU's algorithm (gpu_on_host gives the CPU's bits); on a device the
+// rounding may differ, so the promise is statistical equality with the CPU (architecture.md).
 struct BackendOptions {
     int threads = 1;  // OpenMP threads of the CPU backend (and of gpu_on_host), >= 1
     // Simulation::step throws BlowUpError after a step that crosses a blow-up bound

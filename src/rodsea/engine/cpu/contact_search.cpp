@@ -6,6 +6,7 @@
 #include "rodsea/engine/cpu/detail/parallel.hpp"
 #include "rodsea/engine/physics/contact_geometry.hpp"
 #include "rodsea/engine/state_check.hpp"
+#include "rodsea/math/nan_as_infinity.hpp"
 
 namespace rodsea::cpu {
 
@@ -22,8 +23,9 @@ struct SearchInput {
 }  // namespace
 
 void ContactFinder::Depth::add(double overlap_fraction) {
-    deepest = std::max(deepest, overlap_fraction);
-    if (overlap_fraction > kGrossOverlapFraction) ++gross;
+    const double f = nan_as_infinity(overlap_fraction);
+    deepest = std::max(deepest, f);
+    if (f > kGrossOverlapFraction) ++gross;
 }
 
 namespace {

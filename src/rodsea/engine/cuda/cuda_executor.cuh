@@ -88,6 +88,7 @@ class CudaExecutor {
           max_double_(std::move(o.max_double_)),
           max_int_(std::move(o.max_int_)),
           segment_offsets_(std::move(o.segment_offsets_)),
+          uploaded_offsets_(std::move(o.uploaded_offsets_)),
           segment_max_(std::move(o.segment_max_)),
           segment_sum_(std::move(o.segment_sum_)) {}
     CudaExecutor& operator=(CudaExecutor&&) = delete;
@@ -221,7 +222,9 @@ class CudaExecutor {
   private:
     static constexpr std::uint32_t kBlock = 256;
 
+    // CUB's temporary storage. Never null: CUB takes a null pointer as a query for the size.
     void* scratch(std::size_t bytes) {
+        bytes = bytes > 0 ? bytes : 1;
         if (bytes > scratch_bytes_) {
             cudaFree(scratch_);
             scratch_ = nullptr;
@@ -253,7 +256,10 @@ class CudaExecutor {
                    Array<T>& result, Reduce reduce) {
         out.clear();
         if (offsets.size() < 2) return;
-        upload(segment_offsets_, offsets);
+        if (offsets != uploaded_offsets_) {  // a step's reductions share their segments
+            upload(segment_offsets_, offsets);
+            uploaded_offsets_ = offsets;
+        }
         result.resize(offsets.size() - 1);
         std::size_t bytes = 0;
         check(reduce(nullptr, bytes), "segmented reduce");
@@ -271,6 +277,7 @@ class CudaExecutor {
     Array<double> max_double_;
     Array<int> max_int_;
     Array<std::uint32_t> segment_offsets_;
+    std::vector<std::uint32_t> uploaded_offsets_;  // what segment_offsets_ holds
     Array<double> segment_max_;
     Array<unsigned long long> segment_sum_;
 };

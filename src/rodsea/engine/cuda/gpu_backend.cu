@@ -25,11 +25,19 @@ GpuAvailability probe_device() {
     char text[256];
     std::snprintf(text, sizeof text, "%s, sm_%d%d, %.1f GiB", p.name, p.major, p.minor,
                   static_cast<double>(p.totalGlobalMem) / (1024.0 * 1024.0 * 1024.0));
-    // The build's code is sm_90 with compute_90 PTX: older devices cannot run it.
-    if (p.major < 9)
-        return {false, std::string(text) +
-                           ": older than the sm_90 this rodsea was built for (set "
-                           "CMAKE_CUDA_ARCHITECTURES to build for it)"};
+    // Whether the build's code runs there (sm_90 and compute_90 PTX by default): one of its
+    // kernels asked for its attributes.
+    cudaFuncAttributes attributes{};
+    const cudaError_t image = cudaFuncGetAttributes(&attributes, run_kernel<parallel::InitIslands>);
+    if (image != cudaSuccess) {
+        cudaGetLastError();  // clear it: the device is still usable by others
+        char advice[160];
+        std::snprintf(advice, sizeof advice,
+                      ": this rodsea has no code it can run (%s); configure with "
+                      "-DCMAKE_CUDA_ARCHITECTURES=%d%d",
+                      cudaGetErrorString(image), p.major, p.minor);
+        return {false, std::string(text) + advice};
+    }
     return {true, text};
 }
 

@@ -23,7 +23,7 @@ struct BodyArrays {
     std::uint32_t count = 0;
 };
 
-// The SpeciesTable's arrays.
+// The SpeciesTable's arrays (of every system of an ensemble, one after another).
 struct SpeciesArrays {
     const double* inverse_mass = nullptr;
     const Vec3* inverse_inertia = nullptr;
@@ -33,12 +33,17 @@ struct SpeciesArrays {
     const std::uint32_t* first_sphere = nullptr;
     const Vec3* sphere_offset = nullptr;
     const ContactCoefficients* plate = nullptr;
-    const ContactCoefficients* pair = nullptr;  // species × species, row-major
+    // Body–body coefficients: each system's species × species block, row-major, one block after
+    // another (an ensemble's systems never touch each other). Species a's row starts at
+    // pair_row[a]; species b is column local_index[b] of its system's block.
+    const ContactCoefficients* pair = nullptr;
+    const std::uint32_t* pair_row = nullptr;
+    const std::uint32_t* local_index = nullptr;
     const std::uint8_t* polar = nullptr;
     std::uint32_t count = 0;
 
     RODSEA_HD const ContactCoefficients& pair_coefficients(std::uint32_t a, std::uint32_t b) const {
-        return pair[a * count + b];
+        return pair[pair_row[a] + local_index[b]];
     }
 };
 
@@ -88,14 +93,13 @@ struct ContactRange {
 };
 
 // The independent systems stepped together (an ensemble; a lone run is one system): each body's
-// system, and each system's step, first body, grid and contacts. Bodies, spheres and contacts
-// of a system are contiguous, in system order.
+// system, and each system's step, first body and grid. Bodies, spheres and contacts of a system
+// are contiguous, in system order.
 struct Systems {
     const StepContext* context = nullptr;
     const std::uint32_t* of_body = nullptr;
     const std::uint32_t* first_body = nullptr;
     const SystemGrid* grid = nullptr;
-    const ContactRange* contacts = nullptr;
     std::uint32_t count = 0;
 
     RODSEA_HD std::uint32_t of_sphere(const SphereArrays& spheres, std::uint32_t s) const {

@@ -19,6 +19,14 @@ RODSEA_HD inline std::uint32_t load_shared(const std::uint32_t* p) {
 #endif
 }
 
+RODSEA_HD inline void store_shared(std::uint32_t* p, std::uint32_t value) {
+#if defined(__CUDA_ARCH__)
+    *static_cast<volatile std::uint32_t*>(p) = value;
+#else
+    std::atomic_ref<std::uint32_t>(*p).store(value, std::memory_order_relaxed);
+#endif
+}
+
 // Sets *p to `desired` if it holds `expected`; true when it did.
 RODSEA_HD inline bool compare_and_swap(std::uint32_t* p, std::uint32_t expected,
                                        std::uint32_t desired) {

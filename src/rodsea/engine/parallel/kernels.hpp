@@ -5,10 +5,10 @@
 // (parallel_backend.hpp), so the device's algorithm is tested on any machine.
 //
 // No element's result depends on the order in which elements run: each writes only its own
-// outputs, and where elements share a body (the impulses) the contacts are coloured so that no
-// two of one colour do. Sums and maxima are taken afterwards by the executor's reductions, and
-// orders by stable sorts, so a trajectory is the same bit for bit on every run of one build on
-// one device.
+// outputs, and where elements would share a body (the impulses) one thread sweeps the whole
+// island those bodies belong to. Sums and maxima are taken afterwards by the executor's
+// reductions, and orders by stable sorts, so a trajectory is the same bit for bit on every run of
+// one build on one device.
 //
 // The kernels step many independent systems at once (Systems): each element reads its own
 // system's step (box, plates, noise, solver settings). Nothing a system's elements compute
@@ -24,6 +24,7 @@
 #include "rodsea/engine/physics/plate_noise.hpp"
 #include "rodsea/engine/physics/sphere_placement.hpp"
 #include "rodsea/engine/physics/step_context.hpp"
+#include "rodsea/math/nan_as_infinity.hpp"
 #include "rodsea/random.hpp"
 
 namespace rodsea::parallel {
@@ -206,7 +207,8 @@ struct WriteContacts {
                                           partner[slot] = partner[slot - 1];
                                       }
                                       contacts[slot] = c;
-                                      depth[slot] = c.overlap / (ri < rj ? ri : rj);
+                                      depth[slot] =
+                                          nan_as_infinity(c.overlap / (ri < rj ? ri : rj));
                                       partner[slot] = j;
                                   });
         const std::uint32_t b = spheres.body[i];
@@ -216,11 +218,11 @@ struct WriteContacts {
         const ContactCoefficients& k = species.plate[bodies.species[b]];
         if (o.base > 0.0) {
             contacts[at] = physics::plate_contact(b, p, ri, bodies.position[b], true, o.base, k);
-            depth[at++] = o.base / ri;
+            depth[at++] = nan_as_infinity(o.base / ri);
         }
         if (o.lid > 0.0) {
             contacts[at] = physics::plate_contact(b, p, ri, bodies.position[b], false, o.lid, k);
-            depth[at] = o.lid / ri;
+            depth[at] = nan_as_infinity(o.lid / ri);
         }
     }
 };
@@ -272,7 +274,18 @@ struct HookIslands {
     }
 };
 
-// Stage 4d, per contact: its island (its first body's root), the key of the stable sort that
+// Stage 4d, per body: points straight at its island's root, so that the contacts find it in one
+// step. A body may be read by another element while it changes: it points to an ancestor before
+// and to the root after, and either leads to the root.
+struct CompressIslands {
+    std::uint32_t* parent;
+
+    RODSEA_HD void operator()(std::uint32_t b) const {
+        store_shared(parent + b, island_root(parent, b));
+    }
+};
+
+// Stage 4e, per contact: its island (its first body's root), the key of the stable sort that
 // lists each island's contacts together, in list order.
 struct KeyContactsByIsland {
     const Contact* contacts;
@@ -308,7 +321,7 @@ struct IslandTallies {
     double* hit_speed;  // per plate contact: its fastest approach that got an impulse
 };
 
-// Stage 4e, per entry of the contacts sorted by island: the thread at an island's first entry
+// Stage 4f, per entry of the contacts sorted by island: the thread at an island's first entry
 // sweeps the whole island (physics::sweep_island, the CPU backend's own sweep, in list order
 // with its system's sweep cap), so each island gets exactly the impulses it gets on the CPU. In
 // a shaken monolayer islands are small: 72 % hold one contact and none more than 14 at
@@ -344,7 +357,7 @@ struct SweepIslands {
     }
 };
 
-// Stage 4f, per body: out of the plates by its deepest overlap (plate_projection.hpp says why).
+// Stage 4g, per body: out of the plates by its deepest overlap (plate_projection.hpp says why).
 // The overlaps are those the contacts were found with: the spheres have not moved since.
 struct ProjectOutOfPlates {
     BodyArrays bodies;

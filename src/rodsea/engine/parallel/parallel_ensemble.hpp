@@ -85,6 +85,9 @@ class ParallelEnsemble final : public EnsembleStepper {
           exec_(std::move(executor)),
           members_(std::move(members)) {
         if (members_.empty()) throw std::invalid_argument("rodsea: an ensemble of no systems");
+        for (const EnsembleMember& m : members_)
+            if (m.bodies.size() == 0 || m.spheres.body.empty() || m.species->size() == 0)
+                throw std::invalid_argument("rodsea: a system of an ensemble without bodies");
         concatenate();
         const std::size_t n = host_body_count(), spheres = host_sphere_count();
         drift2_.resize(n);
@@ -234,10 +237,7 @@ class ParallelEnsemble final : public EnsembleStepper {
         std::vector<std::uint32_t> system_of_body, first_body_of_system;
         first_body_.assign(1, 0);
         first_sphere_.assign(1, 0);
-        std::size_t species_total = 0;
-        for (const EnsembleMember& m : members_)
-            species_total += m.species->size();
-        species.pair.assign(species_total * species_total, ContactCoefficients{0.0, 0.0});
+        std::vector<std::uint32_t> pair_row, local_index;
         std::size_t species_first = 0;
         for (std::size_t s = 0; s < members_.size(); ++s) {
             const EnsembleMember& m = members_[s];
@@ -273,11 +273,11 @@ class ParallelEnsemble final : public EnsembleStepper {
             append(species.polar, t.polar);
             for (std::size_t k = 0; k < t.size(); ++k)
                 species.first_sphere.push_back(t.first_sphere[k] + offset_shift);
-            for (std::size_t a = 0; a < t.size(); ++a)
-                for (std::size_t b = 0; b < t.size(); ++b)
-                    species.pair[(species_first + a) * species_total + species_first + b] =
-                        t.pair_coefficients(static_cast<std::uint32_t>(a),
-                                            static_cast<std::uint32_t>(b));
+            for (std::size_t a = 0; a < t.size(); ++a) {  // this system's block of pairs
+                pair_row.push_back(static_cast<std::uint32_t>(species.pair.size() + a * t.size()));
+                local_index.push_back(static_cast<std::uint32_t>(a));
+            }
+            append(species.pair, t.pair);
             species_first += t.size();
             first_body_.push_back(static_cast<std::uint32_t>(all.size()));
             first_sphere_.push_back(static_cast<std::uint32_t>(spheres.body.size()));
@@ -286,7 +286,7 @@ class ParallelEnsemble final : public EnsembleStepper {
         }
         species.first_sphere.push_back(static_cast<std::uint32_t>(species.sphere_offset.size()));
         spheres.first_of.push_back(static_cast<std::uint32_t>(spheres.body.size()));
-        species_count_ = static_cast<std::uint32_t>(species_total);
+        species_count_ = static_cast<std::uint32_t>(species_first);
 
         exec_.upload(inverse_mass_, species.inverse_mass);
         exec_.upload(inverse_inertia_, species.inverse_inertia);
@@ -297,6 +297,8 @@ class ParallelEnsemble final : public EnsembleStepper {
         exec_.upload(sphere_offset_, species.sphere_offset);
         exec_.upload(plate_coefficients_, species.plate);
         exec_.upload(pair_coefficients_, species.pair);
+        exec_.upload(pair_row_, pair_row);
+        exec_.upload(local_index_, local_index);
         exec_.upload(polar_, species.polar);
         exec_.upload(body_species_, all.species);
         exec_.upload(position_, all.position);
@@ -319,16 +321,10 @@ class ParallelEnsemble final : public EnsembleStepper {
                 spin_.data(),         static_cast<std::uint32_t>(host_body_count())};
     }
     SpeciesArrays species_arrays() const {
-        return {inverse_mass_.data(),
-                inverse_inertia_.data(),
-                rotor_.data(),
-                reach2_.data(),
-                sphere_axis_.data(),
-                species_first_sphere_.data(),
-                sphere_offset_.data(),
-                plate_coefficients_.data(),
-                pair_coefficients_.data(),
-                polar_.data(),
+        return {inverse_mass_.data(),  inverse_inertia_.data(),    rotor_.data(),
+                reach2_.data(),        sphere_axis_.data(),        species_first_sphere_.data(),
+                sphere_offset_.data(), plate_coefficients_.data(), pair_coefficients_.data(),
+                pair_row_.data(),      local_index_.data(),        polar_.data(),
                 species_count_};
     }
     SphereArrays sphere_arrays() {
@@ -337,7 +333,7 @@ class ParallelEnsemble final : public EnsembleStepper {
     }
     Systems system_arrays() const {
         return {contexts_.data(), system_of_body_.data(), first_body_of_system_.data(),
-                grids_.data(),    ranges_dev_.data(),     static_cast<std::uint32_t>(size())};
+                grids_.data(), static_cast<std::uint32_t>(size())};
     }
 
     // Each system's cells no narrower than its widest contact reach and no more than a few per
@@ -421,7 +417,6 @@ class ParallelEnsemble final : public EnsembleStepper {
         for (std::size_t m = 0; m < systems; ++m)
             ranges_[m] = {body_at[m], body_at[m + 1] - body_at[m],
                           body_contact_count_ + plate_at[m]};
-        exec_.upload(ranges_dev_, ranges_);
         if (contacts_.size() < contact_count_) {
             const std::size_t room = contact_count_ + contact_count_ / 4 + 64;
             contacts_.resize(room);
@@ -469,6 +464,7 @@ class ParallelEnsemble final : public EnsembleStepper {
                                             inv_inertia_.data()});
         exec_.launch(n, InitIslands{parent_.data()});
         exec_.launch(body_contact_count_, HookIslands{contacts_.data(), parent_.data()});
+        exec_.launch(n, CompressIslands{parent_.data()});
         exec_.launch(c, KeyContactsByIsland{contacts_.data(), parent_.data(), island_key_.data(),
                                             island_order_.data()});
         exec_.sort_by_key(island_key_, island_order_, c, key_bits(n));
@@ -517,6 +513,7 @@ class ParallelEnsemble final : public EnsembleStepper {
     Array<int> sphere_axis_;
     Array<std::uint32_t> species_first_sphere_;
     Array<ContactCoefficients> plate_coefficients_, pair_coefficients_;
+    Array<std::uint32_t> pair_row_, local_index_;
     Array<std::uint8_t> polar_;
     std::uint32_t species_count_ = 0;
 
@@ -533,7 +530,6 @@ class ParallelEnsemble final : public EnsembleStepper {
     Array<std::uint32_t> system_of_body_, first_body_of_system_, system_first_sphere_;
     Array<SystemGrid> grids_;
     std::vector<SystemGrid> host_grids_;
-    Array<ContactRange> ranges_dev_;
     std::vector<ContactRange> ranges_;
     std::vector<std::uint32_t> segments_;  // body then plate contact ranges, 2 × systems
     std::vector<std::size_t> gross_;

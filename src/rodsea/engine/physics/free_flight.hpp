@@ -3,6 +3,7 @@
 #include "rodsea/engine/physics/rigid_rotation.hpp"
 #include "rodsea/engine/physics/step_context.hpp"
 #include "rodsea/math/hostdevice.hpp"
+#include "rodsea/math/nan_as_infinity.hpp"
 
 namespace rodsea::physics {
 
@@ -17,7 +18,8 @@ struct PlanarSpeed2 {
 };
 RODSEA_HD inline PlanarSpeed2 planar_speed2(const Vec3& v, const Quat& q, const Vec3& w,
                                             const Rotor& rotor, double reach2) {
-    return {v.x * v.x + v.y * v.y, spin_bound2(rotor, q, w) * reach2};
+    return {nan_as_infinity(v.x * v.x + v.y * v.y),
+            nan_as_infinity(spin_bound2(rotor, q, w) * reach2)};
 }
 
 // Moves a body by one step, x and y wrapped into the box. The step's numbers come by value
