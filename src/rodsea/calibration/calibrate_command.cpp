@@ -244,8 +244,7 @@ int calibrate_command(const std::vector<std::string>& words, std::ostream& out, 
         parse_count("--threads", args.value("--threads").value_or(std::to_string(cores)), 1, 256));
     BackendOptions backend;
     if (const auto b = args.value("--backend")) {
-        if (!parse_backend(*b, backend.backend))
-            throw InvalidParameter("--backend", *b, "cpu or gpu");
+        backend.backend = backend_flag("--backend", *b);
         require_usable_backend(backend.backend, "--backend");
     }
     const std::filesystem::path dir =

@@ -256,9 +256,10 @@ std::vector<KeySpec> make_keys() {
                     .doc("What steps the state: cpu, the host's cores (run.threads); gpu, a CUDA "
                          "device (a build with CUDA and an sm_90 or newer GPU: rodsea info says "
                          "whether this machine has one, and run refuses gpu before any work "
-                         "where it has none). The GPU's trajectory is statistically the CPU's, "
-                         "not bit for bit (docs/architecture.md); a checkpoint resumes on either "
-                         "(run --resume DIR --backend)."));
+                         "where it has none). The GPU runs the CPU's algorithm; its rounding may "
+                         "differ, so its trajectory is the CPU's statistically, not promised bit "
+                         "for bit (docs/architecture.md). A checkpoint resumes on either (run "
+                         "--resume DIR --backend)."));
     // [initial]
     k.push_back(
         Key("initial", "orientation", ValueType::option)

@@ -37,6 +37,12 @@ bool parse_backend(const std::string& text, BackendKind& kind) {
     return false;
 }
 
+BackendKind backend_flag(const std::string& flag, const std::string& text) {
+    BackendKind kind{};
+    if (!parse_backend(text, kind)) throw InvalidParameter(flag, text, "cpu or gpu");
+    return kind;
+}
+
 GpuAvailability gpu_availability() {
 #if defined(RODSEA_HAVE_CUDA)
     return cuda::probe_device();

@@ -31,6 +31,8 @@ void require_usable_backend(BackendKind backend, const std::string& key);
 
 // Reads "cpu" or "gpu" (what users may ask for) into `kind`; false for anything else.
 bool parse_backend(const std::string& text, BackendKind& kind);
+// The same for a command-line flag: throws InvalidParameter naming `flag` for anything else.
+BackendKind backend_flag(const std::string& flag, const std::string& text);
 
 // `species` must outlive the backend. Throws InvalidParameter naming "backend" when the GPU is
 // asked for and gpu_availability() says it cannot be used.

@@ -70,12 +70,6 @@ const CommandSpec& info_command_spec() {
 
 namespace {
 
-BackendKind backend_named(const std::string& text) {
-    BackendKind kind{};
-    if (!parse_backend(text, kind)) throw InvalidParameter("--backend", text, "cpu or gpu");
-    return kind;
-}
-
 bool stdout_is_terminal() {
     return ::isatty(STDOUT_FILENO) == 1;
 }
@@ -111,7 +105,7 @@ int run_command(const std::vector<std::string>& words, std::ostream& out, std::o
             options.duration = parse_number("--duration", *t, 0.0, 1e6, "s");
         if (const auto n = a.value("--steady-samples"))
             options.steady_samples = parse_count("--steady-samples", *n, 0, 1'000'000'000);
-        if (const auto b = a.value("--backend")) options.backend = backend_named(*b);
+        if (const auto b = a.value("--backend")) options.backend = backend_flag("--backend", *b);
         return resume_run(*dir, options, out, err, stdout_is_terminal());
     }
     for (const char* flag : {"--duration", "--steady-samples"})
@@ -124,7 +118,7 @@ int run_command(const std::vector<std::string>& words, std::ostream& out, std::o
         plan = with_threads(plan.config_toml, config.string(),
                             static_cast<int>(parse_count("--threads", *n, 1, 1024)));
     if (const auto b = a.value("--backend"))
-        plan = with_backend(plan.config_toml, config.string(), backend_named(*b));
+        plan = with_backend(plan.config_toml, config.string(), backend_flag("--backend", *b));
     options.out_dir =
         a.value("--out").value_or((std::filesystem::path("out") / config.stem()).string());
     return start_run(plan, options, out, err, stdout_is_terminal());
