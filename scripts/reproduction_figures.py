@@ -25,6 +25,12 @@ FIG1C_POINTS = [
     ("60 s, 63 mm box", f"{DATA}/fig1c-phi_p0.05-long.points.csv"),
 ]
 FIG1C_SERIES = f"{DATA}/fig1c-phi_p0.05-long"
+# Item 3, finite size: the φ_a = 0.20 point in three boxes (label, series table, polar rods).
+FINITE_SIZE = [
+    ("38 mm box", f"{DATA}/finite-size/fig1c-phi_a0.20-scale0.15.series.csv", 18),
+    ("63 mm box", f"{FIG1C_SERIES}/medium.area_fraction=0.2_extended_to_180_s.series.csv", 50),
+    ("88 mm box", f"{DATA}/finite-size/fig1c-phi_a0.20-scale0.35.series.csv", 98),
+]
 
 
 class TableError(Exception):
@@ -126,7 +132,35 @@ def draw_fig1c_series(plt):
     return fig, dump
 
 
-FIGURES = {"fig1c": draw_fig1c, "fig1c-series": draw_fig1c_series}
+def draw_finite_size(plt):
+    """P against time for the φ_a = 0.20 point in each box, 5 s means, beside the order of N
+    random headings, √(π/4N), which a disordered state of N polar rods shows."""
+    fig, ax = plt.subplots(figsize=(7.0, 3.6))
+    dump = {}
+    for (label, relative, rods), colour in zip(FINITE_SIZE, ("C0", "C1", "C2")):
+        if not os.path.isfile(os.path.join(ROOT, relative)):
+            continue  # a box not run yet
+        t = read_csv(relative)
+        start, p = column(t, "t_from", relative), column(t, "P_polar", relative)
+        bins = len(p) // 5
+        mid = start[:5 * bins].reshape(bins, 5).mean(axis=1) + 0.5
+        mean = p[:5 * bins].reshape(bins, 5).mean(axis=1)
+        floor = float(np.sqrt(np.pi / (4 * rods)))
+        ax.plot(mid, mean, color=colour, lw=1.4, label=f"{label}, {rods} polar rods")
+        ax.axhline(floor, color=colour, lw=0.9, ls="--")
+        dump[f"P_polar: {label}"] = {"x": mid.tolist(), "y": mean.tolist()}
+        dump[f"random headings: {label}"] = {"x": [], "y": [floor]}
+    ax.set_xlabel("t (s)")
+    ax.set_ylabel("P (5 s means)")
+    ax.set_title("φ_a = 0.20, φ_p = 0.05, D_r = 0 in three boxes (dashed: N random headings)",
+                 fontsize=10)
+    ax.legend(loc="best", fontsize=8)
+    fig.tight_layout()
+    return fig, dump
+
+
+FIGURES = {"fig1c": draw_fig1c, "fig1c-series": draw_fig1c_series,
+           "finite-size": draw_finite_size}
 
 
 def main(argv):
