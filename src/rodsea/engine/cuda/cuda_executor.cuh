@@ -84,9 +84,6 @@ class CudaExecutor {
           scratch_bytes_(std::exchange(o.scratch_bytes_, 0)),
           sorted_keys_(std::move(o.sorted_keys_)),
           sorted_values_(std::move(o.sorted_values_)),
-          sum_(std::move(o.sum_)),
-          max_double_(std::move(o.max_double_)),
-          max_int_(std::move(o.max_int_)),
           segment_offsets_(std::move(o.segment_offsets_)),
           uploaded_offsets_(std::move(o.uploaded_offsets_)),
           segment_max_(std::move(o.segment_max_)),
@@ -150,22 +147,6 @@ class CudaExecutor {
               "sort copy");
     }
 
-    double max_of(const Array<double>& a, std::size_t n) { return reduce_max(a, n, 0.0); }
-    int max_of(const Array<int>& a, std::size_t n) { return reduce_max(a, n, 0); }
-
-    std::uint64_t sum_of(const Array<std::uint32_t>& a, std::size_t from, std::size_t to) {
-        if (to <= from) return 0;
-        Array<unsigned long long>& result = sum_;
-        result.resize(1);
-        std::size_t bytes = 0;
-        const auto count = static_cast<int>(to - from);
-        // Integer sums: exact in any order.
-        check(cub::DeviceReduce::Sum(nullptr, bytes, a.data() + from, result.data(), count), "sum");
-        check(cub::DeviceReduce::Sum(scratch(bytes), bytes, a.data() + from, result.data(), count),
-              "sum");
-        return read(result, 0);
-    }
-
     // out[s] = the largest of a[offsets[s] .. offsets[s + 1]), 0 for none (the values are >= 0).
     void segmented_max(const Array<double>& a, const std::vector<std::uint32_t>& offsets,
                        std::vector<double>& out) {
@@ -214,10 +195,6 @@ class CudaExecutor {
         check(cudaMemcpy(&value, a.data() + i, sizeof(T), cudaMemcpyDeviceToHost), "read");
         return value;
     }
-    template <class T>
-    void write(Array<T>& a, std::size_t i, const T& value) const {
-        check(cudaMemcpy(a.data() + i, &value, sizeof(T), cudaMemcpyHostToDevice), "write");
-    }
 
   private:
     static constexpr std::uint32_t kBlock = 256;
@@ -234,18 +211,6 @@ class CudaExecutor {
         return scratch_;
     }
 
-    // Maxima of non-negative values: a maximum is exact in any order.
-    template <class T>
-    T reduce_max(const Array<T>& a, std::size_t n, T empty) {
-        if (n == 0) return empty;
-        Array<T>& result = max_scratch(T{});
-        result.resize(1);
-        std::size_t bytes = 0;
-        const auto count = static_cast<int>(n);
-        check(cub::DeviceReduce::Max(nullptr, bytes, a.data(), result.data(), count), "max");
-        check(cub::DeviceReduce::Max(scratch(bytes), bytes, a.data(), result.data(), count), "max");
-        return read(result, 0);
-    }
     int segments(const std::vector<std::uint32_t>& offsets) {
         return static_cast<int>(offsets.size() - 1);
     }
@@ -267,15 +232,9 @@ class CudaExecutor {
         download(result, offsets.size() - 1, out);
     }
 
-    Array<double>& max_scratch(double) { return max_double_; }
-    Array<int>& max_scratch(int) { return max_int_; }
-
     void* scratch_ = nullptr;
     std::size_t scratch_bytes_ = 0;
     Array<std::uint32_t> sorted_keys_, sorted_values_;
-    Array<unsigned long long> sum_;
-    Array<double> max_double_;
-    Array<int> max_int_;
     Array<std::uint32_t> segment_offsets_;
     std::vector<std::uint32_t> uploaded_offsets_;  // what segment_offsets_ holds
     Array<double> segment_max_;

@@ -71,17 +71,6 @@ class HostExecutor {
         gather(values.data_, n);
     }
 
-    double max_of(const Array<double>& a, std::size_t n) const {
-        return n == 0 ? 0.0 : *std::max_element(a.data_.begin(), a.data_.begin() + to_end(n));
-    }
-    int max_of(const Array<int>& a, std::size_t n) const {
-        return n == 0 ? 0 : *std::max_element(a.data_.begin(), a.data_.begin() + to_end(n));
-    }
-    std::uint64_t sum_of(const Array<std::uint32_t>& a, std::size_t from, std::size_t to) const {
-        return std::accumulate(a.data_.begin() + to_end(from), a.data_.begin() + to_end(to),
-                               std::uint64_t{0});
-    }
-
     // out[s] = the largest of a[offsets[s] .. offsets[s + 1]), 0 for none (the values are >= 0).
     void segmented_max(const Array<double>& a, const std::vector<std::uint32_t>& offsets,
                        std::vector<double>& out) const {
@@ -110,14 +99,6 @@ class HostExecutor {
     template <class T>
     void download(const Array<T>& a, std::size_t first, std::size_t n, std::vector<T>& to) const {
         to.assign(a.data_.begin() + to_end(first), a.data_.begin() + to_end(first + n));
-    }
-    template <class T>
-    T read(const Array<T>& a, std::size_t i) const {
-        return a.data_[i];
-    }
-    template <class T>
-    void write(Array<T>& a, std::size_t i, const T& value) const {
-        a.data_[i] = value;
     }
 
   private:
