@@ -25,12 +25,20 @@ FIG1C_POINTS = [
     ("60 s, 63 mm box", f"{DATA}/fig1c-phi_p0.05-long.points.csv"),
 ]
 FIG1C_SERIES = f"{DATA}/fig1c-phi_p0.05-long"
-# Item 3, finite size: the φ_a = 0.20 point in three boxes (label, series table, polar rods).
-FINITE_SIZE = [
-    ("38 mm box", f"{DATA}/finite-size/fig1c-phi_a0.20-scale0.15.series.csv", 18),
-    ("63 mm box", f"{FIG1C_SERIES}/medium.area_fraction=0.2_extended_to_180_s.series.csv", 50),
-    ("88 mm box", f"{DATA}/finite-size/fig1c-phi_a0.20-scale0.35.series.csv", 98),
-]
+# Item 3, finite size: the ordered (φ_a = 0.05) and the disordered (0.20) point in up to three
+# boxes each: {φ_a: [(label, series table, polar rods)]}; a box not run yet is left out.
+FINITE_SIZE = {
+    0.05: [
+        ("38 mm box", f"{DATA}/finite-size/fig1c-phi_a0.05-scale0.15.series.csv", 18),
+        ("63 mm box", f"{FIG1C_SERIES}/medium.area_fraction=0.05_extended_to_180_s.series.csv", 50),
+        ("88 mm box", f"{DATA}/finite-size/fig1c-phi_a0.05-scale0.35.series.csv", 98),
+    ],
+    0.20: [
+        ("38 mm box", f"{DATA}/finite-size/fig1c-phi_a0.20-scale0.15.series.csv", 18),
+        ("63 mm box", f"{FIG1C_SERIES}/medium.area_fraction=0.2_extended_to_180_s.series.csv", 50),
+        ("88 mm box", f"{DATA}/finite-size/fig1c-phi_a0.20-scale0.35.series.csv", 98),
+    ],
+}
 
 
 class TableError(Exception):
@@ -133,28 +141,30 @@ def draw_fig1c_series(plt):
 
 
 def draw_finite_size(plt):
-    """P against time for the φ_a = 0.20 point in each box, 5 s means, beside the order of N
-    random headings, √(π/4N), which a disordered state of N polar rods shows."""
-    fig, ax = plt.subplots(figsize=(7.0, 3.6))
+    """P against time for the φ_a = 0.05 and 0.20 points in each box, 5 s means, beside the
+    order of N random headings, √(π/4N), which a disordered state of N polar rods shows."""
+    fig, axes = plt.subplots(1, 2, figsize=(10.0, 3.6), sharey=True)
     dump = {}
-    for (label, relative, rods), colour in zip(FINITE_SIZE, ("C0", "C1", "C2")):
-        if not os.path.isfile(os.path.join(ROOT, relative)):
-            continue  # a box not run yet
-        t = read_csv(relative)
-        start, p = column(t, "t_from", relative), column(t, "P_polar", relative)
-        bins = len(p) // 5
-        mid = start[:5 * bins].reshape(bins, 5).mean(axis=1) + 0.5
-        mean = p[:5 * bins].reshape(bins, 5).mean(axis=1)
-        floor = float(np.sqrt(np.pi / (4 * rods)))
-        ax.plot(mid, mean, color=colour, lw=1.4, label=f"{label}, {rods} polar rods")
-        ax.axhline(floor, color=colour, lw=0.9, ls="--")
-        dump[f"P_polar: {label}"] = {"x": mid.tolist(), "y": mean.tolist()}
-        dump[f"random headings: {label}"] = {"x": [], "y": [floor]}
-    ax.set_xlabel("t (s)")
-    ax.set_ylabel("P (5 s means)")
-    ax.set_title("φ_a = 0.20, φ_p = 0.05, D_r = 0 in three boxes (dashed: N random headings)",
-                 fontsize=10)
-    ax.legend(loc="best", fontsize=8)
+    for ax, (phi, boxes) in zip(axes, FINITE_SIZE.items()):
+        for (label, relative, rods), colour in zip(boxes, ("C0", "C1", "C2")):
+            if not os.path.isfile(os.path.join(ROOT, relative)):
+                continue  # a box not run yet
+            t = read_csv(relative)
+            start, p = column(t, "t_from", relative), column(t, "P_polar", relative)
+            bins = len(p) // 5
+            mid = start[:5 * bins].reshape(bins, 5).mean(axis=1) + 0.5
+            mean = p[:5 * bins].reshape(bins, 5).mean(axis=1)
+            floor = float(np.sqrt(np.pi / (4 * rods)))
+            ax.plot(mid, mean, color=colour, lw=1.4, label=f"{label}, {rods} polar rods")
+            ax.axhline(floor, color=colour, lw=0.9, ls="--")
+            dump[f"P_polar: φ_a = {phi:.2f}, {label}"] = {"x": mid.tolist(), "y": mean.tolist()}
+            dump[f"random headings: φ_a = {phi:.2f}, {label}"] = {"x": [], "y": [floor]}
+        ax.set_xlabel("t (s)")
+        ax.set_title(f"φ_a = {phi:.2f}", fontsize=10)
+        ax.legend(loc="best", fontsize=8)
+    axes[0].set_ylabel("P (5 s means)")
+    fig.suptitle("φ_p = 0.05, σ = 3.125, D_r = 0 in boxes of three sizes (dashed: N random "
+                 "headings)", fontsize=10)
     fig.tight_layout()
     return fig, dump
 
