@@ -9,6 +9,7 @@
 #include <cmath>
 #include <memory>
 
+#include "rodsea/engine/ensemble.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/scenes/scenes.hpp"
 
@@ -92,6 +93,35 @@ BENCHMARK(BM_StepPaperLargest)
     ->Arg(2)
     ->Unit(benchmark::kMillisecond)
     ->MinTime(2.0)
+    ->UseRealTime();
+
+// `rodsea run` steps every run as an Ensemble, a lone run as an ensemble of one: what that layer
+// costs per step, on a system small enough (≈ 300 bodies, 30 mm) for it to show, beside the
+// Simulation it wraps (arg 0: Simulation, 1: Ensemble of one).
+void BM_StepEnsembleOfOne(benchmark::State& state) {
+    const rodsea::Scene scene = rodsea::polar_in_apolar_mixture(0.05, 2.5, 0.5, 30.0, 1);
+    rodsea::Simulation sim(scene.params, scene.bodies);
+    sim.run(2000);
+    std::vector<rodsea::Simulation> one;
+    one.push_back(rodsea::Simulation::resume(scene.params, sim.bodies(), sim.step_count()));
+    rodsea::Ensemble ensemble(std::move(one), {});
+    const bool through_ensemble = state.range(0) == 1;
+    for (auto _ : state) {
+        if (through_ensemble)
+            ensemble.step();
+        else
+            sim.step();
+    }
+    state.counters["bodies"] = static_cast<double>(sim.bodies().size());
+    state.counters["steps/s"] =
+        benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_StepEnsembleOfOne)
+    ->ArgNames({"ensemble"})
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMicrosecond)
+    ->MinTime(3.0)
     ->UseRealTime();
 
 }  // namespace

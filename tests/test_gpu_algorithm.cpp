@@ -210,6 +210,45 @@ TEST_P(GpuAlgorithm, AnEnsembleNamesTheSystemThatBlewUp) {
     }
     EXPECT_EQ(ensemble.step_count(0), 1u);  // the healthy system took its step too
     EXPECT_EQ(ensemble.step_count(1), 1u);
+    EXPECT_FALSE(ensemble.blow_up(0));
+    ASSERT_TRUE(ensemble.blow_up(1));
+    EXPECT_EQ(ensemble.blow_up(1)->what.rfind("system", 0), std::string::npos)
+        << "the system's own description, as Simulation gives it";
+    // Without the broken system the healthy one steps on as it would alone.
+    ensemble.retire({1});
+    ensemble.run(50);
+    Simulation alone(healthy.params, healthy.bodies, options());
+    alone.run(51);
+    EXPECT_EQ(ensemble.state_hash(0), alone.state_hash());
+}
+
+// A system that leaves an ensemble (its run ended) takes nothing with it: the others step on to
+// the bits they reach alone, renumbered in their order, on a data-parallel stepper rebuilt
+// without it.
+TEST_P(GpuAlgorithm, AnEnsembleWithoutARetiredSystemStepsTheOthersOn) {
+    const std::vector<Scene> scenes = {noisy_dense_mixture(41), noisy_dense_mixture(42),
+                                       noisy_dense_mixture(43)};
+    std::vector<Simulation> members;
+    for (const Scene& scene : scenes)
+        members.emplace_back(scene.params, scene.bodies);
+    Ensemble ensemble(std::move(members), options());
+    ensemble.run(200);
+    EXPECT_THROW(ensemble.retire({3}), InvalidParameter);
+    ensemble.retire({1});
+    ASSERT_EQ(ensemble.size(), 2u);
+    ensemble.set_threads(2);  // the bits do not depend on it
+    ensemble.run(300);
+    for (const auto& [m, scene] : {std::pair{0, 0}, std::pair{1, 2}}) {
+        Simulation alone(scenes[scene].params, scenes[scene].bodies, options());
+        alone.run(500);
+        SCOPED_TRACE("system " + std::to_string(m) + " (first " + std::to_string(scene) + ")");
+        EXPECT_EQ(ensemble.step_count(m), 500u);
+        EXPECT_EQ(ensemble.state_hash(m), alone.state_hash());
+        EXPECT_EQ(ensemble.totals(m).impulses, alone.totals().impulses);
+    }
+    ensemble.retire({0, 1});
+    EXPECT_EQ(ensemble.size(), 0u);
+    ensemble.step();  // nothing left to step: nothing happens
 }
 
 RODSEA_ON_EACH_BACKEND(GpuAlgorithm);

@@ -23,6 +23,7 @@
 #include "rodsea/io/trajectory_reader.hpp"
 #include "rodsea/run/run_driver.hpp"
 #include "rodsea/run/steady_stop.hpp"
+#include "run_comparison.hpp"
 #include "scratch_dir.hpp"
 
 namespace rodsea {
@@ -45,21 +46,6 @@ std::filesystem::path write_config(const ScratchDir& dir, const std::string& tex
     const auto path = dir.path() / "run.toml";
     std::ofstream(path) << text;
     return path;
-}
-
-size_t line_count(const std::filesystem::path& path) {
-    const std::string text = read_text(path);
-    return static_cast<size_t>(std::count(text.begin(), text.end(), '\n'));
-}
-
-bool same_bits(const BodyState& a, const BodyState& b) {
-    const auto same = [](const auto& x, const auto& y) {
-        return x.size() == y.size() &&
-               std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0;
-    };
-    return same(a.species, b.species) && same(a.position, b.position) &&
-           same(a.orientation, b.orientation) && same(a.velocity, b.velocity) &&
-           same(a.spin, b.spin);
 }
 
 // The driver adds output, not physics: its final state is the engine's after the same steps
@@ -174,31 +160,6 @@ int extend_quietly(const std::filesystem::path& dir, std::optional<double> durat
     options.steady_samples = samples;
     std::ostringstream log, err;
     return resume_run(dir, options, log, err);
-}
-
-// Two run directories hold the same run: the same end state bit for bit, the same frames, the
-// same time series (all but the wall-clock steps_per_second).
-void expect_same_run(const std::filesystem::path& a, const std::filesystem::path& b) {
-    const Checkpoint end_a = read_checkpoint(a / kCheckpointFile);
-    const Checkpoint end_b = read_checkpoint(b / kCheckpointFile);
-    EXPECT_TRUE(end_a.complete);
-    EXPECT_EQ(end_a.step, end_b.step);
-    EXPECT_TRUE(same_bits(end_a.bodies, end_b.bodies));
-    EXPECT_EQ(end_a.interval_accumulators, end_b.interval_accumulators);
-    EXPECT_EQ(end_a.config_toml, end_b.config_toml);
-    const TrajectoryReader ta(a / kTrajectoryFile), tb(b / kTrajectoryFile);
-    ASSERT_EQ(ta.frames(), tb.frames());
-    EXPECT_EQ(ta.steps(), tb.steps());
-    EXPECT_EQ(ta.times(), tb.times());
-    for (std::uint64_t f = 0; f < ta.frames(); ++f)
-        EXPECT_TRUE(same_bits(ta.frame(f), tb.frame(f))) << "frame " << f;
-    for (const char* column :
-         {"polar_order_polar", "nematic_order_medium", "segregation", "largest_flock",
-          "max_overlap_fraction", "impulses_per_step", "body_collision_rate"})
-        EXPECT_EQ(ta.series(column), tb.series(column)) << column;
-    EXPECT_EQ(line_count(a / kSeriesFile), line_count(b / kSeriesFile));
-    EXPECT_EQ(read_stored_config(a / kTrajectoryFile), read_stored_config(b / kTrajectoryFile));
-    EXPECT_EQ(read_text(a / kConfigFile), read_text(b / kConfigFile));
 }
 
 TEST(RunExtension, AFinishedRunExtendedIsTheLongerRunBitForBit) {

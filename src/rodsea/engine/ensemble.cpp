@@ -33,6 +33,7 @@ Ensemble::Ensemble(std::vector<Simulation> systems, BackendOptions options) : op
     }
     last_.resize(systems.size());
     totals_.resize(systems.size());
+    blown_.resize(systems.size());
     if (options_.backend == BackendKind::cpu) {
         // Each on the ensemble's options (threads, blow-up stop): resumed, so to the last bit.
         for (const Simulation& s : systems)
@@ -40,12 +41,71 @@ Ensemble::Ensemble(std::vector<Simulation> systems, BackendOptions options) : op
                 Simulation::resume(s.parameters(), s.bodies(), s.step_count(), options_));
         return;
     }
-    std::vector<std::pair<const SpeciesTable*, BodyState>> states;
+    std::vector<const BodyState*> states;
     for (std::size_t m = 0; m < systems.size(); ++m) {
         species_.push_back(std::make_unique<SpeciesTable>(SpeciesTable::from(params_[m])));
-        states.emplace_back(species_.back().get(), systems[m].bodies());
+        states.push_back(&systems[m].bodies());
     }
-    stepper_ = make_ensemble_stepper(states, options_);
+    make_stepper(states);
+}
+
+void Ensemble::make_stepper(const std::vector<const BodyState*>& states) {
+    std::vector<std::pair<const SpeciesTable*, BodyState>> systems;
+    for (std::size_t m = 0; m < states.size(); ++m)
+        systems.emplace_back(species_[m].get(), *states[m]);
+    stepper_ = make_ensemble_stepper(systems, options_);
+}
+
+void Ensemble::retire(const std::vector<std::size_t>& systems) {
+    std::vector<bool> keep(size(), true);
+    for (std::size_t m : systems) {
+        if (m >= size())
+            throw InvalidParameter("system", std::to_string(m),
+                                   "an index below the ensemble's " + std::to_string(size()));
+        keep[m] = false;
+    }
+    // The data-parallel stepper holds no state between steps but the bodies: a new one over the
+    // systems kept steps them on as the old one would have.
+    std::vector<BodyState> kept_states;
+    if (stepper_)
+        for (std::size_t m = 0; m < size(); ++m)
+            if (keep[m]) kept_states.push_back(stepper_->bodies(m));
+    std::size_t next = 0;
+    for (std::size_t m = 0; m < size(); ++m) {
+        if (!keep[m]) continue;
+        params_[next] = std::move(params_[m]);
+        step_count_[next] = step_count_[m];
+        bounds_[next] = bounds_[m];
+        last_[next] = last_[m];
+        totals_[next] = totals_[m];
+        blown_[next] = std::move(blown_[m]);
+        if (!cpu_systems_.empty()) cpu_systems_[next] = std::move(cpu_systems_[m]);
+        if (!species_.empty()) species_[next] = std::move(species_[m]);
+        ++next;
+    }
+    params_.resize(next);
+    step_count_.resize(next);
+    bounds_.resize(next);
+    last_.resize(next);
+    totals_.resize(next);
+    blown_.resize(next);
+    if (!cpu_systems_.empty()) cpu_systems_.erase(cpu_systems_.begin() + next, cpu_systems_.end());
+    if (!stepper_) return;
+    species_.resize(next);
+    stepper_.reset();
+    if (next == 0) return;
+    std::vector<const BodyState*> states;
+    for (const BodyState& b : kept_states)
+        states.push_back(&b);
+    make_stepper(states);
+}
+
+void Ensemble::set_threads(int threads) {
+    if (threads < 1) throw InvalidParameter("threads", std::to_string(threads), ">= 1");
+    options_.threads = threads;
+    for (Simulation& s : cpu_systems_)
+        s.set_threads(threads);
+    if (stepper_) stepper_->set_threads(threads);
 }
 
 Ensemble::Ensemble(Ensemble&&) noexcept = default;
@@ -57,13 +117,16 @@ const char* Ensemble::backend_name() const {
 }
 
 void Ensemble::step() {
+    if (size() == 0) return;
     if (!cpu_systems_.empty()) {
         // Every system steps, as on the GPU, before the first blow-up is reported.
         std::optional<BlowUpError> first_blow_up;
         for (std::size_t m = 0; m < cpu_systems_.size(); ++m) {
+            blown_[m].reset();
             try {
                 cpu_systems_[m].step();
             } catch (const BlowUpError& e) {
+                blown_[m] = e.blow_up();
                 if (!first_blow_up)
                     first_blow_up.emplace(naming_system(m, e.blow_up()), e.step(),
                                           cpu_systems_[m].time());
@@ -91,14 +154,19 @@ void Ensemble::step() {
         ++step_count_[m];
         totals_[m].add(last_[m]);
     }
-    for (std::size_t m = 0; m < size(); ++m)
+    std::optional<std::size_t> first_blown;
+    for (std::size_t m = 0; m < size(); ++m) {
         check_blow_up(m);
+        if (blown_[m] && !first_blown) first_blown = m;
+    }
+    if (first_blown)
+        throw BlowUpError(naming_system(*first_blown, *blown_[*first_blown]),
+                          step_count_[*first_blown], time(*first_blown));
 }
 
-void Ensemble::check_blow_up(std::size_t m) const {
-    if (!options_.stop_on_blow_up) return;
-    if (const auto blown = detect_blow_up(bounds_[m], last_[m]))
-        throw BlowUpError(naming_system(m, *blown), step_count_[m], time(m));
+void Ensemble::check_blow_up(std::size_t m) {
+    blown_[m].reset();
+    if (options_.stop_on_blow_up) blown_[m] = detect_blow_up(bounds_[m], last_[m]);
 }
 
 void Ensemble::run(std::uint64_t steps) {

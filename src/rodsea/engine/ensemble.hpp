@@ -15,6 +15,7 @@
 // must share dt only in the sense that each step advances every system by its own dt.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "rodsea/engine/simulation.hpp"
@@ -38,9 +39,19 @@ class Ensemble {
     const char* backend_name() const;
 
     // Every system by one step. Throws BlowUpError (its message naming the system) after a step
-    // in which one crossed a blow-up bound, as Simulation::step does.
+    // in which one crossed a blow-up bound, as Simulation::step does; every system has stepped,
+    // and blow_up(m) says which ones crossed (the others go on as if nothing had happened).
     void step();
     void run(std::uint64_t steps);
+    // Why system m blew up in the last step, if it did; its state is then meaningless.
+    const std::optional<BlowUp>& blow_up(std::size_t m) const { return blown_[m]; }
+
+    // Drops these systems (indices into the current ensemble, any order); the others keep their
+    // state and step on bit for bit, renumbered in their order. A run whose system is done
+    // frees its share of the kernels.
+    void retire(const std::vector<std::size_t>& systems);
+    // Between steps, as Simulation::set_threads: the trajectory does not depend on it.
+    void set_threads(int threads);
 
     const EngineParameters& parameters(std::size_t m) const { return params_[m]; }
     std::uint64_t step_count(std::size_t m) const { return step_count_[m]; }
@@ -53,7 +64,8 @@ class Ensemble {
     const StageProfile& profile() const { return profile_; }
 
   private:
-    void check_blow_up(std::size_t m) const;
+    void check_blow_up(std::size_t m);
+    void make_stepper(const std::vector<const BodyState*>& states);
 
     BackendOptions options_;
     std::vector<EngineParameters> params_;
@@ -61,6 +73,7 @@ class Ensemble {
     std::vector<BlowUpBounds> bounds_;
     std::vector<StepStatistics> last_;
     std::vector<RunTotals> totals_;
+    std::vector<std::optional<BlowUp>> blown_;
     StageProfile profile_;
     // The CPU steps each Simulation; the data-parallel backends one stepper for all.
     std::vector<Simulation> cpu_systems_;

@@ -85,15 +85,63 @@ ResourceEstimate estimate_resources(const RunPlan& plan) {
 }
 
 void check_fits_in_memory(const RunPlan& plan) {
-    const ResourceEstimate e = estimate_resources(plan);
+    check_fits_in_memory(std::vector<RunPlan>{plan});
+}
+
+void check_fits_in_memory(const std::vector<RunPlan>& plans) {
+    ResourceEstimate all;
+    for (const RunPlan& plan : plans) {
+        const ResourceEstimate e = estimate_resources(plan);
+        all.bodies += e.bodies;
+        all.spheres += e.spheres;
+        all.memory_bytes += e.memory_bytes;
+    }
     const std::optional<std::uint64_t> available = available_memory_bytes();
-    if (!available || e.memory_bytes <= *available) return;
+    if (!available || all.memory_bytes <= *available) return;
     throw InvalidParameter(
         "species",
-        std::to_string(e.bodies) + " bodies (" + std::to_string(e.spheres) + " spheres), about " +
-            format_bytes(e.memory_bytes) + " of memory",
+        std::to_string(all.bodies) + " bodies (" + std::to_string(all.spheres) + " spheres" +
+            (plans.size() > 1 ? " in " + std::to_string(plans.size()) + " runs" : "") +
+            "), about " + format_bytes(all.memory_bytes) + " of memory",
         "what this machine has available, " + format_bytes(*available),
-        "a smaller box.side or smaller area fractions, or a machine with more memory");
+        plans.size() > 1 ? "fewer runs at once, smaller boxes or area fractions, or a machine "
+                           "with more memory"
+                         : "a smaller box.side or smaller area fractions, or a machine with more "
+                           "memory");
+}
+
+void describe_ensemble(const std::vector<RunPlan>& plans,
+                       const std::vector<std::filesystem::path>& dirs, const RunControl& stepping,
+                       std::ostream& out) {
+    out << "rodsea run: " << plans.size()
+        << " runs stepped together as one ensemble, each into its own directory\n";
+    out << "  run  bodies   spheres  dt/us  duration/s        steps  frames    output  directory\n";
+    ResourceEstimate all;
+    for (std::size_t r = 0; r < plans.size(); ++r) {
+        const RunPlan& plan = plans[r];
+        const ResourceEstimate e = estimate_resources(plan);
+        char line[256];
+        std::snprintf(
+            line, sizeof line, "  %3zu  %6llu  %8llu  %5.3g  %10.6g  %11llu  %6llu  %8s  ", r,
+            static_cast<unsigned long long>(e.bodies), static_cast<unsigned long long>(e.spheres),
+            plan.engine.dt * 1e6, plan.control.duration,
+            static_cast<unsigned long long>(plan.total_steps()),
+            static_cast<unsigned long long>(e.frames), format_bytes(e.trajectory_bytes).c_str());
+        out << line << dirs[r].string() << "\n";
+        all.bodies += e.bodies;
+        all.spheres += e.spheres;
+        all.memory_bytes += e.memory_bytes;
+        all.trajectory_bytes += e.trajectory_bytes;
+    }
+    out << "total    " << all.bodies << " bodies, " << all.spheres << " spheres; output "
+        << format_bytes(all.trajectory_bytes) << "\n";
+    out << "backend  " << describe_backend(stepping)
+        << "; each run's trajectory is the one it has alone on this backend\n";
+    out << "memory   about " << format_bytes(all.memory_bytes);
+    if (const std::optional<std::uint64_t> available = available_memory_bytes())
+        out << " of the " << format_bytes(*available) << " available here";
+    out << "\n";
+    out << "each run's plan in full: rodsea info CONFIG\n";
 }
 
 void describe_plan(const RunPlan& plan, std::ostream& out, bool brief) {

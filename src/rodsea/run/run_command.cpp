@@ -19,8 +19,8 @@ namespace rodsea {
 const CommandSpec& run_command_spec() {
     static const CommandSpec spec{
         "run",
-        "CONFIG [--out DIR] [--overwrite] [--threads N] [--backend cpu|gpu] [--quiet]  |  "
-        "rodsea run --resume DIR [--duration T] [--steady-samples N] [--backend cpu|gpu] "
+        "CONFIG... [--out DIR] [--overwrite] [--threads N] [--backend cpu|gpu] [--quiet]  |  "
+        "rodsea run --resume DIR... [--duration T] [--steady-samples N] [--backend cpu|gpu] "
         "[--quiet]",
         "start a simulation, or continue one from its checkpoint",
         "Reads CONFIG (TOML; every key in docs/config.md), checks all of it and the packing, "
@@ -36,8 +36,15 @@ const CommandSpec& run_command_spec() {
         "it stopped. --resume with --duration extends a run, finished or not, to a longer "
         "duration (bit for bit the run given that duration from the start; config.toml and the "
         "stored config say the new one); --steady-samples changes time.steady_samples (stop when "
-        "steady) likewise, 0 to run to the duration.",
-        {{"--out", "DIR", "output directory; refused if it exists and is not empty"},
+        "steady) likewise, 0 to run to the duration.\n"
+        "Several configs (or run directories after --resume) are stepped together as one "
+        "ensemble, on a GPU in the same kernels: each run writes its own directory "
+        "(out/<config name>, or DIR/<config name> with --out DIR) exactly as it would alone, "
+        "and resumes alone or with others. All are checked before any starts; they share "
+        "run.backend; a run that ends leaves the others going (docs/running.md).",
+        {{"--out", "DIR",
+          "output directory, refused if it exists and is not empty (with several configs, the "
+          "parent of each run's, and those are refused)"},
          {"--overwrite", "", "replace the run files in an existing DIR"},
          {"--threads", "N",
           "run on N threads, replacing run.threads (the stored config says N; a resumed run "
@@ -45,7 +52,8 @@ const CommandSpec& run_command_spec() {
          {"--backend", "cpu|gpu",
           "step on the host's cores or a CUDA device, replacing run.backend; with --resume for "
           "this session only (a run started on the GPU goes on on the CPU, and the other way)"},
-         {"--resume", "DIR", "continue the run in DIR from its checkpoint.h5"},
+         {"--resume", "DIR",
+          "continue the run in DIR from its checkpoint.h5 (more directories may follow)"},
          {"--duration", "T", "with --resume: the run's new duration, s (at least the time done)"},
          {"--steady-samples", "N",
           "with --resume: the run's new time.steady_samples (0: no stop when steady)"},
@@ -95,33 +103,46 @@ int run_command(const std::vector<std::string>& words, std::ostream& out, std::o
         throw InvalidParameter("--threads", *n, "only for a new run",
                                "a resumed run keeps its threads, so that it continues bit for bit");
     if (const auto dir = a.value("--resume")) {
-        if (!a.positional.empty() || a.value("--out") || options.overwrite)
+        if (a.value("--out") || options.overwrite)
             throw InvalidParameter("--resume", *dir,
-                                   "alone (with --duration, --steady-samples, --backend, --quiet "
-                                   "at most)",
-                                   "the config and output directory come from DIR");
-        options.out_dir = *dir;
+                                   "run directories only (with --duration, --steady-samples, "
+                                   "--backend, --quiet at most)",
+                                   "the config and output directory come from each DIR");
+        // Further directories after the first (a shell glob) are resumed together with it.
+        std::vector<std::filesystem::path> dirs{*dir};
+        dirs.insert(dirs.end(), a.positional.begin(), a.positional.end());
         if (const auto t = a.value("--duration"))
             options.duration = parse_number("--duration", *t, 0.0, 1e6, "s");
         if (const auto n = a.value("--steady-samples"))
             options.steady_samples = parse_count("--steady-samples", *n, 0, 1'000'000'000);
         if (const auto b = a.value("--backend")) options.backend = backend_flag("--backend", *b);
-        return resume_run(*dir, options, out, err, stdout_is_terminal());
+        return resume_runs(dirs, options, out, err, stdout_is_terminal());
     }
     for (const char* flag : {"--duration", "--steady-samples"})
         if (a.value(flag))
             throw InvalidParameter(flag, *a.value(flag), "only with --resume DIR",
                                    "a new run takes its length from CONFIG ([time])");
-    RunPlan plan = config_named_by(a, run_command_spec());
-    const std::filesystem::path config = a.positional[0];
-    if (const auto n = a.value("--threads"))
-        plan = with_threads(plan.config_toml, config.string(),
-                            static_cast<int>(parse_count("--threads", *n, 1, 1024)));
-    if (const auto b = a.value("--backend"))
-        plan = with_backend(plan.config_toml, config.string(), backend_flag("--backend", *b));
-    options.out_dir =
-        a.value("--out").value_or((std::filesystem::path("out") / config.stem()).string());
-    return start_run(plan, options, out, err, stdout_is_terminal());
+    if (a.positional.empty())
+        throw InvalidParameter("CONFIG", "none given",
+                               "one config file or more (see rodsea run --help)");
+    const std::optional<std::string> out_flag = a.value("--out");
+    std::vector<NewRun> runs;
+    for (const std::string& name : a.positional) {
+        const std::filesystem::path config = name;
+        RunPlan plan = load_config_file(name, calibration_table_lookup());
+        if (const auto n = a.value("--threads"))
+            plan = with_threads(plan.config_toml, name,
+                                static_cast<int>(parse_count("--threads", *n, 1, 1024)));
+        if (const auto b = a.value("--backend"))
+            plan = with_backend(plan.config_toml, name, backend_flag("--backend", *b));
+        // One config writes DIR itself; several write DIR/<config name> each.
+        std::filesystem::path dir = std::filesystem::path("out") / config.stem();
+        if (out_flag)
+            dir = a.positional.size() == 1 ? std::filesystem::path(*out_flag)
+                                           : std::filesystem::path(*out_flag) / config.stem();
+        runs.push_back({std::move(plan), std::move(dir)});
+    }
+    return start_runs(runs, options, out, err, stdout_is_terminal());
 }
 
 int info_command(const std::vector<std::string>& words, std::ostream& out, std::ostream&) {

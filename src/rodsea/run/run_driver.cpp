@@ -1,11 +1,11 @@
 #include "rodsea/run/run_driver.hpp"
 
+#include <algorithm>
 #include <chrono>
-#include <csignal>
-#include <functional>
-#include <limits>
+#include <memory>
 #include <optional>
 #include <ostream>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -15,6 +15,7 @@
 #include "rodsea/cli/stop_signal.hpp"
 #include "rodsea/config/config_file.hpp"
 #include "rodsea/engine/backend_factory.hpp"
+#include "rodsea/engine/ensemble.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/engine/state_check.hpp"
 #include "rodsea/error.hpp"
@@ -26,6 +27,7 @@
 #include "rodsea/run/plan_report.hpp"
 #include "rodsea/run/progress_file.hpp"
 #include "rodsea/run/run_lock.hpp"
+#include "rodsea/run/run_session.hpp"
 #include "rodsea/run/series_recorder.hpp"
 #include "rodsea/run/steady_stop.hpp"
 #include "rodsea/text_file.hpp"
@@ -34,384 +36,68 @@ namespace rodsea {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t) {
-    return std::chrono::duration<double>(Clock::now() - t).count();
+// One directory named twice would have two writers (the lock would refuse the second only
+// after the first had started): refused before any work, as every other input problem.
+void check_distinct(const std::vector<std::filesystem::path>& dirs) {
+    std::set<std::filesystem::path> seen;
+    for (const std::filesystem::path& dir : dirs) {
+        std::error_code ec;
+        std::filesystem::path key = std::filesystem::weakly_canonical(dir, ec);
+        if (ec) key = dir.lexically_normal();
+        if (!seen.insert(key).second)
+            throw InvalidParameter("run directory", dir.string(), "each run's own directory",
+                                   "two runs of one command would write the same directory "
+                                   "(configs with the same name? give each its own --out)");
+    }
 }
 
-// The time-series column of the first polar species' P, shown by the progress; past the end of
-// the row (so P shows as 0) when there are no polar rods.
-std::size_t polar_order_column(const EngineParameters& p) {
-    for (size_t s = 0; s < p.species.size(); ++s)
-        if (p.species[s].kind == BodyKind::polar_rod) return 2 * s;
-    return std::numeric_limits<std::size_t>::max();
-}
-
-// Everything one session of a run holds: the simulation and its open output files.
-class Session {
-  public:
-    Session(const RunPlan& plan, Simulation sim, TrajectoryFile trajectory, SeriesCsv csv,
-            std::filesystem::path dir, double wall_before)
-        : plan_(plan),
-          sim_(std::move(sim)),
-          trajectory_(std::move(trajectory)),
-          csv_(std::move(csv)),
-          recorder_(plan),
-          steady_(plan, recorder_.columns()),
-          dir_(std::move(dir)),
-          wall_before_(wall_before),
-          polar_column_(polar_order_column(plan.engine)),
-          frame_reserve_bytes_(2 * estimate_resources(plan).frame_bytes + kMetadataReserve),
-          frames_written_(trajectory_.frames()) {}
-
-    SeriesRecorder& recorder() { return recorder_; }
-    SteadyStop& steady() { return steady_; }
-
-    // A frame counts (and its interval closes) only once the trajectory and the CSV both hold
-    // it: a failure part way leaves the count, and the interval, as a checkpoint must see them.
-    void write_frame(double steps_per_second) {
-        trajectory_.reserve(frame_reserve_bytes_);
-        const std::vector<double> row = recorder_.row(sim_, steps_per_second);
-        last_polar_order_ = polar_column_ < row.size() ? row[polar_column_] : 0.0;
-        trajectory_.append_frame(sim_.step_count(), sim_.time(), sim_.bodies(), row);
-        csv_.append(sim_.step_count(), sim_.time(), row);
-        trajectory_.flush();
-        csv_.flush();
-        recorder_.start_interval();
-        ++frames_written_;
-        if (steady_.active()) steady_.add_row(row);
-        remember_good_state();
+// How the ensemble steps: every run's backend (they must agree, as it decides the trajectory)
+// on the largest run.threads among them (which does not). `backend`: a --backend for all.
+BackendOptions ensemble_options(const std::vector<RunPlan>& plans,
+                                const std::vector<std::filesystem::path>& dirs,
+                                std::optional<BackendKind> backend) {
+    BackendOptions options{.threads = 1, .backend = plans.front().control.backend};
+    for (std::size_t r = 0; r < plans.size(); ++r) {
+        options.threads = std::max(options.threads, plans[r].control.threads);
+        if (!backend && plans[r].control.backend != options.backend)
+            throw InvalidParameter(
+                "run.backend",
+                std::string(to_string(plans[r].control.backend)) + " for " + dirs[r].string() +
+                    ", " + to_string(options.backend) + " for " + dirs.front().string(),
+                "one backend for every run stepped together",
+                "runs on different backends go in different commands, or give --backend");
     }
-
-    // The state a checkpoint after a blow-up holds: the last frame's, or the resumed
-    // checkpoint's until a frame is written.
-    void remember_good_state() {
-        last_good_ = {sim_.step_count(), frames_written_, sim_.bodies(),
-                      recorder_.interval_state()};
-    }
-
-    // A state the engine should never produce (a value not finite, a body outside the plates or
-    // the box) is a blow-up that the step's own bounds missed: it never reaches a frame.
-    std::optional<BlowUp> invalid_state() const {
-        const auto p =
-            find_state_problem(plan_.engine, sim_.bodies(), sim_.time(), StateOrigin::resumed);
-        if (!p) return std::nullopt;
-        return BlowUp{"body " + std::to_string(p->body) + "'s " + p->field, p->value, p->allowed,
-                      "a smaller time.dt, a smaller noise.epsilon or a less dense packing"};
-    }
-
-    // The frames it counts are first forced to disk, so that no crash can leave a checkpoint
-    // that refers to frames the files do not have.
-    void checkpoint(bool complete) {
-        sync_file(dir_ / kTrajectoryFile);
-        sync_file(dir_ / kSeriesFile);
-        Checkpoint c;
-        c.config_toml = plan_.config_toml;
-        c.run_id = trajectory_.run_id();
-        c.step = sim_.step_count();
-        c.frames_written = frames_written_;
-        c.bodies = sim_.bodies();
-        // A run that ended off the output grid closed its interval early with the last row; an
-        // extension (--duration) continues the interval as an uninterrupted run would.
-        c.interval_accumulators =
-            complete && open_interval_at_end_ ? *open_interval_at_end_ : recorder_.interval_state();
-        c.wall_seconds = wall_before_ + seconds_since(started_);
-        c.complete = complete;
-        write_checkpoint(dir_ / kCheckpointFile, c);
-        last_checkpoint_ = Clock::now();
-    }
-
-    // progress.txt is for people and monitors: a failure to write it never stops the run (a
-    // full disk shows up at the next frame, which handles it).
-    void write_progress(const char* state, double steps_per_second) {
-        RunProgress p;
-        p.state = state;
-        p.step = sim_.step_count();
-        p.total_steps = plan_.total_steps();
-        p.time = sim_.time();
-        p.duration = plan_.control.duration;
-        p.steps_per_second = steps_per_second;
-        p.wall_seconds = wall_before_ + seconds_since(started_);
-        p.updated = unix_time_now();
-        try {
-            write_progress_file(dir_, p);
-        } catch (const FileError&) {
-        }
-        last_progress_ = Clock::now();
-    }
-
-    // Steps on as many of run.threads as other processes leave cores free (FreeCoreMonitor):
-    // more threads than free cores spin against each other. Said once when it first differs.
-    void adapt_threads(std::ostream& out, ProgressStyle style) {
-        const int requested = plan_.control.threads;
-        if (requested <= 1) return;
-        const int use = threads_for_free_cores(requested, cores_.sample());
-        if (use == sim_.options().threads) return;
-        sim_.set_threads(use);
-        if (style != ProgressStyle::quiet && !told_threads_) {
-            out << "\nthreads: stepping on " << use << " of run.threads = " << requested
-                << ", as other processes leave " << use << " core" << (use == 1 ? "" : "s")
-                << " free (rechecked every " << kProgressSeconds
-                << " s; the trajectory does not depend on it)\n"
-                << std::flush;
-            told_threads_ = true;
-        }
-    }
-
-    // Steps to the end, or until a signal or a write failure. Returns an ExitCode.
-    int run(std::ostream& out, std::ostream& err, ProgressStyle style) {
-        const std::uint64_t total = plan_.total_steps();
-        const std::uint64_t per_output = plan_.steps_per_output();
-        const double checkpoint_seconds = plan_.control.checkpoint_interval * 60.0;
-        ProgressReporter progress(out, style, sim_.step_count(), total, plan_.engine.dt);
-        last_checkpoint_ = Clock::now();
-        rate_ = [&progress] { return progress.steps_per_second(); };
-        write_progress("running", 0.0);
-        if (const int signal = stop_signal_received(); signal != 0)  // during the build
-            return stop_on_signal(signal, out, err);
-        if (plan_.control.threads > 1) {
-            std::this_thread::sleep_for(std::chrono::milliseconds(100));  // a first measure
-            adapt_threads(out, style);
-        }
-        while (sim_.step_count() < total) {
-            try {
-                sim_.step();
-            } catch (const BlowUpError& e) {
-                progress.finish(e.step(), last_polar_order_);
-                return stop_after_blow_up(e.blow_up(), e.step(), out, err);
-            }
-            recorder_.accumulate(sim_.last_step());
-            const std::uint64_t step = sim_.step_count();
-            const bool on_grid = step % per_output == 0;
-            if (on_grid || step == total) {
-                if (const std::optional<BlowUp> b = invalid_state()) {
-                    progress.finish(step, last_polar_order_);
-                    return stop_after_blow_up(*b, step, out, err);
-                }
-            }
-            try {
-                if (step == total && !on_grid) open_interval_at_end_ = recorder_.interval_state();
-                if (on_grid || step == total) write_frame(progress.steps_per_second());
-            } catch (const FileError& e) {
-                progress.finish(step, last_polar_order_);
-                return stop_after_write_failure(e, out, err);
-            }
-            progress.update(step, last_polar_order_);
-            if (on_grid) {
-                if (const std::optional<SteadyVerdict> v = steady_.verdict()) {
-                    progress.finish(step, last_polar_order_);
-                    return finish(out, err, style, v);
-                }
-            }
-            if (const int signal = stop_signal_received(); signal != 0) {
-                progress.finish(step, last_polar_order_);
-                return stop_on_signal(signal, out, err);
-            }
-            if ((step & 63u) == 0 && seconds_since(last_progress_) >= kProgressSeconds) {
-                write_progress("running", progress.steps_per_second());
-                adapt_threads(out, style);
-            }
-            if ((step & 63u) == 0 && seconds_since(last_checkpoint_) >= checkpoint_seconds) {
-                try {
-                    checkpoint(false);
-                } catch (const FileError& e) {
-                    err << "rodsea: cannot write the checkpoint: " << e.what()
-                        << "\n  the previous checkpoint is intact; stopping. Continue with: "
-                           "rodsea run --resume "
-                        << dir_.string() << "\n";
-                    return kExitIoError;
-                }
-            }
-        }
-        progress.finish(sim_.step_count(), last_polar_order_);
-        return finish(out, err, style, std::nullopt);
-    }
-
-  private:
-    // The run's end: at its duration, or earlier once steady (`verdict`).
-    int finish(std::ostream& out, std::ostream& err, ProgressStyle style,
-               const std::optional<SteadyVerdict>& verdict) {
-        try {
-            // Closed first: a run is marked complete only with its trajectory whole.
-            trajectory_.close();
-            checkpoint(true);
-            write_progress(verdict ? "steady" : "done", rate_());
-        } catch (const FileError& e) {
-            err << "rodsea: the run reached its end but its files could not be closed: " << e.what()
-                << "\n  the last checkpoint is intact; continue with: rodsea run "
-                << "--resume " << dir_.string() << "\n";
-            return kExitIoError;
-        }
-        if (style == ProgressStyle::quiet) return kExitOk;
-        if (verdict) {
-            const double frame_time =
-                static_cast<double>(plan_.steps_per_output()) * plan_.engine.dt;
-            out << "steady: the window from "
-                << format_number(frame_time * static_cast<double>(verdict->first_frame))
-                << " s (decided by " << verdict->decided_by
-                << ") holds n_eff = " << format_number(verdict->n_eff) << " independent samples of "
-                << verdict->counted << " >= time.steady_samples = " << plan_.control.steady_samples
-                << "; stopped at t = " << sim_.time() << " s of at most " << plan_.control.duration
-                << " s\n";
-        }
-        report_end(out);
-        return kExitOk;
-    }
-
-    int stop_on_signal(int signal, std::ostream& out, std::ostream& err) {
-        const char* what = signal == SIGINT   ? "interrupted (SIGINT)"
-                           : signal == SIGHUP ? "hung up (SIGHUP)"
-                                              : "terminated (SIGTERM)";
-        try {
-            checkpoint(false);
-            trajectory_.close();
-            write_progress("stopped", rate_());
-            err << "rodsea: " << what << " at step " << sim_.step_count() << " (t = " << sim_.time()
-                << " s); checkpoint written.\n  continue with: rodsea run --resume "
-                << dir_.string() << "\n";
-        } catch (const FileError& e) {
-            err << "rodsea: " << what << ", but the checkpoint could not be written: " << e.what()
-                << "\n  the previous checkpoint is intact; continue from it with: rodsea run "
-                   "--resume "
-                << dir_.string() << "\n";
-            out.flush();
-            return kExitIoError;
-        }
-        out.flush();
-        return signal == SIGINT ? kExitInterrupted : kExitTerminated;
-    }
-
-    // The state after a blow-up is meaningless: the checkpoint holds the last frame's state,
-    // which passed every check, and the files end with that frame.
-    int stop_after_blow_up(const BlowUp& b, std::uint64_t step, std::ostream& out,
-                           std::ostream& err) {
-        const double dt = plan_.engine.dt;
-        err << "rodsea: the simulation blew up at step " << step
-            << " (t = " << format_number(static_cast<double>(step) * dt) << " s): " << b.what
-            << " is " << b.value << ", beyond " << b.bound << ".\n  what to change: " << b.advice
-            << ".\n";
-        try {
-            trajectory_.close();
-            Checkpoint c;
-            c.config_toml = plan_.config_toml;
-            c.step = last_good_.step;
-            c.frames_written = last_good_.frames;
-            c.bodies = last_good_.bodies;
-            c.interval_accumulators = last_good_.interval;
-            c.wall_seconds = wall_before_ + seconds_since(started_);
-            c.run_id = trajectory_.run_id();
-            write_checkpoint(dir_ / kCheckpointFile, c);
-            write_progress("blown_up", rate_());
-            err << "  the last good state (frame " << last_good_.frames - 1
-                << ", t = " << format_number(static_cast<double>(last_good_.step) * dt)
-                << " s) is checkpointed and the trajectory ends there; resuming would repeat the "
-                   "same steps: change the config and start again with --overwrite\n";
-        } catch (const FileError& e) {
-            err << "  and the last good state could not be checkpointed: " << e.what() << "\n";
-        }
-        out.flush();
-        return kExitBlownUp;
-    }
-
-    int stop_after_write_failure(const FileError& e, std::ostream& out, std::ostream& err) {
-        // HDF5 cannot be trusted to close a file whose writes failed: it is left as it is. The
-        // room claimed for the frame goes back, for the checkpoint.
-        trajectory_.abandon();
-        trajectory_.release_reserve();
-        write_progress("stopped", rate_());
-        err << "rodsea: cannot write output at step " << sim_.step_count()
-            << " (t = " << sim_.time() << " s): " << e.what() << "\n";
-        try {
-            checkpoint(false);
-            err << "  checkpoint written (" << frames_written_
-                << " complete frames are kept); make room (disk space, quota or file-size "
-                   "limit) and continue with: rodsea run --resume "
-                << dir_.string() << "\n";
-        } catch (const FileError& again) {
-            err << "  the checkpoint could not be written either (" << again.what()
-                << "); the previous checkpoint is intact: make room and resume from it with: "
-                   "rodsea run --resume "
-                << dir_.string() << "\n";
-        }
-        out.flush();
-        return kExitIoError;
-    }
-
-    void report_end(std::ostream& out) const {
-        const RunTotals& t = sim_.totals();
-        out << "done: " << sim_.step_count() << " steps, t = " << sim_.time() << " s, "
-            << frames_written_ << " frames in " << (dir_ / kTrajectoryFile).string()
-            << "\n      this session: largest overlap " << t.max_overlap_fraction * 100
-            << " % of a radius, unresolved contacts " << t.unresolved << ", most sweeps "
-            << t.max_sweeps << "; wall time of the whole run "
-            << format_duration(wall_before_ + seconds_since(started_)) << "\n      state hash "
-            << std::hex << sim_.state_hash() << std::dec << "\n";
-    }
-
-    const RunPlan& plan_;
-    Simulation sim_;
-    TrajectoryFile trajectory_;
-    SeriesCsv csv_;
-    SeriesRecorder recorder_;
-    SteadyStop steady_;
-    std::filesystem::path dir_;
-    double wall_before_;
-    std::size_t polar_column_;
-    // Room for two frames and HDF5's growing chunk indexes (a few kB per frame at most): a frame
-    // must never run out of space half-way (see TrajectoryFile::reserve).
-    static constexpr std::uint64_t kMetadataReserve = 64 * 1024;
-    std::uint64_t frame_reserve_bytes_;
-    std::uint64_t frames_written_;
-    double last_polar_order_ = 0.0;
-    std::optional<std::vector<double>> open_interval_at_end_;  // before the off-grid last row
-    // The state at the last frame written, for a checkpoint after a blow-up.
-    struct GoodState {
-        std::uint64_t step = 0, frames = 0;
-        BodyState bodies;
-        std::vector<double> interval;
-    } last_good_;
-    Clock::time_point started_ = Clock::now();
-    Clock::time_point last_checkpoint_ = Clock::now();
-    Clock::time_point last_progress_ = Clock::now();
-    FreeCoreMonitor cores_;
-    bool told_threads_ = false;
-    static constexpr double kProgressSeconds = 2.0;      // wall time between progress.txt updates
-    std::function<double()> rate_ = [] { return 0.0; };  // this session's steps/s
-};
-
-// Frames a run has written once it has done `step` steps: frame 0, one per output interval,
-// and the last step's.
-std::uint64_t frames_due(const RunPlan& plan, std::uint64_t step) {
-    const std::uint64_t per = plan.steps_per_output(), total = plan.total_steps();
-    return step / per + 1 + (step == total && total % per != 0 ? 1 : 0);
+    if (backend) options.backend = *backend;
+    return options;
 }
 
 bool is_empty_directory(const std::filesystem::path& dir) {
     return std::filesystem::is_directory(dir) && std::filesystem::is_empty(dir);
 }
 
-// Refuses a directory that holds anything unless --overwrite, and creates it. True when it
-// did not exist.
-bool prepare_output_directory(const std::filesystem::path& dir, bool overwrite) {
+// Refuses a directory that holds anything unless --overwrite.
+void check_output_directory(const std::filesystem::path& dir, bool overwrite) {
+    std::error_code ec;
+    if (!std::filesystem::exists(dir, ec)) return;
+    if (!std::filesystem::is_directory(dir, ec))
+        throw FileError(dir.string(), "exists and is not a directory");
+    if (is_empty_directory(dir) || overwrite) return;
+    // Without a checkpoint there is nothing --resume could continue.
+    const bool resumable = std::filesystem::exists(dir / kCheckpointFile, ec);
+    throw InvalidParameter(
+        "--out", dir.string(), "a new or empty directory",
+        resumable ? "it exists and is not empty: choose another --out, add --overwrite to "
+                    "replace its run files, or continue it with rodsea run --resume " +
+                        dir.string()
+                  : "it exists and is not empty, and has no checkpoint to resume (a run stopped "
+                    "before its first checkpoint?): choose another --out, or add --overwrite to "
+                    "start again there");
+}
+
+// Creates the directory; true when it did not exist.
+bool create_output_directory(const std::filesystem::path& dir) {
     std::error_code ec;
     const bool existed = std::filesystem::exists(dir, ec);
-    if (existed) {
-        if (!std::filesystem::is_directory(dir, ec))
-            throw FileError(dir.string(), "exists and is not a directory");
-        if (!is_empty_directory(dir) && !overwrite) {
-            // Without a checkpoint there is nothing --resume could continue.
-            const bool resumable = std::filesystem::exists(dir / kCheckpointFile, ec);
-            throw InvalidParameter(
-                "--out", dir.string(), "a new or empty directory",
-                resumable ? "it exists and is not empty: choose another --out, add --overwrite "
-                            "to replace its run files, or continue it with rodsea run --resume " +
-                                dir.string()
-                          : "it exists and is not empty, and has no checkpoint to resume (a run "
-                            "stopped before its first checkpoint?): choose another --out, or add "
-                            "--overwrite to start again there");
-        }
-    }
     std::filesystem::create_directories(dir, ec);
     if (ec) throw FileError(dir.string(), "cannot create the output directory: " + ec.message());
     return !existed;
@@ -427,78 +113,186 @@ void remove_run_files(const std::filesystem::path& dir) {
     std::filesystem::remove_all(dir / "analysis", ec);
 }
 
-}  // namespace
+// A start that fails before its first checkpoint (the build runs out of memory, a signal during
+// the build, a full disk at the first frame) leaves nothing to resume: a directory it created
+// goes with it.
+class RemoveUnlessStarted {
+  public:
+    RemoveUnlessStarted(std::filesystem::path dir, bool armed)
+        : dir_(std::move(dir)), armed_(armed) {}
+    RemoveUnlessStarted(const RemoveUnlessStarted&) = delete;
+    RemoveUnlessStarted& operator=(const RemoveUnlessStarted&) = delete;
+    ~RemoveUnlessStarted() {
+        std::error_code ignored;
+        if (armed_) std::filesystem::remove_all(dir_, ignored);
+    }
+    void started() { armed_ = false; }
 
-int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out, std::ostream& err,
-              bool progress_is_terminal) {
-    // From here on a signal asks for a clean stop, and a file-size limit fails a write instead
-    // of killing the process.
-    StopSignalGuard signals;
-    const PackingCheck packing = check_packing(plan.engine, plan.counts);
-    if (!packing.ok)
-        throw InvalidParameter("species", "these counts", "a packing that fits", packing.message);
-    check_steady_series(plan);
-    check_fits_in_memory(plan);
-    require_usable_backend(plan.control.backend, "run.backend");
-    const bool created = prepare_output_directory(options.out_dir, options.overwrite);
-    const std::filesystem::path& dir = options.out_dir;
-    const RunDirectoryLock lock(dir);
-    if (options.overwrite) remove_run_files(dir);
-    // A start that fails before its first checkpoint (the build runs out of memory, a signal
-    // during the build) leaves nothing to resume: a directory it created goes with it.
-    struct RemoveUnlessStarted {
-        const std::filesystem::path& dir;
-        bool armed;
-        ~RemoveUnlessStarted() {
-            std::error_code ignored;
-            if (armed) std::filesystem::remove_all(dir, ignored);
+  private:
+    std::filesystem::path dir_;
+    bool armed_;
+};
+
+// Steps the ensemble until every session's run has ended, each as its session decides.
+// `codes[i]` receives session i's exit code. The progress follows the run with the most steps
+// left; a run's messages end the bar's line first.
+class EnsembleLoop {
+  public:
+    EnsembleLoop(Ensemble& ensemble, std::vector<RunSession*> sessions, int threads,
+                 ProgressStyle style, std::ostream& out, std::ostream& err)
+        : ensemble_(ensemble),
+          active_(std::move(sessions)),
+          requested_threads_(threads),
+          threads_(threads),
+          style_(style),
+          out_(out),
+          err_(err) {
+        for (std::size_t m = 0; m < active_.size(); ++m)
+            active_[m]->attach(ensemble_, m);
+    }
+
+    // Session i's exit code by its place in the sessions given.
+    std::vector<int> run() {
+        std::vector<int> codes(active_.size(), kExitOk);
+        for (std::size_t m = 0; m < active_.size(); ++m)
+            order_.push_back(m);
+        follow_lead();
+        for (RunSession* s : active_)
+            s->write_progress("running", 0.0);
+        if (const int signal = stop_signal_received(); signal != 0)  // during the build
+            return stop_all(signal, codes);
+        if (requested_threads_ > 1) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));  // a first measure
+            adapt_threads();
         }
-    } cleanup{dir, created};
-    // Flushed at once: with stdout going to a file, the plan and the start would otherwise
-    // appear only with the first progress line, minutes later.
-    if (!options.quiet) {
-        out << "rodsea run -> " << dir.string() << "\n";
-        describe_plan(plan, out, true);
-        out << std::flush;
+        std::uint64_t iteration = 0;
+        while (!active_.empty()) {
+            try {
+                ensemble_.step();
+            } catch (const BlowUpError&) {
+                // Each system's blow-up is read below; the others stepped as usual.
+            }
+            const double rate = progress_->steps_per_second();
+            std::vector<std::size_t> ended;
+            for (std::size_t m = 0; m < active_.size(); ++m) {
+                RunSession& s = *active_[m];
+                std::optional<int> code;
+                if (const std::optional<BlowUp>& b = ensemble_.blow_up(m)) {
+                    settle_progress();
+                    code = s.stop_after_blow_up(*b, s.step_count(), rate, out_, err_);
+                } else {
+                    code = s.after_step(rate, out_, err_, style_, [this] { settle_progress(); });
+                }
+                if (code) {
+                    codes[order_[m]] = *code;
+                    ended.push_back(m);
+                }
+            }
+            if (!settled_) progress_->update(lead_->step_count(), lead_->polar_order());
+            if (const int signal = stop_signal_received(); signal != 0) {
+                retire(ended);
+                return stop_all(signal, codes);
+            }
+            if ((++iteration & 63u) == 0) {
+                for (std::size_t m = 0; m < active_.size(); ++m) {
+                    if (std::find(ended.begin(), ended.end(), m) != ended.end()) continue;
+                    if (const auto code =
+                            active_[m]->between_steps(rate, err_, [this] { settle_progress(); })) {
+                        codes[order_[m]] = *code;
+                        ended.push_back(m);
+                    }
+                }
+                if (seconds_since(last_threads_check_) >= kThreadsCheckSeconds) adapt_threads();
+            }
+            if (!ended.empty()) retire(ended);
+        }
+        return codes;
     }
 
-    BuildReport built;
-    BodyState bodies =
-        build_initial_state(plan.engine, plan.counts, plan.builder, plan.engine.seed, &built);
-    if (!options.quiet) {
-        // Dense starts keep some order (docs/builder.md): say how they were built and how much.
-        std::ostringstream line;
-        line.precision(3);
-        line << "initial state built in " << built.seconds << " s: " << describe_start(built)
-             << ", then " << built.sweeps << " Monte Carlo sweeps; order at the start:";
-        for (size_t s = 0; s < plan.engine.species.size(); ++s)
-            if (plan.engine.species[s].kind != BodyKind::bead)
-                line << " " << plan.engine.species[s].name << " P = " << built.polar_order.at(s)
-                     << ", S = " << built.nematic_order.at(s) << ";";
-        out << line.str() << std::endl;
+  private:
+    static double seconds_since(std::chrono::steady_clock::time_point t) {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
     }
-    Simulation sim(plan.engine, std::move(bodies),
-                   {.threads = plan.control.threads, .backend = plan.control.backend});
-    write_file_atomically(dir / kConfigFile, plan.config_toml);
-    const SeriesRecorder columns(plan);
-    TrajectoryFile trajectory =
-        TrajectoryFile::create(dir / kTrajectoryFile, plan.engine, sim.bodies().species,
-                               plan.config_toml, columns.columns());
-    SeriesCsv csv = SeriesCsv::create(dir / kSeriesFile, columns.columns());
-    Session session(plan, std::move(sim), std::move(trajectory), std::move(csv), dir, 0.0);
-    try {
-        session.write_frame(0.0);
-        session.checkpoint(false);
-        cleanup.armed = false;
-    } catch (const FileError& e) {
-        err << "rodsea: cannot write the run's first frame and checkpoint: " << e.what()
-            << "\n  there is nothing to resume: make room and start again with --overwrite\n";
-        return kExitIoError;
-    }
-    return session.run(out, err, choose_progress_style(options.quiet, progress_is_terminal));
-}
 
-namespace {
+    // The progress follows the run with the most steps left (the first of them), from here.
+    void follow_lead() {
+        if (active_.empty()) return;
+        lead_ = active_.front();
+        for (RunSession* s : active_)
+            if (s->steps_left() > lead_->steps_left()) lead_ = s;
+        progress_ = std::make_unique<ProgressReporter>(out_, style_, lead_->step_count(),
+                                                       lead_->plan().total_steps(),
+                                                       lead_->plan().engine.dt);
+        settled_ = false;
+        if (active_.size() > 1 && style_ != ProgressStyle::quiet)
+            out_ << "progress: " << lead_->dir().string()
+                 << ", the run with the most steps left of " << active_.size() << std::endl;
+    }
+
+    // Ends the progress line before a message; a new one starts after the step.
+    void settle_progress() {
+        if (settled_) return;
+        progress_->finish(lead_->step_count(), lead_->polar_order());
+        settled_ = true;
+    }
+
+    // Drops the runs that ended from the ensemble; the others step on, bit for bit.
+    void retire(std::vector<std::size_t> ended) {
+        if (ended.empty()) return;
+        std::sort(ended.begin(), ended.end());
+        ensemble_.retire(ended);
+        for (std::size_t k = ended.size(); k-- > 0;) {
+            active_.erase(active_.begin() + static_cast<std::ptrdiff_t>(ended[k]));
+            order_.erase(order_.begin() + static_cast<std::ptrdiff_t>(ended[k]));
+        }
+        for (std::size_t m = 0; m < active_.size(); ++m)
+            active_[m]->attach(ensemble_, m);
+        if (settled_) follow_lead();
+    }
+
+    std::vector<int> stop_all(int signal, std::vector<int>& codes) {
+        settle_progress();
+        const double rate = progress_->steps_per_second();
+        for (std::size_t m = 0; m < active_.size(); ++m)
+            codes[order_[m]] = active_[m]->stop_on_signal(signal, rate, out_, err_);
+        return codes;
+    }
+
+    // Steps on as many of the threads asked for as other processes leave cores free
+    // (FreeCoreMonitor): more threads than free cores spin against each other. Said once when
+    // it first differs.
+    void adapt_threads() {
+        last_threads_check_ = std::chrono::steady_clock::now();
+        if (requested_threads_ <= 1) return;
+        const int use = threads_for_free_cores(requested_threads_, cores_.sample());
+        if (use == threads_) return;
+        ensemble_.set_threads(use);
+        threads_ = use;
+        if (style_ != ProgressStyle::quiet && !told_threads_) {
+            out_ << "\nthreads: stepping on " << use << " of run.threads = " << requested_threads_
+                 << ", as other processes leave " << use << " core" << (use == 1 ? "" : "s")
+                 << " free (rechecked every " << kThreadsCheckSeconds
+                 << " s; the trajectory does not depend on it)\n"
+                 << std::flush;
+            told_threads_ = true;
+        }
+    }
+
+    Ensemble& ensemble_;
+    std::vector<RunSession*> active_;
+    std::vector<std::size_t> order_;  // each active session's place in the sessions given
+    RunSession* lead_ = nullptr;
+    std::unique_ptr<ProgressReporter> progress_;
+    bool settled_ = true;
+    int requested_threads_, threads_;
+    ProgressStyle style_;
+    std::ostream& out_;
+    std::ostream& err_;
+    FreeCoreMonitor cores_;
+    bool told_threads_ = false;
+    std::chrono::steady_clock::time_point last_threads_check_ = std::chrono::steady_clock::now();
+    static constexpr double kThreadsCheckSeconds = 2.0;
+};
 
 // Everything about a checkpoint is checked against its plan before any file is touched.
 void check_checkpoint(const Checkpoint& c, const RunPlan& plan, const std::filesystem::path& path) {
@@ -596,6 +390,9 @@ void check_belongs_here(const std::filesystem::path& dir, const Checkpoint& c,
 
 // The plan of a run given a new length (--duration, --steady-samples), checked against what the
 // run has done.
+
+// The plan of a run given a new length (--duration, --steady-samples), checked against what the
+// run has done.
 RunPlan extended_plan(const Checkpoint& c, const RunOptions& options,
                       const std::filesystem::path& path) {
     RunPlan plan = with_run_length(c.config_toml, path.string() + " [config]", options.duration,
@@ -609,6 +406,21 @@ RunPlan extended_plan(const Checkpoint& c, const RunOptions& options,
     return plan;
 }
 
+// Checked before anything is written: that the checkpoint counts the frames its (possibly
+// extended) plan has written by its step.
+void check_frames_counted(const Checkpoint& c, const RunPlan& plan, bool extending,
+                          const std::filesystem::path& path) {
+    const std::uint64_t due = frames_due(plan, c.step);
+    // An extension of a complete run that ended off the output grid drops that last frame.
+    const bool extra_last_frame = extending && c.complete && c.frames_written == due + 1;
+    if (c.step > plan.total_steps() ||
+        (c.frames_written != due && c.frames_written + 1 != due && !extra_last_frame))
+        throw FileError(path.string(), "counts " + std::to_string(c.frames_written) +
+                                           " frames at step " + std::to_string(c.step) +
+                                           ", where the run writes " + std::to_string(due) +
+                                           ": not a checkpoint of this run's config");
+}
+
 // Makes the checkpoint and config.toml those of the extended run. A complete run that ended off
 // the output grid wrote a last frame that an uninterrupted longer run does not have: it is
 // dropped (the files are truncated to the frames the checkpoint counts when they are reopened),
@@ -616,26 +428,26 @@ RunPlan extended_plan(const Checkpoint& c, const RunOptions& options,
 // changes: a crash in between resumes the extension, never a run whose checkpoint counts frames
 // that are gone.
 void commit_extension(const std::filesystem::path& dir, const RunPlan& plan, Checkpoint& c) {
-    const std::filesystem::path path = dir / kCheckpointFile;
     const std::uint64_t due = frames_due(plan, c.step);
-    const bool extra_last_frame = c.complete && c.frames_written == due + 1;
-    if (c.frames_written != due && c.frames_written + 1 != due && !extra_last_frame)
-        throw FileError(path.string(), "counts " + std::to_string(c.frames_written) +
-                                           " frames at step " + std::to_string(c.step) +
-                                           ": not a checkpoint of this run's config");
-    if (extra_last_frame) c.frames_written = due;
+    if (c.complete && c.frames_written == due + 1) c.frames_written = due;
     c.complete = false;
     if (c.config_toml != plan.config_toml) c.extending_from = config_fingerprint(c.config_toml);
     c.config_toml = plan.config_toml;
-    write_checkpoint(path, c);
+    write_checkpoint(dir / kCheckpointFile, c);
     write_file_atomically(dir / kConfigFile, plan.config_toml);
 }
 
-}  // namespace
+// A run directory read back and checked, ready to continue.
+struct ResumedRun {
+    std::filesystem::path dir;
+    std::unique_ptr<RunDirectoryLock> lock;
+    Checkpoint checkpoint;
+    RunPlan plan;
+    bool extending = false;
+    bool complete = false;  // nothing to do
+};
 
-int resume_run(const std::filesystem::path& dir, const RunOptions& options, std::ostream& out,
-               std::ostream& err, bool progress_is_terminal) {
-    StopSignalGuard signals;
+ResumedRun read_run(const std::filesystem::path& dir, const RunOptions& options) {
     const std::filesystem::path checkpoint_path = dir / kCheckpointFile;
     if (!std::filesystem::exists(checkpoint_path))
         throw FileError(checkpoint_path.string(),
@@ -645,77 +457,274 @@ int resume_run(const std::filesystem::path& dir, const RunOptions& options, std:
                                   (dir / kConfigFile).string() + " --out " + dir.string() +
                                   " --overwrite"
                             : "no checkpoint here: is this a directory made by rodsea run?");
-    const RunDirectoryLock lock(dir);
-    Checkpoint c = read_checkpoint(checkpoint_path);
-    const RunPlan stored =
-        load_config_string(c.config_toml, checkpoint_path.string() + " [config]");
+    ResumedRun run{
+        dir, std::make_unique<RunDirectoryLock>(dir), read_checkpoint(checkpoint_path), {}};
+    const Checkpoint& c = run.checkpoint;
+    RunPlan stored = load_config_string(c.config_toml, checkpoint_path.string() + " [config]");
     check_checkpoint(c, stored, checkpoint_path);
     check_belongs_here(dir, c, stored);
-    const bool extending = options.duration || options.steady_samples;
-    const RunPlan plan = extending ? extended_plan(c, options, checkpoint_path) : stored;
-    check_fits_in_memory(plan);
-    const BackendKind backend = options.backend.value_or(plan.control.backend);
-    require_usable_backend(backend, options.backend ? "--backend" : "run.backend");
-    if (c.complete && (!extending || plan.total_steps() == c.step)) {
-        if (!options.quiet)
-            out << "rodsea: the run in " << dir.string() << " is already complete (step " << c.step
-                << ", t = " << static_cast<double>(c.step) * plan.engine.dt
-                << " s); nothing to do. Extend it with --duration T.\n";
-        return kExitOk;
+    run.extending = options.duration || options.steady_samples;
+    run.plan = run.extending ? extended_plan(c, options, checkpoint_path) : std::move(stored);
+    run.complete = c.complete && (!run.extending || run.plan.total_steps() == c.step);
+    if (!run.complete) check_frames_counted(c, run.plan, run.extending, checkpoint_path);
+    return run;
+}
+
+// Steps every system of the ensemble whose session started (`by_system[m]`, not null) to its
+// run's end; the systems of the others leave first. `run_of[m]` is system m's place in
+// `codes`, which receives each run's exit code. Returns the first that is not kExitOk.
+int step_to_the_end(Ensemble& ensemble, const std::vector<RunSession*>& by_system,
+                    const std::vector<std::size_t>& run_of, std::vector<int>& codes,
+                    const BackendOptions& stepping, bool quiet, std::ostream& out,
+                    std::ostream& err, bool progress_is_terminal) {
+    std::vector<std::size_t> never_started;
+    std::vector<RunSession*> sessions;
+    std::vector<std::size_t> runs;
+    for (std::size_t m = 0; m < by_system.size(); ++m) {
+        if (by_system[m] == nullptr) {
+            never_started.push_back(m);
+            continue;
+        }
+        sessions.push_back(by_system[m]);
+        runs.push_back(run_of[m]);
     }
-    if (extending) commit_extension(dir, plan, c);
-    // A run stopped by a failed write has its checkpoint at the step whose frame failed: that
-    // frame comes first, from the same state and interval, as the uninterrupted run wrote it.
-    const std::uint64_t due = frames_due(plan, c.step);
-    if (c.step > plan.total_steps() || (c.frames_written != due && c.frames_written + 1 != due))
-        throw FileError(checkpoint_path.string(),
-                        "counts " + std::to_string(c.frames_written) + " frames at step " +
-                            std::to_string(c.step) + ", where the run writes " +
-                            std::to_string(due) + ": not a checkpoint of this run's config");
+    if (!sessions.empty()) {
+        ensemble.retire(never_started);
+        EnsembleLoop loop(ensemble, sessions, stepping.threads,
+                          choose_progress_style(quiet, progress_is_terminal), out, err);
+        const std::vector<int> ended = loop.run();
+        for (std::size_t k = 0; k < runs.size(); ++k)
+            codes[runs[k]] = ended[k];
+    }
+    for (int code : codes)
+        if (code != kExitOk) return code;
+    return kExitOk;
+}
+
+}  // namespace
+
+int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out, std::ostream& err,
+              bool progress_is_terminal) {
+    return start_runs({{plan, options.out_dir}}, options, out, err, progress_is_terminal);
+}
+
+int resume_run(const std::filesystem::path& dir, const RunOptions& options, std::ostream& out,
+               std::ostream& err, bool progress_is_terminal) {
+    return resume_runs({dir}, options, out, err, progress_is_terminal);
+}
+
+int start_runs(const std::vector<NewRun>& runs, const RunOptions& options, std::ostream& out,
+               std::ostream& err, bool progress_is_terminal) {
+    if (runs.empty()) throw InvalidParameter("CONFIG", "none", "at least one config");
+    // From here on a signal asks for a clean stop, and a file-size limit fails a write instead
+    // of killing the process.
+    StopSignalGuard signals;
+    std::vector<RunPlan> plans;
+    std::vector<std::filesystem::path> dirs;
+    for (const NewRun& run : runs) {
+        const PackingCheck packing = check_packing(run.plan.engine, run.plan.counts);
+        if (!packing.ok)
+            throw InvalidParameter(
+                "species", "these counts", "a packing that fits",
+                packing.message +
+                    (runs.size() > 1 ? " (the run into " + run.dir.string() + ")" : std::string()));
+        check_steady_series(run.plan);
+        check_output_directory(run.dir, options.overwrite);
+        plans.push_back(run.plan);
+        dirs.push_back(run.dir);
+    }
+    check_distinct(dirs);
+    check_fits_in_memory(plans);
+    const BackendOptions stepping = ensemble_options(plans, dirs, std::nullopt);
+    require_usable_backend(stepping.backend, "run.backend");
+
+    std::vector<std::unique_ptr<RemoveUnlessStarted>> cleanups;
+    std::vector<std::unique_ptr<RunDirectoryLock>> locks;
+    for (const std::filesystem::path& dir : dirs) {
+        const bool created = create_output_directory(dir);
+        cleanups.push_back(std::make_unique<RemoveUnlessStarted>(dir, created));
+        locks.push_back(std::make_unique<RunDirectoryLock>(dir));
+        if (options.overwrite) remove_run_files(dir);
+    }
+    // Flushed at once: with stdout going to a file, the plan and the start would otherwise
+    // appear only with the first progress line, minutes later.
     if (!options.quiet) {
-        out << "rodsea run --resume " << dir.string() << ": from step " << c.step << " of "
-            << plan.total_steps() << " (t = " << static_cast<double>(c.step) * plan.engine.dt
-            << " s of " << plan.control.duration << " s), " << c.frames_written << " frames kept"
-            << (extending ? "; extended, config.toml updated" : "") << std::endl;
-        if (backend != plan.control.backend)
-            out << "backend: " << to_string(backend) << " for this session (the run's config "
-                << "says " << to_string(plan.control.backend)
-                << "): the trajectory goes on statistically, not bit for bit, as the run would "
-                   "have"
-                << std::endl;
+        if (plans.size() == 1) {
+            out << "rodsea run -> " << dirs.front().string() << "\n";
+            describe_plan(plans.front(), out, true);
+        } else {
+            RunControl control = plans.front().control;
+            control.threads = stepping.threads;
+            control.backend = stepping.backend;
+            describe_ensemble(plans, dirs, control, out);
+        }
+        out << std::flush;
     }
-    const SeriesRecorder columns(plan);
-    Simulation sim = Simulation::resume(plan.engine, std::move(c.bodies), c.step,
-                                        {.threads = plan.control.threads, .backend = backend});
-    SeriesCsv csv = SeriesCsv::reopen(dir / kSeriesFile, c.frames_written);
-    std::optional<SteadyStop> history;
-    if (plan.control.steady_samples > 0) {
-        history.emplace(plan, columns.columns());
-        history->restore(TrajectoryReader(dir / kTrajectoryFile), c.frames_written);
+
+    std::vector<Simulation> systems;
+    for (std::size_t r = 0; r < plans.size(); ++r) {
+        const RunPlan& plan = plans[r];
+        BuildReport built;
+        BodyState bodies =
+            build_initial_state(plan.engine, plan.counts, plan.builder, plan.engine.seed, &built);
+        if (!options.quiet) {
+            // Dense starts keep some order (docs/builder.md): say how they were built and how
+            // much.
+            std::ostringstream line;
+            line.precision(3);
+            if (plans.size() > 1) line << dirs[r].string() << ": ";
+            line << "initial state built in " << built.seconds << " s: " << describe_start(built)
+                 << ", then " << built.sweeps << " Monte Carlo sweeps; order at the start:";
+            for (size_t s = 0; s < plan.engine.species.size(); ++s)
+                if (plan.engine.species[s].kind != BodyKind::bead)
+                    line << " " << plan.engine.species[s].name << " P = " << built.polar_order.at(s)
+                         << ", S = " << built.nematic_order.at(s) << ";";
+            out << line.str() << std::endl;
+        }
+        systems.emplace_back(plan.engine, std::move(bodies));
     }
-    TrajectoryFile trajectory =
-        TrajectoryFile::reopen(dir / kTrajectoryFile, c.frames_written, columns.columns());
-    // An extension interrupted before every file said its new length is finished here.
-    if (read_stored_config(dir / kTrajectoryFile) != plan.config_toml)
-        trajectory.replace_config(plan.config_toml);
-    if (!extending && (!std::filesystem::exists(dir / kConfigFile) ||
-                       read_text_file(dir / kConfigFile) != plan.config_toml))
+    Ensemble ensemble(std::move(systems), stepping);
+
+    std::vector<std::unique_ptr<RunSession>> sessions;
+    std::vector<int> codes(plans.size(), kExitOk);
+    std::vector<RunSession*> by_system(plans.size(), nullptr);
+    std::vector<std::size_t> run_of(plans.size());
+    for (std::size_t r = 0; r < plans.size(); ++r) {
+        run_of[r] = r;
+        const RunPlan& plan = plans[r];
+        const std::filesystem::path& dir = dirs[r];
         write_file_atomically(dir / kConfigFile, plan.config_toml);
-    Session session(plan, std::move(sim), std::move(trajectory), std::move(csv), dir,
-                    c.wall_seconds);
-    session.recorder().restore_interval(c.interval_accumulators);
-    session.remember_good_state();
-    if (history) session.steady() = std::move(*history);
-    if (c.frames_written + 1 == due) {
+        const SeriesRecorder columns(plan);
+        TrajectoryFile trajectory =
+            TrajectoryFile::create(dir / kTrajectoryFile, plan.engine, ensemble.bodies(r).species,
+                                   plan.config_toml, columns.columns());
+        SeriesCsv csv = SeriesCsv::create(dir / kSeriesFile, columns.columns());
+        sessions.push_back(std::make_unique<RunSession>(plan, std::move(trajectory), std::move(csv),
+                                                        dir, 0.0, std::move(locks[r])));
+        RunSession& session = *sessions.back();
+        session.attach(ensemble, r);
         try {
             session.write_frame(0.0);
+            session.checkpoint(false);
+            cleanups[r]->started();
+            by_system[r] = &session;
         } catch (const FileError& e) {
-            err << "rodsea: still cannot write: " << e.what()
-                << "\n  the checkpoint is intact; make room and resume again\n";
-            return kExitIoError;
+            err << "rodsea: cannot write the first frame and checkpoint of " << dir.string() << ": "
+                << e.what()
+                << "\n  there is nothing to resume: make room and start again with --overwrite\n";
+            codes[r] = kExitIoError;
         }
     }
-    return session.run(out, err, choose_progress_style(options.quiet, progress_is_terminal));
+    return step_to_the_end(ensemble, by_system, run_of, codes, stepping, options.quiet, out, err,
+                           progress_is_terminal);
+}
+
+int resume_runs(const std::vector<std::filesystem::path>& dirs, const RunOptions& options,
+                std::ostream& out, std::ostream& err, bool progress_is_terminal) {
+    if (dirs.empty()) throw InvalidParameter("--resume", "none", "at least one run directory");
+    StopSignalGuard signals;
+    check_distinct(dirs);
+    std::vector<ResumedRun> runs;
+    for (const std::filesystem::path& dir : dirs)
+        runs.push_back(read_run(dir, options));
+    std::vector<RunPlan> plans;
+    std::vector<std::filesystem::path> going_dirs;
+    for (const ResumedRun& run : runs) {
+        if (run.complete) continue;
+        plans.push_back(run.plan);
+        going_dirs.push_back(run.dir);
+    }
+    for (const ResumedRun& run : runs) {
+        if (!run.complete || options.quiet) continue;
+        out << "rodsea: the run in " << run.dir.string() << " is already complete (step "
+            << run.checkpoint.step
+            << ", t = " << static_cast<double>(run.checkpoint.step) * run.plan.engine.dt
+            << " s); nothing to do. Extend it with --duration T.\n";
+    }
+    if (plans.empty()) return kExitOk;
+    check_fits_in_memory(plans);
+    const BackendOptions stepping = ensemble_options(plans, going_dirs, options.backend);
+    require_usable_backend(stepping.backend, options.backend ? "--backend" : "run.backend");
+
+    std::vector<Simulation> systems;
+    for (ResumedRun& run : runs) {
+        if (run.complete) continue;
+        if (run.extending) commit_extension(run.dir, run.plan, run.checkpoint);
+        const Checkpoint& c = run.checkpoint;
+        const RunPlan& plan = run.plan;
+        if (!options.quiet) {
+            out << "rodsea run --resume " << run.dir.string() << ": from step " << c.step << " of "
+                << plan.total_steps() << " (t = " << static_cast<double>(c.step) * plan.engine.dt
+                << " s of " << plan.control.duration << " s), " << c.frames_written
+                << " frames kept" << (run.extending ? "; extended, config.toml updated" : "")
+                << std::endl;
+            if (stepping.backend != plan.control.backend)
+                out << "backend: " << to_string(stepping.backend)
+                    << " for this session (the run's config says "
+                    << to_string(plan.control.backend)
+                    << "): the trajectory goes on statistically, not bit for bit, as the run "
+                       "would have"
+                    << std::endl;
+        }
+        systems.push_back(Simulation::resume(plan.engine, c.bodies, c.step));
+    }
+    if (!options.quiet && systems.size() > 1)
+        out << "stepping " << systems.size() << " runs together as one ensemble on "
+            << to_string(stepping.backend) << ", " << stepping.threads
+            << (stepping.threads == 1 ? " thread" : " threads") << std::endl;
+    Ensemble ensemble(std::move(systems), stepping);
+
+    std::vector<std::unique_ptr<RunSession>> sessions;
+    std::vector<int> codes(runs.size(), kExitOk);
+    std::vector<RunSession*> by_system;
+    std::vector<std::size_t> run_of;
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+        ResumedRun& run = runs[r];
+        if (run.complete) continue;
+        const RunPlan& plan = run.plan;
+        const Checkpoint& c = run.checkpoint;
+        const std::filesystem::path& dir = run.dir;
+        const SeriesRecorder columns(plan);
+        SeriesCsv csv = SeriesCsv::reopen(dir / kSeriesFile, c.frames_written);
+        std::optional<SteadyStop> history;
+        if (plan.control.steady_samples > 0) {
+            history.emplace(plan, columns.columns());
+            history->restore(TrajectoryReader(dir / kTrajectoryFile), c.frames_written);
+        }
+        TrajectoryFile trajectory =
+            TrajectoryFile::reopen(dir / kTrajectoryFile, c.frames_written, columns.columns());
+        // An extension interrupted before every file said its new length is finished here.
+        if (read_stored_config(dir / kTrajectoryFile) != plan.config_toml)
+            trajectory.replace_config(plan.config_toml);
+        if (!run.extending && (!std::filesystem::exists(dir / kConfigFile) ||
+                               read_text_file(dir / kConfigFile) != plan.config_toml))
+            write_file_atomically(dir / kConfigFile, plan.config_toml);
+        sessions.push_back(std::make_unique<RunSession>(plan, std::move(trajectory), std::move(csv),
+                                                        dir, c.wall_seconds, std::move(run.lock)));
+        RunSession& session = *sessions.back();
+        session.attach(ensemble, by_system.size());
+        by_system.push_back(nullptr);
+        run_of.push_back(r);
+        session.recorder().restore_interval(c.interval_accumulators);
+        session.remember_good_state();
+        if (history) session.steady() = std::move(*history);
+        // A run stopped by a failed write has its checkpoint at the step whose frame failed:
+        // that frame comes first, from the same state and interval, as the uninterrupted run
+        // wrote it.
+        if (c.frames_written + 1 == frames_due(plan, c.step)) {
+            try {
+                session.write_frame(0.0);
+            } catch (const FileError& e) {
+                err << "rodsea: still cannot write " << dir.string() << ": " << e.what()
+                    << "\n  the checkpoint is intact; make room and resume again\n";
+                codes[r] = kExitIoError;
+                continue;
+            }
+        }
+        by_system.back() = &session;
+    }
+    return step_to_the_end(ensemble, by_system, run_of, codes, stepping, options.quiet, out, err,
+                           progress_is_terminal);
 }
 
 }  // namespace rodsea

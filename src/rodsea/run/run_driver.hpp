@@ -10,9 +10,11 @@
 #include <filesystem>
 #include <iosfwd>
 #include <optional>
+#include <vector>
 
 #include "rodsea/cli/exit_codes.hpp"
 #include "rodsea/config/run_plan.hpp"
+#include "rodsea/run/run_files.hpp"
 
 namespace rodsea {
 
@@ -29,10 +31,11 @@ struct RunOptions {
     std::optional<BackendKind> backend;
 };
 
-inline const char* const kConfigFile = "config.toml";
-inline const char* const kTrajectoryFile = "trajectory.h5";
-inline const char* const kSeriesFile = "timeseries.csv";
-inline const char* const kCheckpointFile = "checkpoint.h5";
+// A new run: its plan and the directory it writes.
+struct NewRun {
+    RunPlan plan;
+    std::filesystem::path dir;
+};
 
 // Starts a new run of `plan` in options.out_dir. Everything about the input (packing, output
 // directory) is checked before any work; problems throw InvalidParameter or FileError.
@@ -45,5 +48,20 @@ int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out,
 // bit for bit the run that had been given it from the start.
 int resume_run(const std::filesystem::path& dir, const RunOptions& options, std::ostream& out,
                std::ostream& err, bool progress_is_terminal = false);
+
+// Several runs stepped together as one Ensemble (engine/ensemble.hpp): on a GPU they share its
+// kernels. Each writes its own directory (runs[i].dir; options.out_dir is not used) exactly as
+// it would alone, and each directory resumes alone or with others. Every run is checked before
+// any work (a problem with one starts none); they must agree on run.backend and step on the
+// largest run.threads among them (the trajectory does not depend on threads). A run that ends
+// (its duration, a steady window, a blow-up, a failed write) leaves the ensemble and the others
+// go on. Returns kExitOk when every run ended well, otherwise the exit code of the first run, in
+// the order given, that did not.
+int start_runs(const std::vector<NewRun>& runs, const RunOptions& options, std::ostream& out,
+               std::ostream& err, bool progress_is_terminal = false);
+// The same for resumed runs; options.duration and options.steady_samples apply to each, and
+// a run already complete is said so and left alone.
+int resume_runs(const std::vector<std::filesystem::path>& dirs, const RunOptions& options,
+                std::ostream& out, std::ostream& err, bool progress_is_terminal = false);
 
 }  // namespace rodsea

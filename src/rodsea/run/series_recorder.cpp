@@ -54,9 +54,8 @@ void SeriesRecorder::accumulate(const StepStatistics& s) {
     steps_ += 1.0;
 }
 
-std::vector<double> SeriesRecorder::row(const Simulation& sim, double steps_per_second) const {
-    const BodyState& b = sim.bodies();
-    const EngineParameters& p = sim.parameters();
+std::vector<double> SeriesRecorder::row(const EngineParameters& p, const BodyState& b,
+                                        double steps_per_second) const {
     std::vector<double> values;
     values.reserve(columns_.size());
     for (size_t s = 0; s < species_count_; ++s) {

@@ -20,8 +20,9 @@ class SeriesRecorder {
 
     const std::vector<SeriesColumn>& columns() const { return columns_; }
     void accumulate(const StepStatistics& step);
-    // The row for the current state and the interval so far.
-    std::vector<double> row(const Simulation& sim, double steps_per_second) const;
+    // The row for the state `bodies` of a system of `params` and the interval so far.
+    std::vector<double> row(const EngineParameters& params, const BodyState& bodies,
+                            double steps_per_second) const;
     // Called once the row is safely written: the next row covers the steps from here.
     void start_interval() { restore_interval({0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}); }
 
