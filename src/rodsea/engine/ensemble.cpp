@@ -91,8 +91,8 @@ void Ensemble::retire(const std::vector<std::size_t>& systems) {
     blown_.resize(next);
     if (!cpu_systems_.empty()) cpu_systems_.erase(cpu_systems_.begin() + next, cpu_systems_.end());
     if (!stepper_) return;
+    stepper_.reset();  // before the species tables of the systems retired
     species_.resize(next);
-    stepper_.reset();
     if (next == 0) return;
     std::vector<const BodyState*> states;
     for (const BodyState& b : kept_states)
