@@ -40,6 +40,13 @@ FINITE_SIZE = {
     ],
 }
 
+# Fig. 5b, first look: the medium's velocity around polar rods against distance in the 63 mm box
+# (label, profile table) from `rodsea analyze --observables medium_velocity`.
+FIG5B_PROFILES = [
+    (f"φ_a = {phi}", f"{DATA}/fig5b-63mm/medium_velocity_phi_a{phi}.csv")
+    for phi in ("0.05", "0.20", "0.50")
+]
+
 
 class TableError(Exception):
     pass
@@ -169,8 +176,37 @@ def draw_finite_size(plt):
     return fig, dump
 
 
+def draw_fig5b(plt):
+    """The medium's mean velocity along the rod's axis (lab frame) and its mean speed against
+    the distance from a polar rod, for each φ_a: the drag near the rod and the far field."""
+    fig, (along, speed) = plt.subplots(1, 2, figsize=(10.0, 3.6))
+    dump = {}
+    for (label, relative), colour in zip(FIG5B_PROFILES, ("C0", "C1", "C2")):
+        if not os.path.isfile(os.path.join(ROOT, relative)):
+            continue
+        t = read_csv(relative)
+        r = column(t, "r", relative)
+        v = column(t, "v_along", relative)
+        u = column(t, "speed", relative)
+        keep = column(t, "pairs", relative) > 0
+        along.plot(r[keep], v[keep], color=colour, lw=1.4, label=label)
+        speed.plot(r[keep], u[keep], color=colour, lw=1.4, label=label)
+        dump[f"v_along: {label}"] = {"x": r[keep].tolist(), "y": v[keep].tolist()}
+        dump[f"speed: {label}"] = {"x": r[keep].tolist(), "y": u[keep].tolist()}
+    along.axhline(0.0, color="0.6", lw=0.8)
+    along.set_xlabel("distance from a polar rod, r (mm)")
+    along.set_ylabel("medium velocity along the rod's axis (mm/s)")
+    speed.set_xlabel("distance from a polar rod, r (mm)")
+    speed.set_ylabel("medium speed |v| (mm/s, instantaneous)")
+    along.legend(loc="best", fontsize=8)
+    fig.suptitle("Medium around polar rods, 63 mm box, φ_p = 0.05, D_r = 0, from t = 30 s",
+                 fontsize=10)
+    fig.tight_layout()
+    return fig, dump
+
+
 FIGURES = {"fig1c": draw_fig1c, "fig1c-series": draw_fig1c_series,
-           "finite-size": draw_finite_size}
+           "finite-size": draw_finite_size, "fig5b": draw_fig5b}
 
 
 def main(argv):
