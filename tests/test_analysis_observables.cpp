@@ -439,6 +439,65 @@ TEST(MediumVelocity, UniformFlowIsSeenAlongTheRodsAtEveryDistance) {
     EXPECT_NEAR(pairs, 20.0 * 2000.0 * kPi * 400.0 / 3600.0, 600.0);
 }
 
+// The plates agitate every body in the plane far faster than the medium flows: instantaneous
+// velocities here are a drift of 2 mm/s along x plus ±40 mm/s of independent jitter per body and
+// frame. With lag = 2 the velocities come from the positions, which move with the drift alone
+// (some across the periodic edge), so the profile is the drift to rounding, while the
+// instantaneous profile's speed is the jitter's.
+TEST(MediumVelocity, ALagMeasuresTheFlowUnderTheAgitation) {
+    const double side = 60.0, interval = 0.1;
+    SplitMix64 rng(31);
+    std::vector<Body> start;
+    for (int i = 0; i < 10; ++i)  // polar rods along x, drifting at 5 mm/s
+        start.push_back({rng.uniform(0, side), rng.uniform(0, side), 0.0, 0, 0.0, 0.0});
+    for (int i = 0; i < 1000; ++i)  // the medium, at 2 mm/s; some start 0.3 mm from the edge
+        start.push_back({i < 50 ? side - 0.3 : rng.uniform(0, side), rng.uniform(0, side),
+                         rng.uniform(-kPi, kPi), 1, 0.0, 0.0});
+    std::vector<AnalysisFrame> frames;
+    for (std::size_t k = 0; k < 8; ++k) {
+        std::vector<Body> now = start;
+        for (Body& b : now) {
+            const double drift = b.species == 0 ? 5.0 : 2.0;
+            b.x += drift * interval * static_cast<double>(k);
+            b.vx = drift + rng.uniform(-40.0, 40.0);
+            b.vy = rng.uniform(-40.0, 40.0);
+        }
+        frames.push_back(make_frame(side, now, k, interval));
+    }
+    const auto setup = make_setup(side, start, frames.size(), interval);
+    AnalysisOptions options;
+    options.medium_distance = 20.0;
+    options.medium_bin = 2.0;
+    options.medium_lag = 2;
+    MediumVelocityObservable lagged(setup, resolved(setup, options));
+    const auto r = run_on(lagged, frames, setup);
+    const TableResult& t = table(r, "medium_velocity");
+    // 0.2 mm over 0.2 s from coordinates near 60 mm: ~1e-14 mm of rounding, 1e-13 mm/s.
+    for (const auto& row : t.rows) {
+        if (row[column(t, "pairs")] == 0) continue;
+        EXPECT_NEAR(row[column(t, "v_along")], 2.0, 1e-9);
+        EXPECT_NEAR(row[column(t, "v_across")], 0.0, 1e-9);
+        EXPECT_NEAR(row[column(t, "speed")], 2.0, 1e-9);
+        EXPECT_NEAR(row[column(t, "relative_speed")], 3.0, 1e-9);
+    }
+    EXPECT_NEAR(scalar(r, "medium_speed_at_d").estimate.mean, 3.0, 1e-9);
+    // Six of the eight frames have a frame two before them.
+    EXPECT_EQ(scalar(r, "medium_lab_speed_at_d").estimate.samples, 6u);
+    // Instantaneously, |v| of a uniform ±40 mm/s jitter averages (40/3)(√2 + ln(1+√2)) ≈ 30.6
+    // mm/s: the drift is lost under it.
+    options.medium_lag = 0;
+    MediumVelocityObservable instantaneous(setup, resolved(setup, options));
+    const auto raw = run_on(instantaneous, frames, setup);
+    EXPECT_GT(scalar(raw, "medium_lab_speed_at_d").estimate.mean, 25.0);
+    // Too few frames for the lag: said, and nothing measured.
+    options.medium_lag = 8;
+    MediumVelocityObservable too_long(setup, resolved(setup, options));
+    const auto none = run_on(too_long, frames, setup);
+    EXPECT_TRUE(std::any_of(none.notes.begin(), none.notes.end(), [](const std::string& n) {
+        return n.find("needs more steady frames") != std::string::npos;
+    }));
+}
+
 TEST(MediumVelocity, CrossFlowIsResolvedAlongAndAcrossTheRodAxis) {
     // Rods at 0.6 rad moving at (5, 0) mm/s in a medium flowing at (0, 3) mm/s: along the axis
     // 3 sin 0.6, across 3 cos 0.6; relative to the rod (−5, 3), speed √34.

@@ -40,6 +40,7 @@ const std::vector<Field> kFields{
     &AnalysisOptions::medium_distance,
     &AnalysisOptions::medium_r_max,
     &AnalysisOptions::medium_bin,
+    &AnalysisOptions::medium_lag,
     &AnalysisOptions::field_cell,
     &AnalysisOptions::field_every,
     &AnalysisOptions::interface_level,
@@ -129,6 +130,13 @@ std::vector<KeySpec> make_keys() {
             .def(d.medium_bin)
             .range(closed(1e-3, 1e3))
             .doc("radial bin width of the medium-velocity profile"),
+        integer("medium_velocity", "lag")
+            .def(count(d.medium_lag))
+            .integers(0, 1'000'000)
+            .doc("0: the instantaneous velocities stored in the trajectory, which carry the "
+                 "in-plane agitation the plates give every body (tens of mm/s); k: each body's "
+                 "velocity from its displacement over k frames (k × output.interval), which "
+                 "averages that agitation out and leaves the flow"),
         real("fields", "cell")
             .unit("mm")
             .def_text("ℓ_p")

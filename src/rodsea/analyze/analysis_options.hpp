@@ -33,6 +33,7 @@ struct AnalysisOptions {
     double medium_distance = 100.0;  // mm, the paper's d
     double medium_r_max = kAuto;     // mm; auto: min(L/2, d)
     double medium_bin = 1.0;         // mm
+    int medium_lag = 0;              // frames; 0: the instantaneous velocities
     double field_cell = kAuto;       // mm; auto: ℓ_p
     int field_every = 1;             // maps of every k-th frame kept
     double interface_level = 0.5;    // polar share of the local area fraction

@@ -4,16 +4,46 @@
 
 namespace rodsea {
 
-MediumVelocityObservable::MediumVelocityObservable(const AnalysisSetup&,
+MediumVelocityObservable::MediumVelocityObservable(const AnalysisSetup& setup,
                                                    const AnalysisOptions& options)
     : parameters_{options.medium_distance, options.medium_r_max, options.medium_bin},
-      profile_(parameters_) {}
+      profile_(parameters_),
+      lag_(options.medium_lag),
+      frame_interval_(setup.frame_interval) {}
+
+std::vector<Vec3> MediumVelocityObservable::velocities(const PeriodicBox2D& box,
+                                                       std::span<const Vec3> now,
+                                                       const std::vector<Vec3>& then,
+                                                       double seconds) {
+    std::vector<Vec3> v(now.size());
+    for (std::size_t i = 0; i < now.size(); ++i) {
+        // A body moves far less than half the box between frames: the nearest image is its
+        // own path.
+        const Vec3 d = box.minimum_image(now[i] - then[i]);
+        v[i] = {d.x / seconds, d.y / seconds, 0.0};
+    }
+    return v;
+}
 
 void MediumVelocityObservable::compute(const FrameContext& context) {
     const GroupArrays& medium = context.group(BodyGroup::medium);
     const GroupArrays& polar = context.group(BodyGroup::polar);
-    const MediumAtDistance at_d =
-        profile_.compute(medium.grid, medium.velocity, polar.position, polar.angle, polar.velocity);
+    MediumAtDistance at_d;
+    if (lag_ == 0) {
+        at_d = profile_.compute(medium.grid, medium.velocity, polar.position, polar.angle,
+                                polar.velocity);
+    } else {
+        past_.push_back({context.frame().time, polar.position, medium.position});
+        if (past_.size() <= static_cast<std::size_t>(lag_)) return;
+        const Past& then = past_.front();
+        const double seconds = context.frame().time - then.time;
+        const PeriodicBox2D& box = context.frame().box;
+        at_d = profile_.compute(medium.grid, velocities(box, medium.position, then.medium, seconds),
+                                polar.position, polar.angle,
+                                velocities(box, polar.position, then.polar, seconds));
+        past_.pop_front();
+    }
+    ++measured_frames_;
     if (at_d.pairs > 0.0) {
         along_at_d_.push_back(at_d.along);
         speed_at_d_.push_back(at_d.speed);
@@ -25,7 +55,11 @@ ObservableResults MediumVelocityObservable::finish() {
     ObservableResults r;
     r.observable = name();
     const MediumVelocityParameters& p = parameters_;
-    r.parameters = {{"d", p.d, "mm"}, {"r_max", p.r_max, "mm"}, {"bin", p.bin, "mm"}};
+    r.parameters = {{"d", p.d, "mm"},
+                    {"r_max", p.r_max, "mm"},
+                    {"bin", p.bin, "mm"},
+                    {"lag", static_cast<double>(lag_), "frames"},
+                    {"lag_time", static_cast<double>(lag_) * frame_interval_, "s"}};
     TableResult t{
         "medium_velocity",
         "medium velocity around polar rods vs distance: along/across the rod's axis "
@@ -44,6 +78,15 @@ ObservableResults MediumVelocityObservable::finish() {
         t.rows.push_back(std::move(row));
     }
     r.tables.push_back(std::move(t));
+    if (lag_ > 0)
+        r.notes.push_back("velocities from each body's displacement over " + std::to_string(lag_) +
+                          " frames (" + format_number(static_cast<double>(lag_) * frame_interval_) +
+                          " s), not the instantaneous ones");
+    if (lag_ > 0 && measured_frames_ == 0) {
+        r.notes.push_back("medium_velocity.lag = " + std::to_string(lag_) +
+                          " frames needs more steady frames than that: nothing measured");
+        return r;
+    }
     if (along_at_d_.empty()) {
         r.notes.push_back("no medium body at d = " + format_number(p.d) + " mm from a polar rod " +
                           "(d must be below medium_velocity.r_max = " + format_number(p.r_max) +
