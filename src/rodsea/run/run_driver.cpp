@@ -45,9 +45,10 @@ void check_distinct(const std::vector<std::filesystem::path>& dirs) {
         std::filesystem::path key = std::filesystem::weakly_canonical(dir, ec);
         if (ec) key = dir.lexically_normal();
         if (!seen.insert(key).second)
-            throw InvalidParameter("run directory", dir.string(), "each run's own directory",
-                                   "two runs of one command would write the same directory "
-                                   "(configs with the same name? give each its own --out)");
+            throw InvalidParameter(
+                "run directory", dir.string(), "each run's own directory",
+                "two runs of one command would write the same directory "
+                "(configs with the same file name go to the same directory: rename one)");
     }
 }
 
