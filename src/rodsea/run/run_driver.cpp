@@ -545,8 +545,12 @@ int start_runs(const std::vector<NewRun>& runs, const RunOptions& options, std::
         const bool created = create_output_directory(dir);
         cleanups.push_back(std::make_unique<RemoveUnlessStarted>(dir, created));
         locks.push_back(std::make_unique<RunDirectoryLock>(dir));
-        if (options.overwrite) remove_run_files(dir);
     }
+    // Only once every directory is this process's: a run still going in one of them refuses
+    // the command before any old run is removed.
+    if (options.overwrite)
+        for (const std::filesystem::path& dir : dirs)
+            remove_run_files(dir);
     // Flushed at once: with stdout going to a file, the plan and the start would otherwise
     // appear only with the first progress line, minutes later.
     if (!options.quiet) {
