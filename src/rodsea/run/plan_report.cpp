@@ -88,14 +88,22 @@ void check_fits_in_memory(const RunPlan& plan) {
     check_fits_in_memory(std::vector<RunPlan>{plan});
 }
 
+namespace {
+
+// What runs stepped together need in all (memory, output), and how big they are.
+void add_to(ResourceEstimate& all, const ResourceEstimate& e) {
+    all.bodies += e.bodies;
+    all.spheres += e.spheres;
+    all.memory_bytes += e.memory_bytes;
+    all.trajectory_bytes += e.trajectory_bytes;
+}
+
+}  // namespace
+
 void check_fits_in_memory(const std::vector<RunPlan>& plans) {
     ResourceEstimate all;
-    for (const RunPlan& plan : plans) {
-        const ResourceEstimate e = estimate_resources(plan);
-        all.bodies += e.bodies;
-        all.spheres += e.spheres;
-        all.memory_bytes += e.memory_bytes;
-    }
+    for (const RunPlan& plan : plans)
+        add_to(all, estimate_resources(plan));
     const std::optional<std::uint64_t> available = available_memory_bytes();
     if (!available || all.memory_bytes <= *available) return;
     throw InvalidParameter(
@@ -128,10 +136,7 @@ void describe_ensemble(const std::vector<RunPlan>& plans,
             static_cast<unsigned long long>(plan.total_steps()),
             static_cast<unsigned long long>(e.frames), format_bytes(e.trajectory_bytes).c_str());
         out << line << dirs[r].string() << "\n";
-        all.bodies += e.bodies;
-        all.spheres += e.spheres;
-        all.memory_bytes += e.memory_bytes;
-        all.trajectory_bytes += e.trajectory_bytes;
+        add_to(all, e);
     }
     out << "total    " << all.bodies << " bodies, " << all.spheres << " spheres; output "
         << format_bytes(all.trajectory_bytes) << "\n";

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -166,6 +167,9 @@ class EnsembleLoop {
             std::this_thread::sleep_for(std::chrono::milliseconds(100));  // a first measure
             adapt_threads();
         }
+        // Read only when a frame, an end or a progress file needs it: it reads the clock.
+        const std::function<double()> rate = [this] { return progress_->steps_per_second(); };
+        const RunSession::BeforePrinting settle = [this] { settle_progress(); };
         std::uint64_t iteration = 0;
         while (!active_.empty()) {
             try {
@@ -173,16 +177,15 @@ class EnsembleLoop {
             } catch (const BlowUpError&) {
                 // Each system's blow-up is read below; the others stepped as usual.
             }
-            const double rate = progress_->steps_per_second();
             std::vector<std::size_t> ended;
             for (std::size_t m = 0; m < active_.size(); ++m) {
                 RunSession& s = *active_[m];
                 std::optional<int> code;
                 if (const std::optional<BlowUp>& b = ensemble_.blow_up(m)) {
                     settle_progress();
-                    code = s.stop_after_blow_up(*b, s.step_count(), rate, out_, err_);
+                    code = s.stop_after_blow_up(*b, s.step_count(), rate(), out_, err_);
                 } else {
-                    code = s.after_step(rate, out_, err_, style_, [this] { settle_progress(); });
+                    code = s.after_step(rate, out_, err_, style_, settle);
                 }
                 if (code) {
                     codes[order_[m]] = *code;
@@ -197,8 +200,7 @@ class EnsembleLoop {
             if ((++iteration & 63u) == 0) {
                 for (std::size_t m = 0; m < active_.size(); ++m) {
                     if (std::find(ended.begin(), ended.end(), m) != ended.end()) continue;
-                    if (const auto code =
-                            active_[m]->between_steps(rate, err_, [this] { settle_progress(); })) {
+                    if (const auto code = active_[m]->between_steps(rate(), err_, settle)) {
                         codes[order_[m]] = *code;
                         ended.push_back(m);
                     }

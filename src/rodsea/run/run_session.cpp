@@ -132,21 +132,21 @@ void RunSession::write_progress(const char* state, double steps_per_second) {
     last_progress_ = Clock::now();
 }
 
-std::optional<int> RunSession::after_step(double steps_per_second, std::ostream& out,
+std::optional<int> RunSession::after_step(const std::function<double()>& rate, std::ostream& out,
                                           std::ostream& err, ProgressStyle style,
                                           const BeforePrinting& before_printing) {
     recorder_.accumulate(ensemble_->last_step(system_));
     const std::uint64_t step = step_count(), total = plan_.total_steps();
     const bool on_grid = step % plan_.steps_per_output() == 0;
-    if (on_grid || step == total) {
-        if (const std::optional<BlowUp> b = invalid_state()) {
-            before_printing();
-            return stop_after_blow_up(*b, step, steps_per_second, out, err);
-        }
+    if (!on_grid && step != total) return std::nullopt;  // most steps: nothing more to do
+    const double steps_per_second = rate();
+    if (const std::optional<BlowUp> b = invalid_state()) {
+        before_printing();
+        return stop_after_blow_up(*b, step, steps_per_second, out, err);
     }
     try {
         if (step == total && !on_grid) open_interval_at_end_ = recorder_.interval_state();
-        if (on_grid || step == total) write_frame(steps_per_second);
+        write_frame(steps_per_second);
     } catch (const FileError& e) {
         before_printing();
         return stop_after_write_failure(e, steps_per_second, out, err);

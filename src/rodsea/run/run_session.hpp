@@ -64,8 +64,10 @@ class RunSession {
     // After each step of the ensemble (not after a blow-up of this system): records the step,
     // writes the frame due, and judges the end (the duration, a steady window, a state the
     // engine should never produce, a failed write). Returns the run's exit code once it ended.
-    std::optional<int> after_step(double steps_per_second, std::ostream& out, std::ostream& err,
-                                  ProgressStyle style, const BeforePrinting& before_printing);
+    // `rate`, this session's steps/s, is read only for a frame or an end (it reads the clock).
+    std::optional<int> after_step(const std::function<double()>& rate, std::ostream& out,
+                                  std::ostream& err, ProgressStyle style,
+                                  const BeforePrinting& before_printing);
     // Every few seconds: progress.txt, and a checkpoint when output.checkpoint_interval has
     // passed. Returns kExitIoError once a checkpoint cannot be written.
     std::optional<int> between_steps(double steps_per_second, std::ostream& err,
