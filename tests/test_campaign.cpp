@@ -10,7 +10,9 @@
 
 #include "child_process.hpp"
 #include "local_slurm_cluster.hpp"
+#include "rodsea/io/checkpoint.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
+#include "run_comparison.hpp"
 #include "scratch_dir.hpp"
 
 namespace rodsea {
@@ -424,10 +426,124 @@ TEST(Campaign, RunsTakeTheirThreadsFromTheCommandLineAndReportProgressInAPlainFi
     const std::string progress = read_file(dir / "progress.txt");
     EXPECT_NE(progress.find("state = done"), std::string::npos) << progress;
     EXPECT_NE(progress.find("step = 8000\ntotal_steps = 8000\n"), std::string::npos) << progress;
-    const ChildResult resumed =
-        run_rodsea({"run", "--resume", dir.string(), "--threads", "1"}, scratch.path());
-    EXPECT_EQ(resumed.exit_code, 2);
-    EXPECT_NE(resumed.err.find("keeps its threads"), std::string::npos) << resumed.err;
+    // Continued on another thread count for a session, the trajectory is the one a single
+    // thread gives from the start (threads change the speed only), and the stored config still
+    // says how the run started.
+    const ChildResult resumed = run_rodsea(
+        {"run", "--resume", dir.string(), "--threads", "1", "--duration", "0.015", "--quiet"},
+        scratch.path());
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+    EXPECT_NE(read_file(dir / "config.toml").find("threads = 2"), std::string::npos);
+    const fs::path one_thread = scratch.path() / "one-thread";
+    ASSERT_EQ(run_rodsea({"run", config.string(), "--out", one_thread.string(), "--threads", "1",
+                          "--quiet"},
+                         scratch.path())
+                  .exit_code,
+              0);
+    ASSERT_EQ(run_rodsea({"run", "--resume", one_thread.string(), "--duration", "0.015", "--quiet"},
+                         scratch.path())
+                  .exit_code,
+              0);
+    const Checkpoint a = read_checkpoint(dir / "checkpoint.h5");
+    const Checkpoint b = read_checkpoint(one_thread / "checkpoint.h5");
+    EXPECT_EQ(a.step, 12000u);
+    EXPECT_EQ(a.step, b.step);
+    EXPECT_TRUE(a.bodies.position == b.bodies.position && a.bodies.velocity == b.bodies.velocity &&
+                a.bodies.spin == b.bodies.spin && a.bodies.orientation == b.bodies.orientation);
+}
+
+// Two points of 0.3 s each (about 5 s of wall time together here), then a third.
+std::string ensemble_campaign(const std::string& values) {
+    return R"([campaign]
+name = "together"
+
+)" + kTinyRods +
+           R"([base.time]
+duration = 0.3
+[base.output]
+interval = 0.01
+
+[[axis]]
+key = "species.medium.area_fraction"
+values = )" +
+           values + "\n";
+}
+
+// `campaign run --ensemble` steps a campaign's runs as one ensemble in one process. Interrupted,
+// then continued with a point added (two resumed runs and a new one in one ensemble), every run
+// is bit for bit the run the local executor makes of it, one process per run.
+TEST(Campaign, AnEnsembleRunnerMakesTheRunsTheLocalExecutorMakes) {
+    const ScratchDir scratch("campaign-ensemble");
+    const fs::path file = scratch.path() / "together.toml";
+    std::ofstream(file) << ensemble_campaign("[0.1, 0.3]");
+    const fs::path dir = scratch.path() / "together";
+    const fs::path runs = dir / "runs";
+    const std::vector<std::string> points{"medium.area_fraction=0.1", "medium.area_fraction=0.3"};
+
+    // Ctrl-C once both runs have stepped past their first frames.
+    ChildOptions interrupt;
+    interrupt.interrupt_when = [&] {
+        for (const std::string& p : points) {
+            const std::string text = read_file(runs / p / "seed1" / "progress.txt");
+            if (text.find("state = running") == std::string::npos ||
+                text.find("\nstep = 0\n") != std::string::npos)
+                return false;
+        }
+        return true;
+    };
+    const ChildResult stopped =
+        run_rodsea({"campaign", "run", file.string(), "--out", dir.string(), "--ensemble"},
+                   scratch.path(), interrupt);
+    ASSERT_TRUE(stopped.interrupted) << stopped.out << stopped.err;
+    ASSERT_EQ(stopped.exit_code, 130) << stopped.out << stopped.err;
+    EXPECT_NE(stopped.out.find("as one ensemble on each run's run.backend, 1 thread"),
+              std::string::npos)
+        << stopped.out;
+    for (const std::string& p : points) {
+        EXPECT_NE(read_file(runs / p / "seed1" / "progress.txt").find("state = stopped"),
+                  std::string::npos)
+            << p;
+        // The run's log has its session and its own message, which names it.
+        const std::string log = read_file(runs / p / "seed1.log");
+        EXPECT_NE(log.find("started with 1 other runs"), std::string::npos) << log;
+        EXPECT_NE(log.find("rodsea: " + (runs / p / "seed1").string() + ": interrupted (SIGINT)"),
+                  std::string::npos)
+            << log;
+        EXPECT_EQ(count_of(log, "rodsea: "), 1) << log;
+        EXPECT_NE(log.find("=== exit 130"), std::string::npos) << log;
+    }
+
+    std::ofstream(file) << ensemble_campaign("[0.1, 0.3, 0.2]");
+    const ChildResult continued = run_rodsea(
+        {"campaign", "run", file.string(), "--out", dir.string(), "--ensemble"}, scratch.path());
+    ASSERT_EQ(continued.exit_code, 0) << continued.out << continued.err;
+    EXPECT_EQ(count_of(continued.out, "campaign: resume "), 2) << continued.out;
+    EXPECT_EQ(count_of(continued.out, "campaign: start "), 1) << continued.out;
+    EXPECT_NE(continued.out.find("the ensemble of 3 runs"), std::string::npos) << continued.out;
+    EXPECT_NE(continued.out.find("3/3 runs done"), std::string::npos) << continued.out;
+
+    const fs::path local = scratch.path() / "local";
+    const ChildResult alone = run_rodsea(
+        {"campaign", "run", file.string(), "--out", local.string(), "--quiet"}, scratch.path());
+    ASSERT_EQ(alone.exit_code, 0) << alone.out << alone.err;
+    for (const char* p :
+         {"medium.area_fraction=0.1", "medium.area_fraction=0.3", "medium.area_fraction=0.2"})
+        expect_same_run(runs / p / "seed1", local / "runs" / p / "seed1");
+
+    // On a cluster each array task steps its runs as one ensemble on all its CPUs.
+    const ChildResult dry = run_rodsea(
+        {"campaign", "submit", file.string(), "--out", (scratch.path() / "cluster").string(),
+         "--ensemble", "--pack", "3", "--cpus-per-task", "4", "--backend", "cpu", "--dry-run"},
+        scratch.path());
+    ASSERT_EQ(dry.exit_code, 0) << dry.out << dry.err;
+    EXPECT_NE(dry.out.find("as one ensemble on 4 threads"), std::string::npos) << dry.out;
+    const std::string script = read_file(scratch.path() / "cluster" / "slurm" / "array-1.sh");
+    EXPECT_NE(script.find("'--ensemble' '--threads' '4' '--backend' 'cpu'"), std::string::npos)
+        << script;
+    EXPECT_EQ(script.find("--jobs"), std::string::npos) << script;
+    const std::string follow_up = read_file(scratch.path() / "cluster" / "slurm" / "resubmit-1.sh");
+    EXPECT_NE(follow_up.find("--ensemble"), std::string::npos) << follow_up;
+    EXPECT_NE(follow_up.find("'--backend' 'cpu'"), std::string::npos) << follow_up;
 }
 
 struct BadRun {
@@ -459,6 +575,11 @@ TEST(Campaign, BadOptionsAndChangedCampaignsAreRefusedBeforeAnyRunStarts) {
         {{"campaign", "run", f, "--out", dir, "--task", "0"}, "--task together with --tasks"},
         {{"campaign", "status", f, "--out", dir, "--jobs", "2"}, "an option of campaign status"},
         {{"campaign", "run", f, "--out", dir, "--partition", "x"}, "an option of campaign run"},
+        {{"campaign", "run", f, "--out", dir, "--ensemble", "--jobs", "2"},
+         "no --jobs with --ensemble"},
+        {{"campaign", "submit", f, "--out", dir, "--dry-run", "--ensemble", "--jobs", "2"},
+         "no --jobs with --ensemble"},
+        {{"campaign", "run", f, "--out", dir, "--backend", "tpu"}, "--backend"},
     };
     // Without SLURM's commands on PATH, submit is refused (a dry run is not).
     {

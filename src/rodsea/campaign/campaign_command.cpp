@@ -10,11 +10,13 @@
 #include "rodsea/campaign/campaign_collect.hpp"
 #include "rodsea/campaign/campaign_cost.hpp"
 #include "rodsea/campaign/campaign_figures.hpp"
+#include "rodsea/campaign/ensemble_executor.hpp"
 #include "rodsea/campaign/local_executor.hpp"
 #include "rodsea/campaign/slurm_executor.hpp"
 #include "rodsea/cli/exit_codes.hpp"
 #include "rodsea/cli/progress.hpp"
 #include "rodsea/config/did_you_mean.hpp"
+#include "rodsea/engine/backend_factory.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/number_text.hpp"
 
@@ -26,7 +28,7 @@ const CommandSpec& campaign_command_spec() {
     static const CommandSpec spec{
         "campaign",
         "plan|run|status|collect|submit CAMPAIGN [--out DIR] [--scale F] [--duration T] "
-        "[--jobs N] [--threads T] [submit options]",
+        "[--jobs N | --ensemble] [--threads T] [--backend cpu|gpu] [submit options]",
         "a figure's grid of runs: plan its cost, run it, follow it, collect its table",
         "CAMPAIGN is a TOML file (docs/campaigns.md: a base config, axes over config keys, "
         "replicates, the analysis): every point is built and checked, packing included, before "
@@ -36,7 +38,9 @@ const CommandSpec& campaign_command_spec() {
         "  run      runs every run not yet done, --jobs at a time on --threads each, in DIR "
         "(default out/<campaign name>); run it again to continue: done runs are skipped, "
         "interrupted ones resume from their checkpoints, failed ones are retried once; Ctrl-C "
-        "stops every run with a checkpoint\n"
+        "stops every run with a checkpoint. With --ensemble the runs are stepped together in "
+        "this process as one ensemble on --threads (on a GPU, in the same kernels), each "
+        "writing its own directory exactly as alone\n"
         "  status   each run: pending, running, interrupted, done or failed, its progress and "
         "ETA (readable while a runner works)\n"
         "  collect  analyses every finished run ([analysis] of the campaign) and writes "
@@ -52,7 +56,15 @@ const CommandSpec& campaign_command_spec() {
           "run a figure small first; fixed for a campaign directory"},
          {"--duration", "T", "every run's time.duration, s; fixed for a campaign directory"},
          {"--jobs", "N", "run, submit: runs at a time (in each array task) (default 1)"},
-         {"--threads", "T", "run: threads per run (default 1); plan: for the wall-time estimate"},
+         {"--threads", "T",
+          "run: threads per run, or of the ensemble (default 1); plan: for the wall-time "
+          "estimate"},
+         {"--ensemble", "",
+          "run, submit: step the runs (of each array task) together as one ensemble in one "
+          "process instead of --jobs processes: a GPU's way to run many small systems"},
+         {"--backend", "cpu|gpu",
+          "run, submit: step every run on the host's cores or a CUDA device, replacing "
+          "run.backend (for a run that started on the other, from here on)"},
          {"--partition", "P", "submit: the SLURM partition (default: the cluster's)"},
          {"--account", "A", "submit: the SLURM account to charge (default: yours)"},
          {"--time", "T",
@@ -129,7 +141,12 @@ int plan(const Arguments& a, std::ostream& out) {
     return kExitOk;
 }
 
-int run(const Arguments& a, std::ostream& out) {
+std::optional<BackendKind> backend_option(const Arguments& a) {
+    if (const auto b = a.value("--backend")) return backend_flag("--backend", *b);
+    return std::nullopt;
+}
+
+int run(const Arguments& a, std::ostream& out, std::ostream& err) {
     const Loaded l = load(a);
     LocalExecutorOptions o;
     o.jobs = static_cast<int>(parse_count("--jobs", a.value("--jobs").value_or("1"), 1, 4096));
@@ -137,6 +154,11 @@ int run(const Arguments& a, std::ostream& out) {
         static_cast<int>(parse_count("--threads", a.value("--threads").value_or("1"), 1, 1024));
     o.retry_failed = a.has("--retry-failed");
     o.quiet = a.has("--quiet");
+    o.backend = backend_option(a);
+    if (a.has("--ensemble") && a.value("--jobs"))
+        throw InvalidParameter("--jobs", *a.value("--jobs"), "no --jobs with --ensemble",
+                               "the ensemble is one process; give it --threads");
+    if (o.backend) require_usable_backend(*o.backend, "--backend");
     if (const auto tasks = a.value("--tasks")) {
         const char* env = std::getenv("SLURM_ARRAY_TASK_ID");
         const std::optional<std::string> task = a.value("--task");
@@ -152,6 +174,14 @@ int run(const Arguments& a, std::ostream& out) {
     for (const CampaignRun& r : l.grid.runs)
         plans.push_back(run_plan(l.campaign, l.grid, r, l.scaling, calibration_table_lookup()));
     prepare_campaign_dir(l.paths, l.campaign, l.scaling, l.grid, plans);
+    if (a.has("--ensemble")) {
+        const EnsembleExecutorOptions e{.threads = o.threads,
+                                        .backend = o.backend,
+                                        .retry_failed = o.retry_failed,
+                                        .quiet = o.quiet,
+                                        .only = o.only};
+        return run_campaign_as_ensemble(l.paths, l.grid, e, out, err);
+    }
     return run_campaign_locally(l.paths, l.grid, o, out);
 }
 
@@ -180,6 +210,12 @@ int submit(const Arguments& a, std::ostream& out) {
     o.pack = count("--pack", 1, 1, 10'000);
     o.jobs = count("--jobs", 1, 1, 4096);
     o.resubmit = count("--resubmit", 3, 0, 100);
+    o.ensemble = a.has("--ensemble");
+    o.backend = backend_option(a);
+    if (o.ensemble && a.value("--jobs"))
+        throw InvalidParameter("--jobs", *a.value("--jobs"), "no --jobs with --ensemble",
+                               "each array task steps its runs as one ensemble on "
+                               "--cpus-per-task threads");
     if (o.jobs > o.pack)
         throw InvalidParameter(
             "--jobs", std::to_string(o.jobs),
@@ -271,12 +307,15 @@ int collect(const Arguments& a, std::ostream& out) {
 void check_options_of(const std::string& sub, const Arguments& a) {
     static const std::vector<std::pair<std::string, std::vector<std::string>>> options{
         {"plan", {"--jobs", "--threads", "--measure-seconds", "--no-measure"}},
-        {"run", {"--jobs", "--threads", "--retry-failed", "--quiet", "--tasks", "--task"}},
+        {"run",
+         {"--jobs", "--threads", "--retry-failed", "--quiet", "--tasks", "--task", "--ensemble",
+          "--backend"}},
         {"status", {}},
         {"collect", {"--quiet", "--reanalyse"}},
         {"submit",
          {"--jobs", "--partition", "--account", "--time", "--signal-seconds", "--cpus-per-task",
-          "--gpus-per-task", "--throttle", "--pack", "--resubmit", "--retry-failed", "--dry-run"}}};
+          "--gpus-per-task", "--throttle", "--pack", "--resubmit", "--retry-failed", "--dry-run",
+          "--ensemble", "--backend"}}};
     const auto own =
         std::find_if(options.begin(), options.end(), [&](const auto& o) { return o.first == sub; });
     if (own == options.end()) return;  // an unknown subcommand is named below
@@ -297,7 +336,7 @@ void check_options_of(const std::string& sub, const Arguments& a) {
 
 }  // namespace
 
-int campaign_command(const std::vector<std::string>& args, std::ostream& out, std::ostream&) {
+int campaign_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
     const std::optional<Arguments> parsed = arguments_or_help(args, campaign_command_spec(), out);
     if (!parsed) return kExitOk;
     const Arguments& a = *parsed;
@@ -309,7 +348,7 @@ int campaign_command(const std::vector<std::string>& args, std::ostream& out, st
     const std::string sub = a.positional.empty() ? "" : a.positional[0];
     check_options_of(sub, a);
     if (sub == "plan") return plan(a, out);
-    if (sub == "run") return run(a, out);
+    if (sub == "run") return run(a, out, err);
     if (sub == "status") return status(a, out);
     if (sub == "collect") return collect(a, out);
     if (sub == "submit") return submit(a, out);

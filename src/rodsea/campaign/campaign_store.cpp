@@ -187,4 +187,24 @@ void record_failure(const CampaignPaths& paths, const CampaignRun& run, int exit
     if (!out) throw FileError(paths.failures(run).string(), "cannot be written");
 }
 
+CampaignWork campaign_work(const CampaignPaths& paths, const CampaignGrid& grid,
+                           const std::optional<std::vector<std::size_t>>& only, int max_failures) {
+    CampaignWork work;
+    if (only)
+        work.mine = *only;
+    else
+        for (std::size_t i = 0; i < grid.runs.size(); ++i)
+            work.mine.push_back(i);
+    for (const std::size_t i : work.mine) {
+        const RunState state = run_status(paths, grid.runs[i], max_failures).state;
+        if (state == RunState::done)
+            ++work.done;
+        else if (state == RunState::failed)
+            work.failed.push_back(i);
+        else
+            work.to_run.push_back(i);
+    }
+    return work;
+}
+
 }  // namespace rodsea

@@ -77,6 +77,15 @@ class RunClaim {
     int fd_ = -1;
 };
 
+// What a runner finds to do among `only` (indices into grid.runs; none: every run): the runs
+// done, those failed `max_failures` times, and the others, to run, in grid order.
+struct CampaignWork {
+    std::vector<std::size_t> mine, to_run, failed;
+    std::size_t done = 0;
+};
+CampaignWork campaign_work(const CampaignPaths& paths, const CampaignGrid& grid,
+                           const std::optional<std::vector<std::size_t>>& only, int max_failures);
+
 // Appends a failure record (exit code and the message's last lines).
 void record_failure(const CampaignPaths& paths, const CampaignRun& run, int exit_code,
                     const std::string& message);

@@ -44,14 +44,21 @@ std::vector<std::string> run_words(const CampaignPaths& paths, const CampaignRun
                                    const LocalExecutorOptions& o, std::string& what) {
     const fs::path dir = paths.run_dir(run);
     std::error_code ec;
+    std::vector<std::string> words;
     if (fs::exists(dir / kCheckpointFile, ec)) {
         what = "resume";
-        return {"run", "--resume", dir.string(), "--quiet"};
+        // On this command's --threads, whatever the run started on: threads change the speed,
+        // never the trajectory.
+        words = {"run",    "--resume", dir.string(), "--threads", std::to_string(o.threads),
+                 "--quiet"};
+    } else {
+        // Killed before its first checkpoint (or never started): from the start.
+        what = fs::exists(dir, ec) ? "restart (no checkpoint yet)" : "start";
+        words = {"run",       paths.config(run).string(), "--out",  dir.string(), "--overwrite",
+                 "--threads", std::to_string(o.threads),  "--quiet"};
     }
-    // Killed before its first checkpoint (or never started): from the start.
-    what = fs::exists(dir, ec) ? "restart (no checkpoint yet)" : "start";
-    return {"run",       paths.config(run).string(), "--out",  dir.string(), "--overwrite",
-            "--threads", std::to_string(o.threads),  "--quiet"};
+    if (o.backend) words.insert(words.end(), {"--backend", to_string(*o.backend)});
+    return words;
 }
 
 pid_t spawn(const fs::path& executable, const std::vector<std::string>& words,
@@ -103,27 +110,11 @@ int run_campaign_locally(const CampaignPaths& paths, const CampaignGrid& grid,
     const fs::path executable =
         o.executable.empty() ? fs::read_symlink("/proc/self/exe") : o.executable;
     const int max_failures = o.retry_failed ? 4 : 2;
-    std::vector<std::size_t> mine;
-    if (o.only)
-        mine = *o.only;
-    else
-        for (std::size_t i = 0; i < grid.runs.size(); ++i)
-            mine.push_back(i);
-    std::deque<std::size_t> queue;
-    std::size_t done = 0, elsewhere = 0;
-    for (const std::size_t i : mine) {
-        const RunStatus s = run_status(paths, grid.runs[i], max_failures);
-        if (s.state == RunState::done)
-            ++done;
-        else if (s.state == RunState::failed)
-            continue;
-        else
-            queue.push_back(i);
-    }
-    std::vector<std::size_t> failed;
-    for (const std::size_t i : mine)
-        if (run_status(paths, grid.runs[i], max_failures).state == RunState::failed)
-            failed.push_back(i);
+    CampaignWork work = campaign_work(paths, grid, o.only, max_failures);
+    const std::vector<std::size_t>& mine = work.mine;
+    std::deque<std::size_t> queue(work.to_run.begin(), work.to_run.end());
+    std::size_t done = work.done, elsewhere = 0;
+    std::vector<std::size_t>& failed = work.failed;
     if (!o.quiet)
         out << "campaign " << paths.dir.string() << ": " << mine.size() << " runs, " << done
             << " done, " << queue.size() << " to run, " << failed.size() << " failed; " << o.jobs

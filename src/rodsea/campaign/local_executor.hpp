@@ -11,13 +11,15 @@
 #include <vector>
 
 #include "rodsea/campaign/campaign_store.hpp"
+#include "rodsea/engine/step_backend.hpp"
 
 namespace rodsea {
 
 struct LocalExecutorOptions {
     int jobs = 1;
-    int threads = 1;            // of each run
-    bool retry_failed = false;  // give runs that failed twice two more tries
+    int threads = 1;                     // of each run
+    std::optional<BackendKind> backend;  // every run's (--backend); none: its run.backend
+    bool retry_failed = false;           // give runs that failed twice two more tries
     bool quiet = false;
     std::optional<std::vector<std::size_t>> only;  // these runs (indices into grid.runs); none: all
     std::filesystem::path executable;  // rodsea itself; empty: this process's executable

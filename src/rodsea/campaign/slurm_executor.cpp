@@ -122,6 +122,14 @@ std::vector<std::string> campaign_words(const CampaignPaths& paths, const SlurmO
     return w;
 }
 
+// The options every task's runner and every follow-up submission pass on.
+std::vector<std::string> executor_words(const SlurmOptions& o) {
+    std::vector<std::string> w;
+    if (o.retry_failed) w.push_back("--retry-failed");
+    if (o.backend) w.insert(w.end(), {"--backend", to_string(*o.backend)});
+    return w;
+}
+
 std::string command_line(const fs::path& executable, const std::vector<std::string>& words) {
     std::string line = "exec " + shell_word(executable.string());
     for (const std::string& w : words)
@@ -333,17 +341,21 @@ int submit_campaign_to_slurm(const CampaignPaths& paths, const Campaign& campaig
     for (char& ch : name)  // a job name is one word of letters, digits, '.', '_', '-'
         if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '.' && ch != '_' && ch != '-')
             ch = '_';
-    const int threads = std::max(1, o.cpus_per_task / o.jobs);
+    const int threads = o.ensemble ? o.cpus_per_task : std::max(1, o.cpus_per_task / o.jobs);
     std::string array = "0-" + std::to_string(tasks - 1);
     if (o.throttle > 0) array += "%" + std::to_string(o.throttle);
     std::vector<std::string> task_words{"campaign", "run"};
     for (const std::string& w : campaign_words(paths, o))
         task_words.push_back(w);
-    task_words.insert(task_words.end(),
-                      {"--tasks", fs::absolute(tasks_file(paths, k)).string(), "--task",
-                       "\"$SLURM_ARRAY_TASK_ID\"", "--jobs", std::to_string(o.jobs), "--threads",
-                       std::to_string(threads)});
-    if (o.retry_failed) task_words.push_back("--retry-failed");
+    task_words.insert(task_words.end(), {"--tasks", fs::absolute(tasks_file(paths, k)).string(),
+                                         "--task", "\"$SLURM_ARRAY_TASK_ID\""});
+    if (o.ensemble)
+        task_words.push_back("--ensemble");
+    else
+        task_words.insert(task_words.end(), {"--jobs", std::to_string(o.jobs)});
+    task_words.insert(task_words.end(), {"--threads", std::to_string(threads)});
+    for (const std::string& w : executor_words(o))
+        task_words.push_back(w);
     const fs::path logs = fs::absolute(slurm_dir(paths) / "logs");
     std::string script = "#!/bin/bash\n# rodsea campaign " + name.substr(7) + ", submission " +
                          std::to_string(k) + ": " + std::to_string(to_submit.size()) + " runs in " +
@@ -369,9 +381,9 @@ int submit_campaign_to_slurm(const CampaignPaths& paths, const Campaign& campaig
     };
     out << "submit: " << counted(to_submit.size(), "run") << " in " << counted(tasks, "array task")
         << " (" << counted(std::min<std::size_t>(o.pack, to_submit.size()), "run") << " each, "
-        << o.jobs << " at a time on " << counted(static_cast<std::size_t>(threads), "thread")
-        << "); wall time " << hms(o.time_seconds) << ", "
-        << counted(static_cast<std::size_t>(o.cpus_per_task), "CPU")
+        << (o.ensemble ? std::string("as one ensemble") : std::to_string(o.jobs) + " at a time")
+        << " on " << counted(static_cast<std::size_t>(threads), "thread") << "); wall time "
+        << hms(o.time_seconds) << ", " << counted(static_cast<std::size_t>(o.cpus_per_task), "CPU")
         << (o.gpus_per_task ? ", " + counted(static_cast<std::size_t>(o.gpus_per_task), "GPU") : "")
         << " per task; SIGTERM " << signal << " s before the end\n  script "
         << array_script.string() << std::endl;
@@ -381,15 +393,19 @@ int submit_campaign_to_slurm(const CampaignPaths& paths, const Campaign& campaig
         std::vector<std::string> words{"campaign", "submit"};
         for (const std::string& w : campaign_words(paths, o))
             words.push_back(w);
-        words.insert(
-            words.end(),
-            {"--time", o.time, "--signal-seconds", std::to_string(signal), "--cpus-per-task",
-             std::to_string(o.cpus_per_task), "--gpus-per-task", std::to_string(o.gpus_per_task),
-             "--throttle", std::to_string(o.throttle), "--pack", std::to_string(o.pack), "--jobs",
-             std::to_string(o.jobs), "--resubmit", std::to_string(o.resubmit - 1)});
+        words.insert(words.end(), {"--time", o.time, "--signal-seconds", std::to_string(signal),
+                                   "--cpus-per-task", std::to_string(o.cpus_per_task),
+                                   "--gpus-per-task", std::to_string(o.gpus_per_task), "--throttle",
+                                   std::to_string(o.throttle), "--pack", std::to_string(o.pack),
+                                   "--resubmit", std::to_string(o.resubmit - 1)});
+        if (o.ensemble)
+            words.push_back("--ensemble");
+        else
+            words.insert(words.end(), {"--jobs", std::to_string(o.jobs)});
         if (!o.partition.empty()) words.insert(words.end(), {"--partition", o.partition});
         if (!o.account.empty()) words.insert(words.end(), {"--account", o.account});
-        if (o.retry_failed) words.push_back("--retry-failed");
+        for (const std::string& w : executor_words(o))
+            words.push_back(w);
         std::string text = "#!/bin/bash\n# rodsea campaign " + name.substr(7) +
                            ": submits what submission " + std::to_string(k) +
                            " left unfinished, once its array has ended (" +

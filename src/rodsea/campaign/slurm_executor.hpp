@@ -1,11 +1,11 @@
 #pragma once
 // The SLURM executor: a campaign's unfinished runs as one sbatch job array. Each array task runs
 // `rodsea campaign run --tasks FILE --task $SLURM_ARRAY_TASK_ID` on its share of runs (one run,
-// or `pack` runs), so everything the local executor guarantees holds on the cluster too: locks
-// across hosts, resume from checkpoints, a failure retried once. SLURM sends SIGTERM
-// `signal_seconds` before the wall time (--signal=B:TERM@S): every run writes its checkpoint
-// and stops. A follow-up job, started when the array has ended (--dependency=afterany),
-// submits what is left, `resubmit` times at most.
+// or `pack` runs, `jobs` at a time or as one ensemble), so everything the local executor guarantees
+// holds on the cluster too: locks across hosts, resume from checkpoints, a failure retried once.
+// SLURM sends SIGTERM `signal_seconds` before the wall time (--signal=B:TERM@S): every run writes
+// its checkpoint and stops. A follow-up job, started when the array has ended
+// (--dependency=afterany), submits what is left, `resubmit` times at most.
 //
 // Files, under DIR/slurm/: array-<k>.sh and tasks-<k>.txt (submission k: the script and its
 // tasks' runs, one line per task, run ids separated by tabs), resubmit-<k>.sh, jobs.txt (one
@@ -16,6 +16,7 @@
 #include <string>
 
 #include "rodsea/campaign/campaign_store.hpp"
+#include "rodsea/engine/step_backend.hpp"
 
 namespace rodsea {
 
@@ -29,10 +30,12 @@ struct SlurmOptions {
                                          // min(300 s, half the wall time)
     int cpus_per_task = 1;
     int gpus_per_task = 0;
-    int throttle = 0;  // array tasks at a time (0: no limit)
-    int pack = 1;      // runs per array task
-    int jobs = 1;      // runs at a time inside a task, each on cpus_per_task / jobs threads
-    int resubmit = 3;  // follow-up submissions left
+    int throttle = 0;       // array tasks at a time (0: no limit)
+    int pack = 1;           // runs per array task
+    int jobs = 1;           // runs at a time inside a task, each on cpus_per_task / jobs threads
+    bool ensemble = false;  // a task steps its runs as one ensemble on cpus_per_task threads
+    std::optional<BackendKind> backend;  // every run's (--backend); none: its run.backend
+    int resubmit = 3;                    // follow-up submissions left
     bool retry_failed = false;
     bool dry_run = false;
     std::filesystem::path executable;  // rodsea itself; empty: this process's executable

@@ -7,6 +7,10 @@ namespace rodsea {
 namespace {
 
 volatile std::sig_atomic_t received = 0;
+// Guards nest (a campaign runner steps its runs through `rodsea run`'s own code): only the
+// outermost installs and restores the handlers, so that a signal that came between an inner
+// guard's end and the next one's start is not forgotten.
+int depth = 0;
 struct sigaction previous_int, previous_term, previous_hup, previous_xfsz;
 
 extern "C" void on_stop_signal(int signal) {
@@ -16,6 +20,7 @@ extern "C" void on_stop_signal(int signal) {
 }  // namespace
 
 StopSignalGuard::StopSignalGuard() {
+    if (depth++ > 0) return;
     received = 0;
     struct sigaction action {};
     action.sa_handler = on_stop_signal;
@@ -32,6 +37,7 @@ StopSignalGuard::StopSignalGuard() {
 }
 
 StopSignalGuard::~StopSignalGuard() {
+    if (--depth > 0) return;
     sigaction(SIGINT, &previous_int, nullptr);
     sigaction(SIGTERM, &previous_term, nullptr);
     sigaction(SIGHUP, &previous_hup, nullptr);

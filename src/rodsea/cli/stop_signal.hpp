@@ -4,7 +4,8 @@
 // shows up as a failed write, handled like a full disk, instead of killing the process.
 namespace rodsea {
 
-// Installs the handlers for its lifetime and restores the previous ones afterwards.
+// Installs the handlers for its lifetime and restores the previous ones afterwards. Guards nest:
+// an inner one (a run stepped by a campaign runner) leaves the outer one's handlers and flag.
 class StopSignalGuard {
   public:
     StopSignalGuard();
@@ -13,7 +14,7 @@ class StopSignalGuard {
     StopSignalGuard& operator=(const StopSignalGuard&) = delete;
 };
 
-// The signal number received since the guard was installed, or 0.
+// The signal number received since the outermost guard was installed, or 0.
 int stop_signal_received();
 
 // Thrown by commands that stop between units of work (movie frames, export frames) when a stop

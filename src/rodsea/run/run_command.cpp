@@ -20,8 +20,8 @@ const CommandSpec& run_command_spec() {
     static const CommandSpec spec{
         "run",
         "CONFIG... [--out DIR] [--overwrite] [--threads N] [--backend cpu|gpu] [--quiet]  |  "
-        "rodsea run --resume DIR... [--duration T] [--steady-samples N] [--backend cpu|gpu] "
-        "[--quiet]",
+        "rodsea run --resume DIR... [--duration T] [--steady-samples N] [--threads N] "
+        "[--backend cpu|gpu] [--quiet]",
         "start a simulation, or continue one from its checkpoint",
         "Reads CONFIG (TOML; every key in docs/config.md), checks all of it and the packing, "
         "prints the plan, builds the initial state (every body flat on the base, no overlaps) "
@@ -47,8 +47,8 @@ const CommandSpec& run_command_spec() {
           "parent of each run's, and those are refused)"},
          {"--overwrite", "", "replace the run files in an existing DIR"},
          {"--threads", "N",
-          "run on N threads, replacing run.threads (the stored config says N; a resumed run "
-          "keeps the threads it started with)"},
+          "run on N threads, replacing run.threads (the stored config says N); with --resume "
+          "for this session only (threads change the speed, never the trajectory)"},
          {"--backend", "cpu|gpu",
           "step on the host's cores or a CUDA device, replacing run.backend; with --resume for "
           "this session only (a run started on the GPU goes on on the CPU, and the other way)"},
@@ -99,14 +99,11 @@ int run_command(const std::vector<std::string>& words, std::ostream& out, std::o
     RunOptions options;
     options.quiet = a.has("--quiet");
     options.overwrite = a.has("--overwrite");
-    if (const auto n = a.value("--threads"); n && a.value("--resume"))
-        throw InvalidParameter("--threads", *n, "only for a new run",
-                               "a resumed run keeps its threads, so that it continues bit for bit");
     if (const auto dir = a.value("--resume")) {
         if (a.value("--out") || options.overwrite)
             throw InvalidParameter("--resume", *dir,
                                    "run directories only (with --duration, --steady-samples, "
-                                   "--backend, --quiet at most)",
+                                   "--threads, --backend, --quiet at most)",
                                    "the config and output directory come from each DIR");
         // Further directories after the first (a shell glob) are resumed together with it.
         std::vector<std::filesystem::path> dirs{*dir};
@@ -116,6 +113,8 @@ int run_command(const std::vector<std::string>& words, std::ostream& out, std::o
         if (const auto n = a.value("--steady-samples"))
             options.steady_samples = parse_count("--steady-samples", *n, 0, 1'000'000'000);
         if (const auto b = a.value("--backend")) options.backend = backend_flag("--backend", *b);
+        if (const auto n = a.value("--threads"))
+            options.threads = static_cast<int>(parse_count("--threads", *n, 1, 1024));
         return resume_runs(dirs, options, out, err, stdout_is_terminal());
     }
     for (const char* flag : {"--duration", "--steady-samples"})

@@ -54,10 +54,11 @@ void check_distinct(const std::vector<std::filesystem::path>& dirs) {
 }
 
 // How the ensemble steps: every run's backend (they must agree, as it decides the trajectory)
-// on the largest run.threads among them (which does not). `backend`: a --backend for all.
+// on the largest run.threads among them (which does not); `given` may replace either for all.
 BackendOptions ensemble_options(const std::vector<RunPlan>& plans,
                                 const std::vector<std::filesystem::path>& dirs,
-                                std::optional<BackendKind> backend) {
+                                const RunOptions& given) {
+    const std::optional<BackendKind>& backend = given.backend;
     BackendOptions options{.threads = 1, .backend = plans.front().control.backend};
     for (std::size_t r = 0; r < plans.size(); ++r) {
         options.threads = std::max(options.threads, plans[r].control.threads);
@@ -70,6 +71,7 @@ BackendOptions ensemble_options(const std::vector<RunPlan>& plans,
                 "runs on different backends go in different commands, or give --backend");
     }
     if (backend) options.backend = *backend;
+    if (given.threads) options.threads = *given.threads;
     return options;
 }
 
@@ -475,11 +477,11 @@ ResumedRun read_run(const std::filesystem::path& dir, const RunOptions& options)
 
 // Steps every system of the ensemble whose session started (`by_system[m]`, not null) to its
 // run's end; the systems of the others leave first. `run_of[m]` is system m's place in
-// `codes`, which receives each run's exit code. Returns the first that is not kExitOk.
-int step_to_the_end(Ensemble& ensemble, const std::vector<RunSession*>& by_system,
-                    const std::vector<std::size_t>& run_of, std::vector<int>& codes,
-                    const BackendOptions& stepping, bool quiet, std::ostream& out,
-                    std::ostream& err, bool progress_is_terminal) {
+// `codes`, which receives each run's exit code.
+void step_to_the_end(Ensemble& ensemble, const std::vector<RunSession*>& by_system,
+                     const std::vector<std::size_t>& run_of, std::vector<int>& codes,
+                     const BackendOptions& stepping, bool quiet, std::ostream& out,
+                     std::ostream& err, bool progress_is_terminal) {
     std::vector<std::size_t> never_started;
     std::vector<RunSession*> sessions;
     std::vector<std::size_t> runs;
@@ -491,6 +493,9 @@ int step_to_the_end(Ensemble& ensemble, const std::vector<RunSession*>& by_syste
         sessions.push_back(by_system[m]);
         runs.push_back(run_of[m]);
     }
+    if (by_system.size() > 1)
+        for (RunSession* session : sessions)
+            session->name_in_messages();
     if (!sessions.empty()) {
         ensemble.retire(never_started);
         EnsembleLoop loop(ensemble, sessions, stepping.threads,
@@ -499,25 +504,18 @@ int step_to_the_end(Ensemble& ensemble, const std::vector<RunSession*>& by_syste
         for (std::size_t k = 0; k < runs.size(); ++k)
             codes[runs[k]] = ended[k];
     }
+}
+
+int first_failure(const std::vector<int>& codes) {
     for (int code : codes)
         if (code != kExitOk) return code;
     return kExitOk;
 }
 
-}  // namespace
-
-int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out, std::ostream& err,
-              bool progress_is_terminal) {
-    return start_runs({{plan, options.out_dir}}, options, out, err, progress_is_terminal);
-}
-
-int resume_run(const std::filesystem::path& dir, const RunOptions& options, std::ostream& out,
-               std::ostream& err, bool progress_is_terminal) {
-    return resume_runs({dir}, options, out, err, progress_is_terminal);
-}
-
-int start_runs(const std::vector<NewRun>& runs, const RunOptions& options, std::ostream& out,
-               std::ostream& err, bool progress_is_terminal) {
+// New runs to their first frame and checkpoint, then (with `step`) to their ends.
+std::vector<int> start_each(const std::vector<NewRun>& runs, const RunOptions& options,
+                            std::ostream& out, std::ostream& err, bool progress_is_terminal,
+                            bool step) {
     if (runs.empty()) throw InvalidParameter("CONFIG", "none", "at least one config");
     // From here on a signal asks for a clean stop, and a file-size limit fails a write instead
     // of killing the process.
@@ -538,7 +536,7 @@ int start_runs(const std::vector<NewRun>& runs, const RunOptions& options, std::
     }
     check_distinct(dirs);
     check_fits_in_memory(plans);
-    const BackendOptions stepping = ensemble_options(plans, dirs, std::nullopt);
+    const BackendOptions stepping = ensemble_options(plans, dirs, options);
     require_usable_backend(stepping.backend, "run.backend");
 
     std::vector<std::unique_ptr<RemoveUnlessStarted>> cleanups;
@@ -613,6 +611,7 @@ int start_runs(const std::vector<NewRun>& runs, const RunOptions& options, std::
         try {
             session.write_frame(0.0);
             session.checkpoint(false);
+            if (!step) session.set_aside();
             cleanups[r]->started();
             by_system[r] = &session;
         } catch (const FileError& e) {
@@ -622,12 +621,42 @@ int start_runs(const std::vector<NewRun>& runs, const RunOptions& options, std::
             codes[r] = kExitIoError;
         }
     }
-    return step_to_the_end(ensemble, by_system, run_of, codes, stepping, options.quiet, out, err,
-                           progress_is_terminal);
+    if (step)
+        step_to_the_end(ensemble, by_system, run_of, codes, stepping, options.quiet, out, err,
+                        progress_is_terminal);
+    return codes;
+}
+
+}  // namespace
+
+int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out, std::ostream& err,
+              bool progress_is_terminal) {
+    return start_runs({{plan, options.out_dir}}, options, out, err, progress_is_terminal);
+}
+
+int resume_run(const std::filesystem::path& dir, const RunOptions& options, std::ostream& out,
+               std::ostream& err, bool progress_is_terminal) {
+    return resume_runs({dir}, options, out, err, progress_is_terminal);
+}
+
+int start_runs(const std::vector<NewRun>& runs, const RunOptions& options, std::ostream& out,
+               std::ostream& err, bool progress_is_terminal) {
+    return first_failure(start_each(runs, options, out, err, progress_is_terminal, true));
+}
+
+std::vector<int> create_runs(const std::vector<NewRun>& runs, const RunOptions& options,
+                             std::ostream& out, std::ostream& err) {
+    return start_each(runs, options, out, err, false, false);
 }
 
 int resume_runs(const std::vector<std::filesystem::path>& dirs, const RunOptions& options,
                 std::ostream& out, std::ostream& err, bool progress_is_terminal) {
+    return first_failure(resume_each(dirs, options, out, err, progress_is_terminal));
+}
+
+std::vector<int> resume_each(const std::vector<std::filesystem::path>& dirs,
+                             const RunOptions& options, std::ostream& out, std::ostream& err,
+                             bool progress_is_terminal) {
     if (dirs.empty()) throw InvalidParameter("--resume", "none", "at least one run directory");
     StopSignalGuard signals;
     check_distinct(dirs);
@@ -648,9 +677,10 @@ int resume_runs(const std::vector<std::filesystem::path>& dirs, const RunOptions
             << ", t = " << static_cast<double>(run.checkpoint.step) * run.plan.engine.dt
             << " s); nothing to do. Extend it with --duration T.\n";
     }
-    if (plans.empty()) return kExitOk;
+    std::vector<int> codes(runs.size(), kExitOk);
+    if (plans.empty()) return codes;
     check_fits_in_memory(plans);
-    const BackendOptions stepping = ensemble_options(plans, going_dirs, options.backend);
+    const BackendOptions stepping = ensemble_options(plans, going_dirs, options);
     require_usable_backend(stepping.backend, options.backend ? "--backend" : "run.backend");
 
     std::vector<Simulation> systems;
@@ -682,7 +712,6 @@ int resume_runs(const std::vector<std::filesystem::path>& dirs, const RunOptions
     Ensemble ensemble(std::move(systems), stepping);
 
     std::vector<std::unique_ptr<RunSession>> sessions;
-    std::vector<int> codes(runs.size(), kExitOk);
     std::vector<RunSession*> by_system;
     std::vector<std::size_t> run_of;
     for (std::size_t r = 0; r < runs.size(); ++r) {
@@ -730,8 +759,9 @@ int resume_runs(const std::vector<std::filesystem::path>& dirs, const RunOptions
         }
         by_system.back() = &session;
     }
-    return step_to_the_end(ensemble, by_system, run_of, codes, stepping, options.quiet, out, err,
-                           progress_is_terminal);
+    step_to_the_end(ensemble, by_system, run_of, codes, stepping, options.quiet, out, err,
+                    progress_is_terminal);
+    return codes;
 }
 
 }  // namespace rodsea

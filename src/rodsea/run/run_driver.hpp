@@ -29,6 +29,9 @@ struct RunOptions {
     // Resume only: continue on this backend instead of the stored run.backend, for this session
     // (the stored config keeps saying how the run started).
     std::optional<BackendKind> backend;
+    // Step on this many threads instead of the largest run.threads, for this session (the
+    // trajectory does not depend on threads; the stored configs keep theirs).
+    std::optional<int> threads;
 };
 
 // A new run: its plan and the directory it writes.
@@ -63,5 +66,16 @@ int start_runs(const std::vector<NewRun>& runs, const RunOptions& options, std::
 // a run already complete is said so and left alone.
 int resume_runs(const std::vector<std::filesystem::path>& dirs, const RunOptions& options,
                 std::ostream& out, std::ostream& err, bool progress_is_terminal = false);
+// resume_runs with every run's exit code, in the order given (kExitOk for one already complete).
+std::vector<int> resume_each(const std::vector<std::filesystem::path>& dirs,
+                             const RunOptions& options, std::ostream& out, std::ostream& err,
+                             bool progress_is_terminal = false);
+
+// start_runs up to each run's first frame and checkpoint, without stepping: resume_each then
+// steps them, with others, bit for bit as start_runs would have (a campaign's ensemble steps
+// its new and its interrupted runs together). Checks as start_runs; returns each run's exit
+// code (kExitIoError when its first frame or checkpoint could not be written).
+std::vector<int> create_runs(const std::vector<NewRun>& runs, const RunOptions& options,
+                             std::ostream& out, std::ostream& err);
 
 }  // namespace rodsea

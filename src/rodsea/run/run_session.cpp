@@ -50,6 +50,15 @@ RunSession::RunSession(RunPlan plan, TrajectoryFile trajectory, SeriesCsv csv,
       frame_reserve_bytes_(2 * estimate_resources(plan_).frame_bytes + kMetadataReserve),
       frames_written_(trajectory_.frames()) {}
 
+void RunSession::name_in_messages() {
+    who_ = dir_.string() + ": ";
+}
+
+void RunSession::set_aside() {
+    trajectory_.close();
+    write_progress("stopped", 0.0);
+}
+
 void RunSession::attach(const Ensemble& ensemble, std::size_t system) {
     ensemble_ = &ensemble;
     system_ = system;
@@ -174,7 +183,7 @@ std::optional<int> RunSession::between_steps(double steps_per_second, std::ostre
         checkpoint(false);
     } catch (const FileError& e) {
         before_printing();
-        err << "rodsea: cannot write the checkpoint: " << e.what()
+        err << "rodsea: " << who_ << "cannot write the checkpoint: " << e.what()
             << "\n  the previous checkpoint is intact; stopping. Continue with: rodsea run "
                "--resume "
             << dir_.string() << "\n";
@@ -192,7 +201,8 @@ int RunSession::finish(std::ostream& out, std::ostream& err, ProgressStyle style
         checkpoint(true);
         write_progress(verdict ? "steady" : "done", steps_per_second);
     } catch (const FileError& e) {
-        err << "rodsea: the run reached its end but its files could not be closed: " << e.what()
+        err << "rodsea: " << who_
+            << "the run reached its end but its files could not be closed: " << e.what()
             << "\n  the last checkpoint is intact; continue with: rodsea run "
             << "--resume " << dir_.string() << "\n";
         return kExitIoError;
@@ -200,7 +210,7 @@ int RunSession::finish(std::ostream& out, std::ostream& err, ProgressStyle style
     if (style == ProgressStyle::quiet) return kExitOk;
     if (verdict) {
         const double frame_time = static_cast<double>(plan_.steps_per_output()) * plan_.engine.dt;
-        out << "steady: the window from "
+        out << who_ << "steady: the window from "
             << format_number(frame_time * static_cast<double>(verdict->first_frame))
             << " s (decided by " << verdict->decided_by
             << ") holds n_eff = " << format_number(verdict->n_eff) << " independent samples of "
@@ -221,12 +231,13 @@ int RunSession::stop_on_signal(int signal, double steps_per_second, std::ostream
         checkpoint(false);
         trajectory_.close();
         write_progress("stopped", steps_per_second);
-        err << "rodsea: " << what << " at step " << step_count()
+        err << "rodsea: " << who_ << "" << what << " at step " << step_count()
             << " (t = " << ensemble_->time(system_)
             << " s); checkpoint written.\n  continue with: rodsea run --resume " << dir_.string()
             << "\n";
     } catch (const FileError& e) {
-        err << "rodsea: " << what << ", but the checkpoint could not be written: " << e.what()
+        err << "rodsea: " << who_ << "" << what
+            << ", but the checkpoint could not be written: " << e.what()
             << "\n  the previous checkpoint is intact; continue from it with: rodsea run "
                "--resume "
             << dir_.string() << "\n";
@@ -242,7 +253,7 @@ int RunSession::stop_on_signal(int signal, double steps_per_second, std::ostream
 int RunSession::stop_after_blow_up(const BlowUp& b, std::uint64_t step, double steps_per_second,
                                    std::ostream& out, std::ostream& err) {
     const double dt = plan_.engine.dt;
-    err << "rodsea: the simulation blew up at step " << step
+    err << "rodsea: " << who_ << "the simulation blew up at step " << step
         << " (t = " << format_number(static_cast<double>(step) * dt) << " s): " << b.what << " is "
         << b.value << ", beyond " << b.bound << ".\n  what to change: " << b.advice << ".\n";
     try {
@@ -275,7 +286,7 @@ int RunSession::stop_after_write_failure(const FileError& e, double steps_per_se
     trajectory_.abandon();
     trajectory_.release_reserve();
     write_progress("stopped", steps_per_second);
-    err << "rodsea: cannot write output at step " << step_count()
+    err << "rodsea: " << who_ << "cannot write output at step " << step_count()
         << " (t = " << ensemble_->time(system_) << " s): " << e.what() << "\n";
     try {
         checkpoint(false);
@@ -295,7 +306,7 @@ int RunSession::stop_after_write_failure(const FileError& e, double steps_per_se
 
 void RunSession::report_end(std::ostream& out) const {
     const RunTotals& t = ensemble_->totals(system_);
-    out << "done: " << step_count() << " steps, t = " << ensemble_->time(system_) << " s, "
+    out << who_ << "done: " << step_count() << " steps, t = " << ensemble_->time(system_) << " s, "
         << frames_written_ << " frames in " << (dir_ / kTrajectoryFile).string()
         << "\n      this session: largest overlap " << t.max_overlap_fraction * 100
         << " % of a radius, unresolved contacts " << t.unresolved << ", most sweeps "

@@ -12,6 +12,7 @@
 #include <iosfwd>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "rodsea/cli/progress.hpp"
@@ -37,6 +38,9 @@ class RunSession {
     // of the session.
     RunSession(RunPlan plan, TrajectoryFile trajectory, SeriesCsv csv, std::filesystem::path dir,
                double wall_before, std::unique_ptr<RunDirectoryLock> lock);
+
+    // Its messages begin with its directory: with several runs on one stream, each names its own.
+    void name_in_messages();
 
     // The system of `ensemble` this session records; again after the ensemble retires others.
     void attach(const Ensemble& ensemble, std::size_t system);
@@ -75,6 +79,10 @@ class RunSession {
     int stop_after_blow_up(const BlowUp& blow_up, std::uint64_t step, double steps_per_second,
                            std::ostream& out, std::ostream& err);
     int stop_on_signal(int signal, double steps_per_second, std::ostream& out, std::ostream& err);
+    // A run created but not stepped (create_runs): its files closed and progress.txt saying
+    // stopped, as a signal would have left them right after the first checkpoint. Throws
+    // FileError.
+    void set_aside();
     void write_progress(const char* state, double steps_per_second);
 
   private:
@@ -93,6 +101,7 @@ class RunSession {
     SeriesRecorder recorder_;
     SteadyStop steady_;
     std::filesystem::path dir_;
+    std::string who_;  // before its messages: "" alone, "<dir>: " among several
     double wall_before_;
     const Ensemble* ensemble_ = nullptr;
     std::size_t system_ = 0;
