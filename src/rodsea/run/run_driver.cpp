@@ -536,7 +536,11 @@ std::vector<int> start_each(const std::vector<NewRun>& runs, const RunOptions& o
     }
     check_distinct(dirs);
     check_fits_in_memory(plans);
-    const BackendOptions stepping = ensemble_options(plans, dirs, options);
+    // A new run's backend is its config's (rodsea run --backend rewrites the config), so that its
+    // stored config says what stepped it; options.backend is for resumed runs.
+    RunOptions given = options;
+    given.backend.reset();
+    const BackendOptions stepping = ensemble_options(plans, dirs, given);
     require_usable_backend(stepping.backend, "run.backend");
 
     std::vector<std::unique_ptr<RemoveUnlessStarted>> cleanups;
