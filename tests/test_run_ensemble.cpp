@@ -163,6 +163,24 @@ TEST(RunEnsembleCli, SeveralConfigsWriteOneDirectoryEach) {
     const auto sparse = dir.path() / "sparse.toml", dense = dir.path() / "dense.toml";
     std::ofstream(sparse) << member_config(0.10, 51, 0.006);
     std::ofstream(dense) << member_config(0.30, 52, 0.004);
+    // `rodsea info` with both: the ensemble's line per run and its totals, then each plan; the
+    // ensemble's bodies are the sum of each plan's.
+    const ChildResult info = run_rodsea({"info", sparse.string(), dense.string()}, dir.path());
+    ASSERT_EQ(info.exit_code, kExitOk) << info.err;
+    const auto bodies_after = [&](const std::string& marker, std::size_t from) {
+        const std::size_t at = info.out.find(marker, from);
+        EXPECT_NE(at, std::string::npos) << marker << "\n" << info.out;
+        return at == std::string::npos ? 0ull : std::stoull(info.out.substr(at + marker.size()));
+    };
+    const std::size_t sparse_plan = info.out.find("rodsea info " + sparse.string());
+    const std::size_t dense_plan = info.out.find("rodsea info " + dense.string());
+    ASSERT_NE(sparse_plan, std::string::npos) << info.out;
+    ASSERT_NE(dense_plan, std::string::npos) << info.out;
+    EXPECT_EQ(bodies_after("total    ", 0), bodies_after("         total ", sparse_plan) +
+                                                bodies_after("         total ", dense_plan))
+        << info.out;
+    EXPECT_NE(info.out.find("out/sparse"), std::string::npos) << info.out;
+
     const auto out = dir.path() / "out";
     const ChildResult started =
         run_rodsea({"run", sparse.string(), dense.string(), "--out", out.string()}, dir.path());

@@ -120,7 +120,7 @@ void check_fits_in_memory(const std::vector<RunPlan>& plans) {
 
 void describe_ensemble(const std::vector<RunPlan>& plans,
                        const std::vector<std::filesystem::path>& dirs, const RunControl& stepping,
-                       std::ostream& out) {
+                       std::ostream& out, bool point_to_info) {
     out << "rodsea run: " << plans.size()
         << " runs stepped together as one ensemble, each into its own directory\n";
     out << "  run  bodies   spheres  dt/us  duration/s        steps  frames    output  directory\n";
@@ -146,7 +146,7 @@ void describe_ensemble(const std::vector<RunPlan>& plans,
     if (const std::optional<std::uint64_t> available = available_memory_bytes())
         out << " of the " << format_bytes(*available) << " available here";
     out << "\n";
-    out << "each run's plan in full: rodsea info CONFIG\n";
+    if (point_to_info) out << "each run's plan in full: rodsea info CONFIG\n";
 }
 
 void describe_plan(const RunPlan& plan, std::ostream& out, bool brief) {

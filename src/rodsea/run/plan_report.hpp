@@ -33,10 +33,10 @@ void describe_plan(const RunPlan& plan, std::ostream& out, bool brief = false);
 
 // What `rodsea run` with several configs shows before it starts: one line per run (size,
 // length, output, directory), then the ensemble's backend (`stepping`: its backend and threads),
-// memory and output in all.
+// memory and output in all; `point_to_info`: a last line saying where each run's plan is in full.
 void describe_ensemble(const std::vector<RunPlan>& plans,
                        const std::vector<std::filesystem::path>& dirs, const RunControl& stepping,
-                       std::ostream& out);
+                       std::ostream& out, bool point_to_info = true);
 
 std::string format_bytes(std::uint64_t bytes);  // "5.3 MB"
 

@@ -65,12 +65,14 @@ const CommandSpec& run_command_spec() {
 const CommandSpec& info_command_spec() {
     static const CommandSpec spec{
         "info",
-        "CONFIG",
+        "CONFIG...",
         "what CONFIG would simulate",
         "Prints what CONFIG would simulate, without running it: the box and drive (amplitude A, "
         "peak plate speed), counts per species with spheres, projected areas and actual area "
         "fractions, the number of steps, the expected memory and output size, whether the "
-        "packing is possible, and every MODEL.md CHOICE in force.",
+        "packing is possible, the backend and device, and every MODEL.md CHOICE in force. With "
+        "several configs, first what `rodsea run` with all of them would step as one ensemble "
+        "(a line per run, the backend, the memory and output in all), then each plan in full.",
         {},
         ""};
     return spec;
@@ -82,12 +84,12 @@ bool stdout_is_terminal() {
     return ::isatty(STDOUT_FILENO) == 1;
 }
 
-// The one config a command names, with D_r turned into ε through its calibration table.
-RunPlan config_named_by(const Arguments& a, const CommandSpec& spec) {
-    if (a.positional.size() != 1)
-        throw InvalidParameter("CONFIG", std::to_string(a.positional.size()) + " given",
-                               "exactly one config file (see rodsea " + spec.name + " --help)");
-    return load_config_file(a.positional[0], calibration_table_lookup());
+// Where `rodsea run` writes the run of `config` given among `count` configs and --out `out_flag`.
+std::filesystem::path run_directory(const std::filesystem::path& config, std::size_t count,
+                                    const std::optional<std::string>& out_flag) {
+    if (!out_flag) return std::filesystem::path("out") / config.stem();
+    return count == 1 ? std::filesystem::path(*out_flag)
+                      : std::filesystem::path(*out_flag) / config.stem();
 }
 
 }  // namespace
@@ -135,11 +137,7 @@ int run_command(const std::vector<std::string>& words, std::ostream& out, std::o
         if (const auto b = a.value("--backend"))
             plan = with_backend(plan.config_toml, name, backend_flag("--backend", *b));
         // One config writes DIR itself; several write DIR/<config name> each.
-        std::filesystem::path dir = std::filesystem::path("out") / config.stem();
-        if (out_flag)
-            dir = a.positional.size() == 1 ? std::filesystem::path(*out_flag)
-                                           : std::filesystem::path(*out_flag) / config.stem();
-        runs.push_back({std::move(plan), std::move(dir)});
+        runs.push_back({std::move(plan), run_directory(config, a.positional.size(), out_flag)});
     }
     return start_runs(runs, options, out, err, stdout_is_terminal());
 }
@@ -148,10 +146,32 @@ int info_command(const std::vector<std::string>& words, std::ostream& out, std::
     const std::optional<Arguments> parsed = arguments_or_help(words, info_command_spec(), out);
     if (!parsed) return kExitOk;
     const Arguments& a = *parsed;
-    const RunPlan plan = config_named_by(a, info_command_spec());
-    check_steady_series(plan);
-    out << "rodsea info " << a.positional[0] << "\n";
-    describe_plan(plan, out);
+    if (a.positional.empty())
+        throw InvalidParameter("CONFIG", "none given",
+                               "one config file or more (see rodsea info --help)");
+    std::vector<RunPlan> plans;
+    std::vector<std::filesystem::path> dirs;
+    for (const std::string& name : a.positional) {
+        plans.push_back(load_config_file(name, calibration_table_lookup()));
+        check_steady_series(plans.back());
+        dirs.push_back(run_directory(name, a.positional.size(), std::nullopt));
+    }
+    if (plans.size() > 1) {
+        out << "rodsea info: " << plans.size() << " configs; `rodsea run` with all of them:\n";
+        try {
+            const BackendOptions stepping = ensemble_options(plans, dirs, RunOptions{});
+            RunControl control = plans.front().control;
+            control.threads = stepping.threads;
+            control.backend = stepping.backend;
+            describe_ensemble(plans, dirs, control, out, false);
+        } catch (const InvalidParameter& e) {
+            out << "  refused together: " << e.what() << "\n";
+        }
+    }
+    for (std::size_t r = 0; r < plans.size(); ++r) {
+        out << (r > 0 || plans.size() > 1 ? "\n" : "") << "rodsea info " << a.positional[r] << "\n";
+        describe_plan(plans[r], out);
+    }
     return kExitOk;
 }
 

@@ -53,28 +53,6 @@ void check_distinct(const std::vector<std::filesystem::path>& dirs) {
     }
 }
 
-// How the ensemble steps: every run's backend (they must agree, as it decides the trajectory)
-// on the largest run.threads among them (which does not); `given` may replace either for all.
-BackendOptions ensemble_options(const std::vector<RunPlan>& plans,
-                                const std::vector<std::filesystem::path>& dirs,
-                                const RunOptions& given) {
-    const std::optional<BackendKind>& backend = given.backend;
-    BackendOptions options{.threads = 1, .backend = plans.front().control.backend};
-    for (std::size_t r = 0; r < plans.size(); ++r) {
-        options.threads = std::max(options.threads, plans[r].control.threads);
-        if (!backend && plans[r].control.backend != options.backend)
-            throw InvalidParameter(
-                "run.backend",
-                std::string(to_string(plans[r].control.backend)) + " for " + dirs[r].string() +
-                    ", " + to_string(options.backend) + " for " + dirs.front().string(),
-                "one backend for every run stepped together",
-                "runs on different backends go in different commands, or give --backend");
-    }
-    if (backend) options.backend = *backend;
-    if (given.threads) options.threads = *given.threads;
-    return options;
-}
-
 bool is_empty_directory(const std::filesystem::path& dir) {
     return std::filesystem::is_directory(dir) && std::filesystem::is_empty(dir);
 }
@@ -632,6 +610,26 @@ std::vector<int> start_each(const std::vector<NewRun>& runs, const RunOptions& o
 }
 
 }  // namespace
+
+BackendOptions ensemble_options(const std::vector<RunPlan>& plans,
+                                const std::vector<std::filesystem::path>& dirs,
+                                const RunOptions& given) {
+    const std::optional<BackendKind>& backend = given.backend;
+    BackendOptions options{.threads = 1, .backend = plans.front().control.backend};
+    for (std::size_t r = 0; r < plans.size(); ++r) {
+        options.threads = std::max(options.threads, plans[r].control.threads);
+        if (!backend && plans[r].control.backend != options.backend)
+            throw InvalidParameter(
+                "run.backend",
+                std::string(to_string(plans[r].control.backend)) + " for " + dirs[r].string() +
+                    ", " + to_string(options.backend) + " for " + dirs.front().string(),
+                "one backend for every run stepped together",
+                "runs on different backends go in different commands, or give --backend");
+    }
+    if (backend) options.backend = *backend;
+    if (given.threads) options.threads = *given.threads;
+    return options;
+}
 
 int start_run(const RunPlan& plan, const RunOptions& options, std::ostream& out, std::ostream& err,
               bool progress_is_terminal) {

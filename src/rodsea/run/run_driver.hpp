@@ -14,6 +14,7 @@
 
 #include "rodsea/cli/exit_codes.hpp"
 #include "rodsea/config/run_plan.hpp"
+#include "rodsea/engine/step_backend.hpp"
 #include "rodsea/run/run_files.hpp"
 
 namespace rodsea {
@@ -39,6 +40,13 @@ struct NewRun {
     RunPlan plan;
     std::filesystem::path dir;
 };
+
+// How runs stepped together step: every run's backend (they must agree, as it decides the
+// trajectory; InvalidParameter naming two that differ, by their `dirs`) on the largest
+// run.threads among them (which does not); options.backend and options.threads replace either.
+BackendOptions ensemble_options(const std::vector<RunPlan>& plans,
+                                const std::vector<std::filesystem::path>& dirs,
+                                const RunOptions& options);
 
 // Starts a new run of `plan` in options.out_dir. Everything about the input (packing, output
 // directory) is checked before any work; problems throw InvalidParameter or FileError.
