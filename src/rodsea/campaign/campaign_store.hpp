@@ -28,6 +28,7 @@ struct CampaignPaths {
     std::filesystem::path lock(const CampaignRun& r) const {
         return dir / "runs" / (r.id + ".lock");
     }
+    std::filesystem::path log(const CampaignRun& r) const { return dir / "runs" / (r.id + ".log"); }
     std::filesystem::path failures(const CampaignRun& r) const {
         return dir / "runs" / (r.id + ".failed");
     }

@@ -3,7 +3,6 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <csignal>
 #include <fstream>
 #include <map>
 #include <ostream>
@@ -11,6 +10,7 @@
 #include <streambuf>
 
 #include "rodsea/calibration/calibration_table.hpp"
+#include "rodsea/campaign/campaign_runner.hpp"
 #include "rodsea/cli/exit_codes.hpp"
 #include "rodsea/cli/progress.hpp"
 #include "rodsea/cli/stop_signal.hpp"
@@ -53,14 +53,10 @@ class TeeBuffer : public std::streambuf {
     std::streambuf* second_;
 };
 
-fs::path log_path(const CampaignPaths& paths, const CampaignRun& run) {
-    return paths.dir / "runs" / (run.id + ".log");
-}
-
 void append_to_log(const CampaignPaths& paths, const CampaignRun& run, const std::string& text) {
-    std::ofstream log(log_path(paths, run), std::ios::app);
+    std::ofstream log(paths.log(run), std::ios::app);
     log << text;
-    if (!log) throw FileError(log_path(paths, run).string(), "cannot be written");
+    if (!log) throw FileError(paths.log(run).string(), "cannot be written");
 }
 
 // The messages of the error output about the run in `dir`: each message starts with a line
@@ -76,14 +72,6 @@ std::string messages_of(const std::string& text, const fs::path& dir, bool alone
         if (in_mine) mine += line + "\n";
     }
     return mine;
-}
-
-std::string last_line(const std::string& text) {
-    const std::size_t end = text.find_last_not_of("\n ");
-    if (end == std::string::npos) return "";
-    const std::size_t start = text.rfind('\n', end);
-    const std::size_t from = start == std::string::npos ? 0 : start + 1;
-    return text.substr(from, end - from + 1);
 }
 
 // A run with no checkpoint (never started, or killed before its first) starts from its config as
@@ -104,14 +92,13 @@ int run_campaign_as_ensemble(const CampaignPaths& paths, const CampaignGrid& gri
                              std::ostream& err) {
     StopSignalGuard signals;
     const int max_failures = o.retry_failed ? 4 : 2;
-    CampaignWork work = campaign_work(paths, grid, o.only, max_failures);
-    std::size_t done = work.done, elsewhere = 0;
-    std::vector<std::size_t> failed = work.failed;
+    const CampaignWork work = campaign_work(paths, grid, o.only, max_failures);
+    RunnerTally tally{.mine = work.mine.size(), .done = work.done, .failed = work.failed};
     const std::string backend =
         o.backend ? to_string(*o.backend) : std::string("each run's run.backend");
     if (!o.quiet)
-        out << "campaign " << paths.dir.string() << ": " << work.mine.size() << " runs, " << done
-            << " done, " << work.to_run.size() << " to run, " << failed.size()
+        out << "campaign " << paths.dir.string() << ": " << tally.mine << " runs, " << tally.done
+            << " done, " << work.to_run.size() << " to run, " << tally.failed.size()
             << " failed; as one ensemble on " << backend << ", " << o.threads << " thread"
             << (o.threads > 1 ? "s" : "") << std::endl;
     const auto started = Clock::now();
@@ -127,20 +114,11 @@ int run_campaign_as_ensemble(const CampaignPaths& paths, const CampaignGrid& gri
         std::vector<std::size_t> taken;
         std::vector<RunClaim> claims;
         for (const std::size_t i : queue) {
-            const CampaignRun& run = grid.runs[i];
-            RunClaim claim(paths, run);
-            if (!claim.held()) {
-                ++elsewhere;
-                if (!o.quiet)
-                    out << "campaign: " << run.id << " is run by another runner" << std::endl;
-                continue;
-            }
-            if (run_status(paths, run, max_failures).state == RunState::done) {
-                ++done;  // finished by another runner since the queue was made
-                continue;
-            }
+            std::optional<RunClaim> claim =
+                take_run(paths, grid.runs[i], max_failures, tally, o.quiet, out);
+            if (!claim) continue;
             taken.push_back(i);
-            claims.push_back(std::move(claim));
+            claims.push_back(std::move(*claim));
         }
         queue.clear();
         if (taken.empty()) break;
@@ -204,48 +182,27 @@ int run_campaign_as_ensemble(const CampaignPaths& paths, const CampaignGrid& gri
                 messages_of(captured.str(), paths.run_dir(run), taken.size() == 1);
             append_to_log(paths, run, message + "=== exit " + std::to_string(code) + "\n");
             if (code == kExitOk) {
-                ++done;
+                ++tally.done;
                 if (!o.quiet)
-                    out << "campaign: done " << run.id << " (" << done << "/" << work.mine.size()
+                    out << "campaign: done " << run.id << " (" << tally.done << "/" << tally.mine
                         << " done)" << std::endl;
             } else if (code == kExitInterrupted || code == kExitTerminated) {
                 stop_signal = code - 128;
                 if (!o.quiet)
                     out << "campaign: stopped " << run.id << " (checkpoint written)" << std::endl;
             } else {
-                record_failure(paths, run, code, message);
-                const RunStatus s = run_status(paths, run, max_failures);
-                // A run that blew up does the same steps again: retrying it only spends time.
-                const bool retry = s.failures < max_failures && code != kExitBlownUp;
-                if (!o.quiet)
-                    out << "campaign: " << run.id << " failed (exit " << code
-                        << "): " << last_line(message)
-                        << "\n  log: " << log_path(paths, run).string()
-                        << (retry                  ? "; retrying once"
-                            : code == kExitBlownUp ? "; it blew up: change the config"
-                                                   : "")
-                        << std::endl;
+                const bool retry =
+                    judge_failure(paths, run, code, message, max_failures, o.quiet, out);
                 if (retry)
                     queue.push_back(i);
                 else
-                    failed.push_back(i);
+                    tally.failed.push_back(i);
             }
         }
         if (const int s = stop_signal_received(); s != 0) stop_signal = s;
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
-    if (!o.quiet) {
-        out << "campaign: " << done << "/" << work.mine.size() << " runs done after "
-            << format_duration(seconds);
-        if (elsewhere) out << "; " << elsewhere << " run by another runner";
-        out << std::endl;
-        for (const std::size_t i : failed)
-            out << "campaign: FAILED " << grid.runs[i].id << " (log "
-                << log_path(paths, grid.runs[i]).string()
-                << "); fix the cause, then re-run with --retry-failed" << std::endl;
-    }
-    if (stop_signal) return 128 + (stop_signal == SIGHUP ? SIGTERM : stop_signal);
-    return failed.empty() ? kExitOk : kExitFailure;
+    return finish_runner(paths, grid, tally, seconds, stop_signal, o.quiet, out);
 }
 
 }  // namespace rodsea

@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "rodsea/campaign/campaign_runner.hpp"
 #include "rodsea/cli/exit_codes.hpp"
 #include "rodsea/cli/progress.hpp"
 #include "rodsea/cli/stop_signal.hpp"
@@ -34,10 +35,6 @@ struct ActiveRun {
     Clock::time_point started;
     std::streamoff log_start = 0;  // where this session's output begins in the log
 };
-
-fs::path log_path(const CampaignPaths& paths, const CampaignRun& run) {
-    return paths.dir / "runs" / (run.id + ".log");
-}
 
 // The words of the `rodsea run` that continues `run` from what its directory holds.
 std::vector<std::string> run_words(const CampaignPaths& paths, const CampaignRun& run,
@@ -94,14 +91,6 @@ std::string log_since(const fs::path& log, std::streamoff from) {
     return text.size() > kTail ? text.substr(text.size() - kTail) : text;
 }
 
-std::string last_line(const std::string& text) {
-    std::size_t end = text.find_last_not_of("\n ");
-    if (end == std::string::npos) return "";
-    const std::size_t start = text.rfind('\n', end);
-    return text.substr(start == std::string::npos ? 0 : start + 1,
-                       end - (start == std::string::npos ? 0 : start + 1) + 1);
-}
-
 }  // namespace
 
 int run_campaign_locally(const CampaignPaths& paths, const CampaignGrid& grid,
@@ -110,16 +99,14 @@ int run_campaign_locally(const CampaignPaths& paths, const CampaignGrid& grid,
     const fs::path executable =
         o.executable.empty() ? fs::read_symlink("/proc/self/exe") : o.executable;
     const int max_failures = o.retry_failed ? 4 : 2;
-    CampaignWork work = campaign_work(paths, grid, o.only, max_failures);
-    const std::vector<std::size_t>& mine = work.mine;
+    const CampaignWork work = campaign_work(paths, grid, o.only, max_failures);
     std::deque<std::size_t> queue(work.to_run.begin(), work.to_run.end());
-    std::size_t done = work.done, elsewhere = 0;
-    std::vector<std::size_t>& failed = work.failed;
+    RunnerTally tally{.mine = work.mine.size(), .done = work.done, .failed = work.failed};
     if (!o.quiet)
-        out << "campaign " << paths.dir.string() << ": " << mine.size() << " runs, " << done
-            << " done, " << queue.size() << " to run, " << failed.size() << " failed; " << o.jobs
-            << " at a time on " << o.threads << " thread" << (o.threads > 1 ? "s" : "") << " each"
-            << std::endl;
+        out << "campaign " << paths.dir.string() << ": " << tally.mine << " runs, " << tally.done
+            << " done, " << queue.size() << " to run, " << tally.failed.size() << " failed; "
+            << o.jobs << " at a time on " << o.threads << " thread" << (o.threads > 1 ? "s" : "")
+            << " each" << std::endl;
     const auto started = Clock::now();
     std::map<pid_t, ActiveRun> active;
     int stop_signal = 0;
@@ -138,25 +125,16 @@ int run_campaign_locally(const CampaignPaths& paths, const CampaignGrid& grid,
             const std::size_t i = queue.front();
             queue.pop_front();
             const CampaignRun& run = grid.runs[i];
-            RunClaim claim(paths, run);
-            if (!claim.held()) {
-                ++elsewhere;
-                if (!o.quiet)
-                    out << "campaign: " << run.id << " is run by another runner" << std::endl;
-                continue;
-            }
-            if (run_status(paths, run, max_failures).state == RunState::done) {
-                ++done;  // finished by another runner since the queue was made
-                continue;
-            }
+            std::optional<RunClaim> claim = take_run(paths, run, max_failures, tally, o.quiet, out);
+            if (!claim) continue;
             std::string what;
             const std::vector<std::string> words = run_words(paths, run, o, what);
-            const fs::path log = log_path(paths, run);
+            const fs::path log = paths.log(run);
             std::error_code ec;
             const std::streamoff log_start =
                 fs::exists(log, ec) ? static_cast<std::streamoff>(fs::file_size(log, ec)) : 0;
             const pid_t pid = spawn(executable, words, log);
-            active.emplace(pid, ActiveRun{i, std::move(claim), Clock::now(), log_start});
+            active.emplace(pid, ActiveRun{i, std::move(*claim), Clock::now(), log_start});
             if (!o.quiet) out << "campaign: " << what << " " << run.id << std::endl;
         }
         int status = 0;
@@ -172,47 +150,26 @@ int run_campaign_locally(const CampaignPaths& paths, const CampaignGrid& grid,
         const double seconds =
             std::chrono::duration<double>(Clock::now() - it->second.started).count();
         if (code == kExitOk) {
-            ++done;
+            ++tally.done;
             if (!o.quiet)
                 out << "campaign: done " << run.id << " in " << format_duration(seconds) << " ("
-                    << done << "/" << mine.size() << " done)" << std::endl;
+                    << tally.done << "/" << tally.mine << " done)" << std::endl;
         } else if (code == kExitInterrupted || code == kExitTerminated) {
             if (!o.quiet)
                 out << "campaign: stopped " << run.id << " (checkpoint written)" << std::endl;
         } else {
-            const std::string message = log_since(log_path(paths, run), it->second.log_start);
-            record_failure(paths, run, code, message);
-            const RunStatus s = run_status(paths, run, max_failures);
-            // A run that blew up does the same steps again: retrying it only spends time.
-            const bool retry = s.failures < max_failures && code != kExitBlownUp;
-            if (!o.quiet)
-                out << "campaign: " << run.id << " failed (exit " << code
-                    << "): " << last_line(message) << "\n  log: " << log_path(paths, run).string()
-                    << (retry                  ? "; retrying once"
-                        : code == kExitBlownUp ? "; it blew up: change the config"
-                                               : "")
-                    << std::endl;
+            const std::string message = log_since(paths.log(run), it->second.log_start);
+            const bool retry = judge_failure(paths, run, code, message, max_failures, o.quiet, out);
             // Once stopping, a first failure waits for the next command's retry.
             if (!retry)
-                failed.push_back(it->second.run);
+                tally.failed.push_back(it->second.run);
             else if (stop_signal == 0)
                 queue.push_back(it->second.run);
         }
         active.erase(it);
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
-    if (!o.quiet) {
-        out << "campaign: " << done << "/" << mine.size() << " runs done after "
-            << format_duration(seconds);
-        if (elsewhere) out << "; " << elsewhere << " run by another runner";
-        out << std::endl;
-        for (const std::size_t i : failed)
-            out << "campaign: FAILED " << grid.runs[i].id << " (log "
-                << log_path(paths, grid.runs[i]).string()
-                << "); fix the cause, then re-run with --retry-failed" << std::endl;
-    }
-    if (stop_signal) return 128 + stop_signal;
-    return failed.empty() ? kExitOk : kExitFailure;
+    return finish_runner(paths, grid, tally, seconds, stop_signal, o.quiet, out);
 }
 
 }  // namespace rodsea
