@@ -31,7 +31,8 @@ FINITE_SIZE = {
     0.05: [
         ("38 mm box", f"{DATA}/finite-size/fig1c-phi_a0.05-scale0.15.series.csv", 18),
         ("63 mm box", f"{FIG1C_SERIES}/medium.area_fraction=0.05_extended_to_180_s.series.csv", 50),
-        ("88 mm box", f"{DATA}/finite-size/fig1c-phi_a0.05-scale0.35.series.csv", 98),
+        ("88 mm box", f"{DATA}/finite-size/fig1c-phi_a0.05-scale0.35_extended_to_360_s.series.csv",
+         98),
     ],
     0.20: [
         ("38 mm box", f"{DATA}/finite-size/fig1c-phi_a0.20-scale0.15.series.csv", 18),
@@ -39,6 +40,18 @@ FINITE_SIZE = {
         ("88 mm box", f"{DATA}/finite-size/fig1c-phi_a0.20-scale0.35.series.csv", 98),
     ],
 }
+
+# The first row in the 38 mm box (18 polar rods), 180 s per run: {φ_a: [series table per seed]};
+# each run's P, Σ and N_m over ROW38_WINDOW, errors from blocks of ROW38_BLOCK seconds. A seed not
+# run yet is left out.
+ROW38 = {
+    phi: [f"{DATA}/finite-size/fig1c-phi_a{phi}-scale0.15.series.csv"] + [
+        f"{DATA}/finite-size/replicates38/medium.area_fraction={phi.rstrip('0')}.seed{k}.series.csv"
+        for k in (2, 3) if phi in ("0.05", "0.20")]
+    for phi in ("0.05", "0.20", "0.35", "0.50")
+}
+ROW38_WINDOW = (60.0, 180.0)
+ROW38_BLOCK = 15.0
 
 # Fig. 5b, first look: the medium's velocity around polar rods against distance in the 63 mm box
 # (label, profile table) from `rodsea analyze --observables medium_velocity`.
@@ -176,6 +189,50 @@ def draw_finite_size(plt):
     return fig, dump
 
 
+def draw_row38(plt):
+    """P, Σ and N_m against φ_a in the 38 mm box: each seed's 60–180 s mean (error from 15 s
+    blocks) and the mean over the seeds."""
+    from block_means import block_means
+    fig, axes = plt.subplots(1, 3, figsize=(12.0, 3.6))
+    dump = {}
+    panels = (("P_polar", "P (polar rods)"), ("Sigma", "Σ (segregation)"),
+              ("N_m", "⟨N_m⟩ (rods per flock)"))
+    for ax, (name, title) in zip(axes, panels):
+        xs, means = [], []
+        seeds_x, seeds_y, seeds_err = [], [], []
+        for phi, tables in ROW38.items():
+            values = []
+            for relative in tables:
+                if not os.path.isfile(os.path.join(ROOT, relative)):
+                    continue  # a seed not run yet
+                t = read_csv(relative)
+                for needed in ("t_from", "t_to", name):
+                    column(t, needed, relative)
+                try:
+                    mean, err, _ = block_means(t, *ROW38_WINDOW, ROW38_BLOCK)[name]
+                except (KeyError, ValueError):
+                    raise TableError(f"{relative}: shorter than {ROW38_WINDOW[1]:g} s") from None
+                values.append(mean)
+                seeds_x.append(float(phi))
+                seeds_y.append(mean)
+                seeds_err.append(err)
+            if values:
+                xs.append(float(phi))
+                means.append(float(np.mean(values)))
+        ax.errorbar(seeds_x, seeds_y, yerr=seeds_err, fmt="o", ms=4, color="C0", alpha=0.7,
+                    capsize=2, label="one seed (15 s blocks)")
+        ax.plot(xs, means, "-", color="C3", lw=1.4, label="mean over seeds")
+        dump[f"{name}: seeds"] = {"x": seeds_x, "y": seeds_y, "err": seeds_err}
+        dump[f"{name}: mean"] = {"x": xs, "y": means}
+        ax.set_xlabel("φ_a")
+        ax.set_title(title, fontsize=10)
+    axes[0].legend(loc="best", fontsize=8)
+    fig.suptitle("38 mm box (18 polar rods), φ_p = 0.05, σ = 3.125, D_r = 0: means over "
+                 f"{ROW38_WINDOW[0]:g}–{ROW38_WINDOW[1]:g} s", fontsize=10)
+    fig.tight_layout()
+    return fig, dump
+
+
 def draw_fig5b(plt):
     """The medium's mean velocity along the rod's axis (lab frame) and its mean speed against
     the distance from a polar rod, for each φ_a: the drag near the rod and the far field."""
@@ -206,7 +263,7 @@ def draw_fig5b(plt):
 
 
 FIGURES = {"fig1c": draw_fig1c, "fig1c-series": draw_fig1c_series,
-           "finite-size": draw_finite_size, "fig5b": draw_fig5b}
+           "finite-size": draw_finite_size, "row38": draw_row38, "fig5b": draw_fig5b}
 
 
 def main(argv):

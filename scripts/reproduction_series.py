@@ -8,7 +8,8 @@ and writes DIR/<point>.series.csv: per time bin (default 1 s) the means of P of 
 S of the medium, Σ (baseline removed), N_m and the fraction of polar rods in flocks, with the
 number of frames in the bin and whether the bin lies in the steady window (nan for what the run
 does not have: Σ without a medium). <point> is the run's
-campaign point (the name of the directory above seed<k>), or the run directory's name.
+campaign point (the name of the directory above seed<k>), or the run directory's name; a
+campaign's further replicates (seed<k>, k > 1) write DIR/<point>.seed<k>.series.csv.
 Units: time s; the rest are numbers (docs/analysis.md).
 """
 import argparse
@@ -40,7 +41,10 @@ def read(path):
 def point_name(run):
     run = os.path.normpath(run)
     leaf = os.path.basename(run)
-    return os.path.basename(os.path.dirname(run)) if leaf.startswith("seed") else leaf
+    if not (leaf.startswith("seed") and leaf[4:].isdigit()):
+        return leaf
+    point = os.path.basename(os.path.dirname(run))
+    return point if leaf == "seed1" else f"{point}.{leaf}"
 
 
 def series(run, width):
@@ -79,6 +83,11 @@ def main(argv):
     a = p.parse_args(argv)
     if not a.bin > 0:
         fail(f"--bin {a.bin}: must be > 0 s")
+    names = [point_name(run) for run in a.runs]
+    for name in set(names):
+        if names.count(name) > 1:
+            fail(f"{name}.series.csv would be written by several runs: give them one at a time "
+                 "with different --out")
     os.makedirs(a.out, exist_ok=True)
     for run in a.runs:
         rows = series(run, a.bin)
