@@ -60,15 +60,15 @@ void append_to_log(const CampaignPaths& paths, const CampaignRun& run, const std
 }
 
 // The messages of the error output about the run in `dir`: each message starts with a line
-// "rodsea: ..." that names its run's directory (the run driver's rule with several runs) and
-// goes on with indented lines. With a single run every message is its own.
-std::string messages_of(const std::string& text, const fs::path& dir, bool alone) {
-    if (alone) return text;
+// "rodsea: ..." that names its run's directory followed by a colon (RunOptions::
+// name_runs_in_messages; "seed1:" is not "seed10:") and goes on with indented lines.
+std::string messages_of(const std::string& text, const fs::path& dir) {
+    const std::string name = dir.string() + ":";
     std::istringstream lines(text);
     std::string line, mine;
     bool in_mine = false;
     while (std::getline(lines, line)) {
-        if (line.rfind("rodsea: ", 0) == 0) in_mine = line.find(dir.string()) != std::string::npos;
+        if (line.rfind("rodsea: ", 0) == 0) in_mine = line.find(name) != std::string::npos;
         if (in_mine) mine += line + "\n";
     }
     return mine;
@@ -107,6 +107,7 @@ int run_campaign_as_ensemble(const CampaignPaths& paths, const CampaignGrid& gri
     options.overwrite = true;  // a run killed before its first checkpoint starts again
     options.backend = o.backend;
     options.threads = o.threads;
+    options.name_runs_in_messages = true;
     std::vector<std::size_t> queue = work.to_run;
     int stop_signal = 0;
     // A round steps every queued run as one ensemble; the runs to retry make the next.
@@ -178,8 +179,7 @@ int run_campaign_as_ensemble(const CampaignPaths& paths, const CampaignGrid& gri
         for (const std::size_t i : taken) {
             const CampaignRun& run = grid.runs[i];
             const int code = code_of.at(i);
-            const std::string message =
-                messages_of(captured.str(), paths.run_dir(run), taken.size() == 1);
+            const std::string message = messages_of(captured.str(), paths.run_dir(run));
             append_to_log(paths, run, message + "=== exit " + std::to_string(code) + "\n");
             if (code == kExitOk) {
                 ++tally.done;

@@ -458,7 +458,7 @@ ResumedRun read_run(const std::filesystem::path& dir, const RunOptions& options)
 // `codes`, which receives each run's exit code.
 void step_to_the_end(Ensemble& ensemble, const std::vector<RunSession*>& by_system,
                      const std::vector<std::size_t>& run_of, std::vector<int>& codes,
-                     const BackendOptions& stepping, bool quiet, std::ostream& out,
+                     const BackendOptions& stepping, const RunOptions& options, std::ostream& out,
                      std::ostream& err, bool progress_is_terminal) {
     std::vector<std::size_t> never_started;
     std::vector<RunSession*> sessions;
@@ -471,13 +471,13 @@ void step_to_the_end(Ensemble& ensemble, const std::vector<RunSession*>& by_syst
         sessions.push_back(by_system[m]);
         runs.push_back(run_of[m]);
     }
-    if (by_system.size() > 1)
+    if (by_system.size() > 1 || options.name_runs_in_messages)
         for (RunSession* session : sessions)
             session->name_in_messages();
     if (!sessions.empty()) {
         ensemble.retire(never_started);
         EnsembleLoop loop(ensemble, sessions, stepping.threads,
-                          choose_progress_style(quiet, progress_is_terminal), out, err);
+                          choose_progress_style(options.quiet, progress_is_terminal), out, err);
         const std::vector<int> ended = loop.run();
         for (std::size_t k = 0; k < runs.size(); ++k)
             codes[runs[k]] = ended[k];
@@ -604,7 +604,7 @@ std::vector<int> start_each(const std::vector<NewRun>& runs, const RunOptions& o
         }
     }
     if (step)
-        step_to_the_end(ensemble, by_system, run_of, codes, stepping, options.quiet, out, err,
+        step_to_the_end(ensemble, by_system, run_of, codes, stepping, options, out, err,
                         progress_is_terminal);
     return codes;
 }
@@ -761,7 +761,7 @@ std::vector<int> resume_each(const std::vector<std::filesystem::path>& dirs,
         }
         by_system.back() = &session;
     }
-    step_to_the_end(ensemble, by_system, run_of, codes, stepping, options.quiet, out, err,
+    step_to_the_end(ensemble, by_system, run_of, codes, stepping, options, out, err,
                     progress_is_terminal);
     return codes;
 }

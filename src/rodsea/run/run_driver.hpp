@@ -33,6 +33,9 @@ struct RunOptions {
     // Step on this many threads instead of the largest run.threads, for this session (the
     // trajectory does not depend on threads; the stored configs keep theirs).
     std::optional<int> threads;
+    // Every message of a run begins with its directory, also when it runs alone (as it does
+    // among several): a campaign runner sorts one error stream into each run's log.
+    bool name_runs_in_messages = false;
 };
 
 // A new run: its plan and the directory it writes.
