@@ -1,6 +1,7 @@
 """Issue 19: the figures of docs/reproduction.md are drawn from the committed tables alone.
 Regenerates Fig. 1c's figure into a scratch directory and checks every curve it drew against
-the tables, read here with the csv module (not the script's parser), and the PNG's size.
+the tables, read here with the csv module (not the script's parser), and the PNG's size; then
+the 38 mm row's points against the block means of their series tables.
 
     /usr/bin/python3 tests/test_reproduction_figures.py SOURCE_DIR SCRATCH_DIR
 Exit 77 (skipped) without numpy or matplotlib.
@@ -61,3 +62,32 @@ with open(os.path.join(scratch, "reproduction-fig1c.png"), "rb") as f:
 assert head[:8] == b"\x89PNG\r\n\x1a\n"
 assert struct.unpack(">II", head[16:24]) == (1320, 440), struct.unpack(">II", head[16:24])
 print(f"checked {checked} curves of reproduction-fig1c.png against their tables")
+
+# The 38 mm row: each seed's point is the mean of its 15 s block means over 60–180 s, computed
+# here from the series table with the csv module.
+run = subprocess.run([sys.executable, script, "--only", "row38", "--out", scratch, "--dump"],
+                     capture_output=True, text=True)
+assert run.returncode == 0, run.stderr
+with open(os.path.join(scratch, "reproduction-row38.json")) as f:
+    row = json.load(f)
+expected = []
+for phi, tables in figures.ROW38.items():
+    for relative in tables:
+        path = os.path.join(source, relative)
+        if not os.path.isfile(path):
+            continue
+        with open(path, encoding="utf-8") as f:
+            rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
+        col = {name: i for i, name in enumerate(rows[0])}
+        blocks = {}
+        for r in rows[1:]:
+            middle = 0.5 * (float(r[col["t_from"]]) + float(r[col["t_to"]]))
+            if 60.0 <= middle < 180.0:
+                blocks.setdefault(int((middle - 60.0) // 15.0), []).append(float(r[col["P_polar"]]))
+        means = [sum(v) / len(v) for _, v in sorted(blocks.items())]
+        expected.append((float(phi), sum(means) / len(means)))
+drawn = list(zip(row["P_polar: seeds"]["x"], row["P_polar: seeds"]["y"]))
+assert len(drawn) == len(expected) >= 4, (drawn, expected)
+for (x, y), (ex, ey) in zip(drawn, expected):
+    assert x == ex and abs(y - ey) < 1e-12, ((x, y), (ex, ey))
+print(f"checked the {len(drawn)} runs of reproduction-row38.png against their series tables")
