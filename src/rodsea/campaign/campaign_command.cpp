@@ -174,14 +174,7 @@ int run(const Arguments& a, std::ostream& out, std::ostream& err) {
     for (const CampaignRun& r : l.grid.runs)
         plans.push_back(run_plan(l.campaign, l.grid, r, l.scaling, calibration_table_lookup()));
     prepare_campaign_dir(l.paths, l.campaign, l.scaling, l.grid, plans);
-    if (a.has("--ensemble")) {
-        const EnsembleExecutorOptions e{.threads = o.threads,
-                                        .backend = o.backend,
-                                        .retry_failed = o.retry_failed,
-                                        .quiet = o.quiet,
-                                        .only = o.only};
-        return run_campaign_as_ensemble(l.paths, l.grid, e, out, err);
-    }
+    if (a.has("--ensemble")) return run_campaign_as_ensemble(l.paths, l.grid, o, out, err);
     return run_campaign_locally(l.paths, l.grid, o, out);
 }
 

@@ -9,8 +9,18 @@
 #include <vector>
 
 #include "rodsea/campaign/campaign_store.hpp"
+#include "rodsea/engine/step_backend.hpp"
 
 namespace rodsea {
+
+// What every runner of this machine is told.
+struct RunnerOptions {
+    int threads = 1;                     // of each run (local), of the ensemble (ensemble)
+    std::optional<BackendKind> backend;  // every run's (--backend); none: its run.backend
+    bool retry_failed = false;           // give runs that failed twice two more tries
+    bool quiet = false;
+    std::optional<std::vector<std::size_t>> only;  // these runs (indices into grid.runs); none: all
+};
 
 struct RunnerTally {
     std::size_t mine = 0;             // the runs this runner was given

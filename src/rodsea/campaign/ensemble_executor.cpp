@@ -76,8 +76,7 @@ std::string messages_of(const std::string& text, const fs::path& dir) {
 
 // A run with no checkpoint (never started, or killed before its first) starts from its config as
 // `rodsea run CONFIG --out DIR --overwrite --threads T [--backend B]` would.
-NewRun new_run(const CampaignPaths& paths, const CampaignRun& run,
-               const EnsembleExecutorOptions& o) {
+NewRun new_run(const CampaignPaths& paths, const CampaignRun& run, const RunnerOptions& o) {
     const fs::path config = paths.config(run);
     RunPlan plan = load_config_file(config.string(), calibration_table_lookup());
     plan = with_threads(plan.config_toml, config.string(), o.threads);
@@ -88,8 +87,7 @@ NewRun new_run(const CampaignPaths& paths, const CampaignRun& run,
 }  // namespace
 
 int run_campaign_as_ensemble(const CampaignPaths& paths, const CampaignGrid& grid,
-                             const EnsembleExecutorOptions& o, std::ostream& out,
-                             std::ostream& err) {
+                             const RunnerOptions& o, std::ostream& out, std::ostream& err) {
     StopSignalGuard signals;
     const int max_failures = o.retry_failed ? 4 : 2;
     const CampaignWork work = campaign_work(paths, grid, o.only, max_failures);

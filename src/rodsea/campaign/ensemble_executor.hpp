@@ -10,29 +10,16 @@
 // One process writes every run's messages: the runner's output has them all (each naming its
 // run); each run's log (runs/<point>/seed<k>.log) gets a line per session and that run's own
 // error messages, and its .failed file what made it fail.
-#include <cstddef>
 #include <iosfwd>
-#include <optional>
-#include <vector>
 
-#include "rodsea/campaign/campaign_store.hpp"
-#include "rodsea/engine/step_backend.hpp"
+#include "rodsea/campaign/campaign_runner.hpp"
 
 namespace rodsea {
-
-struct EnsembleExecutorOptions {
-    int threads = 1;                     // of the ensemble (the trajectories do not depend on it)
-    std::optional<BackendKind> backend;  // every run's; none: each run's run.backend (one for all)
-    bool retry_failed = false;           // give runs that failed twice two more tries
-    bool quiet = false;
-    std::optional<std::vector<std::size_t>> only;  // these runs (indices into grid.runs); none: all
-};
 
 // Returns an ExitCode: 0 when every run is done, 130/143 when stopped by a signal, 1 when some
 // failed (each named, with its log). Input problems (a checkpoint that cannot be read, runs on
 // different backends) throw before any run is stepped.
 int run_campaign_as_ensemble(const CampaignPaths& paths, const CampaignGrid& grid,
-                             const EnsembleExecutorOptions& options, std::ostream& out,
-                             std::ostream& err);
+                             const RunnerOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace rodsea

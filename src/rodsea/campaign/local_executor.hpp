@@ -6,22 +6,13 @@
 // holds is left to it. SIGINT or SIGTERM is passed on to every run, which writes its checkpoint.
 #include <filesystem>
 #include <iosfwd>
-#include <optional>
-#include <string>
-#include <vector>
 
-#include "rodsea/campaign/campaign_store.hpp"
-#include "rodsea/engine/step_backend.hpp"
+#include "rodsea/campaign/campaign_runner.hpp"
 
 namespace rodsea {
 
-struct LocalExecutorOptions {
+struct LocalExecutorOptions : RunnerOptions {
     int jobs = 1;
-    int threads = 1;                     // of each run
-    std::optional<BackendKind> backend;  // every run's (--backend); none: its run.backend
-    bool retry_failed = false;           // give runs that failed twice two more tries
-    bool quiet = false;
-    std::optional<std::vector<std::size_t>> only;  // these runs (indices into grid.runs); none: all
     std::filesystem::path executable;  // rodsea itself; empty: this process's executable
 };
 
