@@ -7,7 +7,9 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "rodsea/engine/ensemble.hpp"
 #include "rodsea/engine/simulation.hpp"
@@ -120,6 +122,40 @@ BENCHMARK(BM_StepEnsembleOfOne)
     ->ArgNames({"ensemble"})
     ->Arg(0)
     ->Arg(1)
+    ->Unit(benchmark::kMicrosecond)
+    ->MinTime(3.0)
+    ->UseRealTime();
+
+// A campaign's small runs stepped as one CPU ensemble (`campaign run --ensemble`, `rodsea run A B
+// C D`): four systems like the 38 mm reproduction boxes (≈ 500 bodies each, different seeds) on 1
+// and 2 threads. Counts a step of the ensemble as a step of each system.
+void BM_StepEnsembleOfFour(benchmark::State& state) {
+    constexpr int kSystems = 4;
+    std::vector<rodsea::Simulation> systems;
+    double spheres = 0;
+    for (int k = 0; k < kSystems; ++k) {
+        const rodsea::Scene scene = rodsea::polar_in_apolar_mixture(
+            0.05, 2.5, 0.5, 38.0, static_cast<std::uint64_t>(k + 1));
+        rodsea::Simulation sim(scene.params, scene.bodies);
+        sim.run(2000);
+        spheres += static_cast<double>(sim.spheres().size());
+        systems.push_back(rodsea::Simulation::resume(scene.params, sim.bodies(), sim.step_count()));
+    }
+    rodsea::Ensemble ensemble(std::move(systems), {.threads = static_cast<int>(state.range(0))});
+    for (auto _ : state)
+        ensemble.step();
+    const auto steps = static_cast<double>(state.iterations());
+    state.counters["systems"] = kSystems;
+    state.counters["spheres"] = spheres;
+    state.counters["system-steps/s"] =
+        benchmark::Counter(steps * kSystems, benchmark::Counter::kIsRate);
+    state.counters["sphere-steps/s"] =
+        benchmark::Counter(steps * spheres, benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_StepEnsembleOfFour)
+    ->ArgNames({"threads"})
+    ->Arg(1)
+    ->Arg(2)
     ->Unit(benchmark::kMicrosecond)
     ->MinTime(3.0)
     ->UseRealTime();

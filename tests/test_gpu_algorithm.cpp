@@ -1,7 +1,8 @@
 // The GPU backend's algorithm (engine/parallel/), run here by the host executor and, where a
 // device is usable, by CUDA: the contact list is the CPU's, the islands are the connected
-// components, runs repeat bit for bit, an ensemble steps each system as alone, and a dense noisy
-// mixture runs the CPU's trajectory (to the bit on the host). The physics tests with analytic
+// components, runs repeat bit for bit, an ensemble steps each system as alone (on the CPU too,
+// its systems side by side), and a dense noisy mixture runs the CPU's trajectory (to the bit on
+// the host). The physics tests with analytic
 // answers (collisions, free flight, the elastic gas, the dense monolayer) run on every backend in
 // their own files.
 #include <gtest/gtest.h>
@@ -252,6 +253,73 @@ TEST_P(GpuAlgorithm, AnEnsembleWithoutARetiredSystemStepsTheOthersOn) {
 }
 
 RODSEA_ON_EACH_BACKEND(GpuAlgorithm);
+
+// On the CPU an ensemble steps its systems side by side, min(threads, systems) at a time, each on
+// the threads left over (nested when there are more threads than systems). Three unlike systems
+// (two sizes, so the workers' shares are uneven) on 1 to 4 threads, and two on 4 (two threads
+// each), reach the bits each reaches alone on one thread; a retired system changes the sharing
+// and nothing else.
+TEST(CpuEnsemble, SystemsSideBySideStepAsTheyStepAlone) {
+    std::vector<Scene> scenes = {noisy_dense_mixture(51), noisy_dense_mixture(52),
+                                 shaken(polar_in_apolar_mixture(0.10, 2.5, 0.55, 30.0, 53), 53)};
+    std::vector<std::uint64_t> alone_hashes;
+    for (const Scene& scene : scenes) {
+        Simulation alone(scene.params, scene.bodies);
+        alone.run(300);
+        alone_hashes.push_back(alone.state_hash());
+    }
+    const auto ensemble_of = [&](std::size_t systems, int threads) {
+        std::vector<Simulation> members;
+        for (std::size_t m = 0; m < systems; ++m)
+            members.emplace_back(scenes[m].params, scenes[m].bodies);
+        return Ensemble(std::move(members), on(BackendKind::cpu, threads));
+    };
+    for (const auto& [systems, threads] :
+         {std::pair{3, 1}, std::pair{3, 2}, std::pair{3, 3}, std::pair{3, 4}, std::pair{2, 4}}) {
+        SCOPED_TRACE(std::to_string(systems) + " systems on " + std::to_string(threads) +
+                     " threads");
+        Ensemble ensemble = ensemble_of(static_cast<std::size_t>(systems), threads);
+        ensemble.run(300);
+        for (std::size_t m = 0; m < ensemble.size(); ++m)
+            EXPECT_EQ(ensemble.state_hash(m), alone_hashes[m]) << "system " << m;
+    }
+    Ensemble ensemble = ensemble_of(3, 2);
+    ensemble.run(100);
+    ensemble.retire({0});  // two systems left on two threads: one each instead of a shared one
+    ensemble.run(200);
+    EXPECT_EQ(ensemble.state_hash(0), alone_hashes[1]);
+    EXPECT_EQ(ensemble.state_hash(1), alone_hashes[2]);
+}
+
+// A blow-up on one worker while the other steps a healthy system: reported by its index after
+// both took the step, as when the systems step one after another.
+TEST(CpuEnsemble, ABlowUpSideBySideNamesItsSystem) {
+    const Scene healthy = noisy_dense_mixture(61);
+    EngineParameters p;
+    p.box = {10.0, 10.0};
+    p.species = {bead_species()};
+    BodyState beads;
+    const double z = 0.4 + p.drive.amplitude() + 0.01;
+    beads.add(0, {5.0, 5.0, z}, Quat{});
+    beads.add(0, {5.0 + 0.8 - 0.24, 5.0, z}, Quat{});  // 0.6 radius deep, as above
+    std::vector<Simulation> systems;
+    systems.push_back(Simulation::resume(p, beads, 0));
+    systems.push_back(Simulation(healthy.params, healthy.bodies));
+    Ensemble ensemble(std::move(systems), on(BackendKind::cpu, 2));
+    try {
+        ensemble.step();
+        FAIL() << "no blow-up";
+    } catch (const BlowUpError& e) {
+        EXPECT_EQ(e.blow_up().what.rfind("system 0: ", 0), 0u) << e.blow_up().what;
+    }
+    EXPECT_EQ(ensemble.step_count(1), 1u);
+    EXPECT_FALSE(ensemble.blow_up(1));
+    ensemble.retire({0});
+    ensemble.run(50);
+    Simulation alone(healthy.params, healthy.bodies);
+    alone.run(51);
+    EXPECT_EQ(ensemble.state_hash(0), alone.state_hash());
+}
 
 // The islands on a random contact graph much denser than a monolayer's, hooked by two threads:
 // every contact is labelled with the smallest body of its connected component (found here by a

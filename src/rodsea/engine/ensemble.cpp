@@ -1,10 +1,14 @@
 #include "rodsea/engine/ensemble.hpp"
 
+#include <algorithm>
+#include <exception>
+#include <numeric>
 #include <optional>
 #include <sstream>
 #include <string>
 
 #include "rodsea/engine/backend_factory.hpp"
+#include "rodsea/engine/cpu/detail/parallel.hpp"
 #include "rodsea/engine/parallel/parallel_ensemble.hpp"
 #include "rodsea/error.hpp"
 
@@ -39,6 +43,7 @@ Ensemble::Ensemble(std::vector<Simulation> systems, BackendOptions options) : op
         for (const Simulation& s : systems)
             cpu_systems_.push_back(
                 Simulation::resume(s.parameters(), s.bodies(), s.step_count(), options_));
+        share_threads();
         return;
     }
     std::vector<const BodyState*> states;
@@ -89,7 +94,10 @@ void Ensemble::retire(const std::vector<std::size_t>& systems) {
     last_.resize(next);
     totals_.resize(next);
     blown_.resize(next);
-    if (!cpu_systems_.empty()) cpu_systems_.erase(cpu_systems_.begin() + next, cpu_systems_.end());
+    if (!cpu_systems_.empty()) {
+        cpu_systems_.erase(cpu_systems_.begin() + next, cpu_systems_.end());
+        share_threads();  // fewer systems side by side: more threads each
+    }
     if (!stepper_) return;
     stepper_.reset();  // before the species tables of the systems retired
     species_.resize(next);
@@ -103,8 +111,7 @@ void Ensemble::retire(const std::vector<std::size_t>& systems) {
 void Ensemble::set_threads(int threads) {
     if (threads < 1) throw InvalidParameter("threads", std::to_string(threads), ">= 1");
     options_.threads = threads;
-    for (Simulation& s : cpu_systems_)
-        s.set_threads(threads);
+    share_threads();
     if (stepper_) stepper_->set_threads(threads);
 }
 
@@ -119,31 +126,7 @@ const char* Ensemble::backend_name() const {
 void Ensemble::step() {
     if (size() == 0) return;
     if (!cpu_systems_.empty()) {
-        // Every system steps, as on the GPU, before the first blow-up is reported.
-        std::optional<BlowUpError> first_blow_up;
-        for (std::size_t m = 0; m < cpu_systems_.size(); ++m) {
-            blown_[m].reset();
-            try {
-                cpu_systems_[m].step();
-            } catch (const BlowUpError& e) {
-                blown_[m] = e.blow_up();
-                if (!first_blow_up)
-                    first_blow_up.emplace(naming_system(m, e.blow_up()), e.step(),
-                                          cpu_systems_[m].time());
-            }
-            step_count_[m] = cpu_systems_[m].step_count();
-            last_[m] = cpu_systems_[m].last_step();
-            totals_[m] = cpu_systems_[m].totals();
-        }
-        profile_ = {};
-        for (const Simulation& s : cpu_systems_) {
-            profile_.free_flight += s.profile().free_flight;
-            profile_.sphere_update += s.profile().sphere_update;
-            profile_.contact_search += s.profile().contact_search;
-            profile_.resolution += s.profile().resolution;
-            profile_.noise += s.profile().noise;
-        }
-        if (first_blow_up) throw *first_blow_up;
+        step_cpu_systems();
         return;
     }
     std::vector<StepContext> contexts;
@@ -162,6 +145,72 @@ void Ensemble::step() {
     if (first_blown)
         throw BlowUpError(naming_system(*first_blown, *blown_[*first_blown]),
                           step_count_[*first_blown], time(*first_blown));
+}
+
+void Ensemble::step_cpu_systems() {
+    const std::size_t n = cpu_systems_.size();
+    // Every system steps, as on the GPU, before the first blow-up is reported.
+    std::vector<std::exception_ptr> failed(n);
+    const auto step_one = [&](std::size_t m) {
+        blown_[m].reset();
+        try {
+            cpu_systems_[m].step();
+        } catch (const BlowUpError& e) {
+            blown_[m] = e.blow_up();
+        } catch (...) {
+            failed[m] = std::current_exception();
+        }
+    };
+    cpu::for_each_in_parallel(shares_.size(), static_cast<int>(shares_.size()),
+                              threads_per_system() > 1, [&](std::size_t worker) {
+                                  for (std::size_t m : shares_[worker])
+                                      step_one(m);
+                              });
+    for (const std::exception_ptr& e : failed)
+        if (e) std::rethrow_exception(e);
+    profile_ = {};
+    for (std::size_t m = 0; m < n; ++m) {
+        const Simulation& s = cpu_systems_[m];
+        step_count_[m] = s.step_count();
+        last_[m] = s.last_step();
+        totals_[m] = s.totals();
+        profile_.free_flight += s.profile().free_flight;
+        profile_.sphere_update += s.profile().sphere_update;
+        profile_.contact_search += s.profile().contact_search;
+        profile_.resolution += s.profile().resolution;
+        profile_.noise += s.profile().noise;
+    }
+    for (std::size_t m = 0; m < n; ++m)
+        if (blown_[m]) throw BlowUpError(naming_system(m, *blown_[m]), step_count_[m], time(m));
+}
+
+int Ensemble::systems_side_by_side() const {
+    return static_cast<int>(
+        std::min(static_cast<std::size_t>(options_.threads), cpu_systems_.size()));
+}
+
+int Ensemble::threads_per_system() const {
+    return std::max(1, options_.threads / std::max(1, systems_side_by_side()));
+}
+
+void Ensemble::share_threads() {
+    for (Simulation& s : cpu_systems_)
+        s.set_threads(threads_per_system());
+    // Each system always on the same worker, for its caches; the largest first, each to the
+    // least loaded worker, so that a sweep's dense and dilute systems even out.
+    shares_.assign(static_cast<std::size_t>(systems_side_by_side()), {});
+    std::vector<std::size_t> by_size(cpu_systems_.size());
+    std::iota(by_size.begin(), by_size.end(), std::size_t{0});
+    const auto spheres = [this](std::size_t m) { return cpu_systems_[m].spheres().size(); };
+    std::stable_sort(by_size.begin(), by_size.end(),
+                     [&](std::size_t a, std::size_t b) { return spheres(a) > spheres(b); });
+    std::vector<std::size_t> load(shares_.size(), 0);
+    for (std::size_t m : by_size) {
+        const auto least =
+            static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
+        shares_[least].push_back(m);
+        load[least] += spheres(m);
+    }
 }
 
 void Ensemble::check_blow_up(std::size_t m) {

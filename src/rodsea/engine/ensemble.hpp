@@ -1,8 +1,10 @@
 #pragma once
 // Many independent systems stepped together: a phase diagram's dozens of small systems, each too
 // small to fill a GPU, share one device's kernels (each kernel's elements are the bodies,
-// spheres or contacts of every system). On the CPU they are stepped one after another. Each
-// system steps exactly as it would alone on the same backend: the same bits.
+// spheres or contacts of every system). On the CPU they step side by side: with T threads and M
+// systems, min(T, M) systems at a time, each on T / min(T, M) threads (small systems use threads
+// far better one per system than all on one). Each system steps exactly as it would alone on the
+// same backend: the same bits, on any number of threads.
 //
 //   std::vector<Simulation> systems;
 //   for (double phi : {0.2, 0.5, 0.8}) systems.emplace_back(params(phi), bodies(phi));
@@ -29,7 +31,7 @@ class EnsembleStepper;
 class Ensemble {
   public:
     // Throws InvalidParameter for no systems, or for a backend this build or machine cannot
-    // run (naming "backend"). options.threads: the CPU backend's, for each system in turn.
+    // run (naming "backend"). options.threads: the CPU backend's, shared among the systems.
     Ensemble(std::vector<Simulation> systems, BackendOptions options);
     Ensemble(Ensemble&&) noexcept;
     Ensemble& operator=(Ensemble&&) noexcept;
@@ -65,6 +67,10 @@ class Ensemble {
 
   private:
     void check_blow_up(std::size_t m);
+    void step_cpu_systems();
+    int systems_side_by_side() const;
+    int threads_per_system() const;
+    void share_threads();
     void make_stepper(const std::vector<const BodyState*>& states);
 
     BackendOptions options_;
@@ -77,6 +83,7 @@ class Ensemble {
     StageProfile profile_;
     // The CPU steps each Simulation; the data-parallel backends one stepper for all.
     std::vector<Simulation> cpu_systems_;
+    std::vector<std::vector<std::size_t>> shares_;  // the CPU systems each worker steps
     std::vector<std::unique_ptr<SpeciesTable>> species_;
     std::unique_ptr<parallel::EnsembleStepper> stepper_;
 };
