@@ -97,6 +97,40 @@ BENCHMARK(BM_StepPaperLargest)
     ->MinTime(2.0)
     ->UseRealTime();
 
+// The bead medium of SI S5 near its densest point (φ_a = 0.70 of 0.8 mm beads, polar rods at
+// φ_p = 0.05, a 38 mm box: the reproduction's bead campaign), 1 thread: a bead touches several
+// others at once, so contacts and sweeps per sphere are the rod mixture's several times over.
+void BM_StepBeadMedium(benchmark::State& state) {
+    const double side = 38.0;
+    const rodsea::Species polar = rodsea::polar_rod_species(), bead = rodsea::bead_species();
+    const auto count = [&](const rodsea::Species& s, double phi) {
+        return std::llround(phi * side * side / s.shape.projected_area);
+    };
+    const rodsea::Scene scene =
+        rodsea::monolayer({{polar, count(polar, 0.05)},
+                           {bead, count(bead, static_cast<double>(state.range(0)) / 100)}},
+                          {side, side}, 1);
+    std::uint64_t impulses_before = 0;
+    auto sim = std::make_unique<rodsea::Simulation>(scene.params, scene.bodies);
+    sim->run(4000);  // one drive period: the layer leaves the lattice
+    impulses_before = sim->totals().impulses;
+    const rodsea::StageProfile before = sim->profile();
+    const std::uint64_t builds_before = sim->pair_list_builds();
+    for (auto _ : state)
+        sim->step();
+    report(state, *sim, before, builds_before);
+    state.counters["impulses/step"] =
+        static_cast<double>(sim->totals().impulses - impulses_before) /
+        static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_StepBeadMedium)
+    ->ArgNames({"phi_a_percent"})
+    ->Arg(50)
+    ->Arg(70)
+    ->Unit(benchmark::kMicrosecond)
+    ->MinTime(3.0)
+    ->UseRealTime();
+
 // `rodsea run` steps every run as an Ensemble, a lone run as an ensemble of one: what that layer
 // costs per step, on a system small enough (≈ 300 bodies, 30 mm) for it to show, beside the
 // Simulation it wraps (arg 0: Simulation, 1: Ensemble of one).

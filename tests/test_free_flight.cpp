@@ -1,5 +1,6 @@
 // Free flight: the parabola under gravity, and torque-free rotation checked against the exact
-// precession of a symmetric body and against a fine reference integration of Euler's equations.
+// precession of a symmetric body, the exact turn of a sphere, and a fine reference integration of
+// Euler's equations.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -74,6 +75,27 @@ TEST_P(FreeFlight, SymmetricRodPrecessesExactly) {
     EXPECT_NEAR(sim.kinetic_energy(), e0, kRoundOff * e0);
 }
 
+// A sphere's spin is kept to the bit (its own path: ω is never converted to L and back) while
+// its attitude turns about the fixed ω at |ω|: q(t) = R(ω̂, |ω| t) q0.
+TEST_P(FreeFlight, SpinningBeadTurnsAboutItsFixedSpin) {
+    Scene scene = free_body(bead_species());
+    scene.params.drive.gravity = 0.0;
+    const Quat q0 = Quat::from_axis_angle(normalized(Vec3{0.3, 1.0, -0.2}), 0.7);
+    const Vec3 w0{350.0, -200.0, 800.0};  // a bead just after a frictional collision
+    scene.bodies.orientation[0] = q0;
+    scene.bodies.spin[0] = w0;
+    Simulation sim(scene.params, scene.bodies, options());
+    sim.run(10000);
+    const Vec3& w = sim.bodies().spin[0];
+    EXPECT_EQ(w.x, w0.x);
+    EXPECT_EQ(w.y, w0.y);
+    EXPECT_EQ(w.z, w0.z);
+    const Quat exact = Quat::from_axis_angle(normalized(w0), norm(w0) * sim.time()) * q0;
+    for (const Vec3& e : {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}})
+        EXPECT_NEAR(norm(rotate(sim.bodies().orientation[0], e) - rotate(exact, e)), 0.0,
+                    kRoundOff);
+}
+
 RODSEA_ON_EACH_BACKEND(FreeFlight);
 
 // A symmetric body takes small steps through power series and large ones (a half-angle above
@@ -93,6 +115,25 @@ TEST(FreeFlight, SymmetricPrecessionIsTheSameInOneLargeStepAndManySmallOnes) {
     for (const Vec3& e : {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}})
         EXPECT_NEAR(norm(rotate(q_large, e) - rotate(q_small, e)), 0.0, 1e-13);
     EXPECT_NEAR(norm(w_large - w_small), 0.0, 1e-13 * norm(w0));
+}
+
+// The same for a sphere: its large steps (a half-angle above 0.02 rad) go the symmetric body's
+// general way, its small ones its own series, and the two agree to round-off.
+TEST(FreeFlight, SphereRotationIsTheSameInOneLargeStepAndManySmallOnes) {
+    const physics::Rotor rotor = physics::make_rotor(bead_species().shape.principal_inertia);
+    ASSERT_TRUE(rotor.isotropic);
+    const Quat q0 = Quat::from_axis_angle(normalized(Vec3{0.3, 1.0, -0.2}), 0.7);
+    const Vec3 w0{35.0, -20.0, 80.0};
+    const double dt = 2e-3;
+    Quat q_large = q0, q_small = q0;
+    Vec3 w_large = w0, w_small = w0;
+    physics::rotate_free(q_large, w_large, rotor, dt);
+    for (int k = 0; k < 200; ++k)
+        physics::rotate_free(q_small, w_small, rotor, dt / 200);
+    for (const Vec3& e : {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}})
+        EXPECT_NEAR(norm(rotate(q_large, e) - rotate(q_small, e)), 0.0, 1e-13);
+    EXPECT_NEAR(norm(w_large - w0), 0.0, 1e-13 * norm(w0));
+    EXPECT_EQ(norm(w_small - w0), 0.0);
 }
 
 // Reference: Euler's equations and q̇ = ½ q ⊗ (0, ω_body) by classical RK4 at dt/20.

@@ -55,12 +55,21 @@ RODSEA_HD inline Quat unit(const Quat& q) {
     return {q.w * inv, q.x * inv, q.y * inv, q.z * inv};
 }
 
+// A product of unit quaternions back onto the unit sphere: it is off by round-off only, so one
+// Newton step for 1/|q| is as accurate there as the square root and division it replaces.
+RODSEA_HD inline Quat renormalised(const Quat& q) {
+    const double n2 = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
+    const double inv = std::abs(n2 - 1.0) < 1e-8 ? 0.5 * (3.0 - n2) : 1.0 / std::sqrt(n2);
+    return {q.w * inv, q.x * inv, q.y * inv, q.z * inv};
+}
+
 // What torque-free rotation needs of a body's principal moments, worked out once per species:
 // a step then costs no division but one (the norm of L).
 struct Rotor {
     Vec3 inertia;   // principal moments
     Vec3 inverse;   // their inverses
     int axis = -1;  // the distinct moment of an axisymmetric body (x for a sphere), else -1
+    bool isotropic = false;           // all three moments equal (a sphere): ω itself is kept
     double inverse_transverse = 0.0;  // 1 / I_t
     double spin_rate = 0.0;           // 1 / I_a − 1 / I_t
     double largest_inverse = 0.0;
@@ -83,6 +92,7 @@ inline Rotor make_rotor(const Vec3& inertia) {
         r.axis = 1;
     else if (same(inertia.x, inertia.y))
         r.axis = 2;
+    r.isotropic = same(inertia.x, inertia.y) && same(inertia.y, inertia.z);
     if (r.axis >= 0) {
         const int t = r.axis == 0 ? 1 : 0;
         r.inverse_transverse = r.inverse[t];
@@ -161,17 +171,29 @@ RODSEA_HD bool rotate_symmetric(Quat& q, Vec3& spin, const Rotor& rotor, double 
     const double p_scale = beta * p.sinc;
     const Quat precession{p.cos, p_scale * l.x, p_scale * l.y, p_scale * l.z};
     const Quat turned = turned_about_body_axis<K>(precession * q, a.cos, half_spin * a.sinc);
-    // One Newton step for 1/|q| (the product of unit quaternions is off by round-off only).
-    const double n2 =
-        turned.w * turned.w + turned.x * turned.x + turned.y * turned.y + turned.z * turned.z;
-    const double inv = std::abs(n2 - 1.0) < 1e-8 ? 0.5 * (3.0 - n2) : 1.0 / std::sqrt(n2);
-    q = {turned.w * inv, turned.x * inv, turned.y * inv, turned.z * inv};
+    q = renormalised(turned);
     spin = rotor.inverse_transverse * l + (rotor.spin_rate * axial_momentum) * rotated_axis(q, K);
+    return true;
+}
+
+// A sphere (every bead): L = I ω, so ω itself is kept and the body turns about it by |ω| dt, the
+// quaternion (cos(φ/2), ω sin(φ/2) / |ω|), again by the series. Half the work of
+// rotate_symmetric, which free flight of a bead medium spends most of its step on, and ω is kept
+// to the bit rather than recomputed from L. Returns false, changing nothing, for an angle too
+// large for the series.
+RODSEA_HD inline bool rotate_isotropic(Quat& q, const Vec3& spin, double dt) {
+    const double beta = 0.5 * dt;                    // φ/2 = β |ω|
+    const double turn2 = norm2(spin) * beta * beta;  // (φ/2)²
+    if (turn2 > kSeriesLimit) return false;
+    const HalfAngle h = half_angle_series(turn2);
+    const double scale = beta * h.sinc;
+    q = renormalised(Quat{h.cos, scale * spin.x, scale * spin.y, scale * spin.z} * q);
     return true;
 }
 
 // One step of torque-free rotation: the fast path where it applies, the general one otherwise.
 RODSEA_HD inline void rotate_free(Quat& q, Vec3& spin, const Rotor& rotor, double dt) {
+    if (rotor.isotropic && rotate_isotropic(q, spin, dt)) return;
     switch (rotor.axis) {
         case 0:
             if (rotate_symmetric<0>(q, spin, rotor, dt)) return;
