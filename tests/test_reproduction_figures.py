@@ -1,7 +1,7 @@
 """Issue 19: the figures of docs/reproduction.md are drawn from the committed tables alone.
 Regenerates Fig. 1c's figure into a scratch directory and checks every curve it drew against
 the tables, read here with the csv module (not the script's parser), and the PNG's size; then
-the 38 mm row's points against the block means of their series tables.
+the 38 mm row's and Fig. 1f's points against the block means of their series tables.
 
     /usr/bin/python3 tests/test_reproduction_figures.py SOURCE_DIR SCRATCH_DIR
 Exit 77 (skipped) without numpy or matplotlib.
@@ -63,31 +63,47 @@ assert head[:8] == b"\x89PNG\r\n\x1a\n"
 assert struct.unpack(">II", head[16:24]) == (1320, 440), struct.unpack(">II", head[16:24])
 print(f"checked {checked} curves of reproduction-fig1c.png against their tables")
 
-# The 38 mm row: each seed's point is the mean of its 15 s block means over 60–180 s, computed
-# here from the series table with the csv module.
-run = subprocess.run([sys.executable, script, "--only", "row38", "--out", scratch, "--dump"],
-                     capture_output=True, text=True)
-assert run.returncode == 0, run.stderr
-with open(os.path.join(scratch, "reproduction-row38.json")) as f:
-    row = json.load(f)
-expected = []
-for phi, tables in figures.ROW38.items():
-    for relative in tables:
-        path = os.path.join(source, relative)
-        if not os.path.isfile(path):
-            continue
-        with open(path, encoding="utf-8") as f:
-            rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
-        col = {name: i for i, name in enumerate(rows[0])}
-        blocks = {}
-        for r in rows[1:]:
-            middle = 0.5 * (float(r[col["t_from"]]) + float(r[col["t_to"]]))
-            if 60.0 <= middle < 180.0:
-                blocks.setdefault(int((middle - 60.0) // 15.0), []).append(float(r[col["P_polar"]]))
-        means = [sum(v) / len(v) for _, v in sorted(blocks.items())]
-        expected.append((float(phi), sum(means) / len(means)))
-drawn = list(zip(row["P_polar: seeds"]["x"], row["P_polar: seeds"]["y"]))
-assert len(drawn) == len(expected) >= 4, (drawn, expected)
-for (x, y), (ex, ey) in zip(drawn, expected):
-    assert x == ex and abs(y - ey) < 1e-12, ((x, y), (ex, ey))
-print(f"checked the {len(drawn)} runs of reproduction-row38.png against their series tables")
+def block_mean(path, column, start, end, block=15.0):
+    """The mean of the block means of `column` over [start, end), bins by their middles, read
+    with the csv module."""
+    with open(path, encoding="utf-8") as f:
+        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
+    col = {name: i for i, name in enumerate(rows[0])}
+    blocks = {}
+    for r in rows[1:]:
+        middle = 0.5 * (float(r[col["t_from"]]) + float(r[col["t_to"]]))
+        if start <= middle < end:
+            blocks.setdefault(int((middle - start) // block), []).append(float(r[col[column]]))
+    means = [sum(v) / len(v) for _, v in sorted(blocks.items())]
+    return sum(means) / len(means)
+
+
+def check_points(name, drawn_points, expected, at_least):
+    assert len(drawn_points) == len(expected) >= at_least, (drawn_points, expected)
+    for (x, y), (ex, ey) in zip(drawn_points, expected):
+        assert x == ex and abs(y - ey) < 1e-12, ((x, y), (ex, ey))
+    print(f"checked the {len(drawn_points)} runs of reproduction-{name}.png against their "
+          "series tables")
+
+
+def drawn_figure(name):
+    run = subprocess.run([sys.executable, script, "--only", name, "--out", scratch, "--dump"],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    with open(os.path.join(scratch, f"reproduction-{name}.json")) as f:
+        return json.load(f)
+
+
+# The 38 mm row: each seed's point is the mean of its 15 s block means over 60–180 s.
+row = drawn_figure("row38")
+expected = [(float(phi), block_mean(os.path.join(source, relative), "P_polar", 60.0, 180.0))
+            for phi, tables in figures.ROW38.items() for relative in tables
+            if os.path.isfile(os.path.join(source, relative))]
+check_points("row38", list(zip(row["P_polar: seeds"]["x"], row["P_polar: seeds"]["y"])),
+             expected, 4)
+
+# Fig. 1f: each D_r's point is the mean of its 15 s block means over 30–90 s.
+fig1f = drawn_figure("fig1f")
+expected = [(d_r, block_mean(os.path.join(source, relative), "P_polar", 30.0, 90.0))
+            for d_r, relative in figures.FIG1F if os.path.isfile(os.path.join(source, relative))]
+check_points("fig1f", list(zip(fig1f["P"]["x"], fig1f["P"]["y"])), expected, 3)
