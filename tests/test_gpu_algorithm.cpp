@@ -254,10 +254,10 @@ TEST_P(GpuAlgorithm, AnEnsembleWithoutARetiredSystemStepsTheOthersOn) {
 
 RODSEA_ON_EACH_BACKEND(GpuAlgorithm);
 
-// On the CPU an ensemble steps its systems side by side, min(threads, systems) at a time, each on
-// the threads left over (nested when there are more threads than systems). Three unlike systems
-// (two sizes, so the workers' shares are uneven) on 1 to 4 threads, and two on 4 (two threads
-// each), reach the bits each reaches alone on one thread; a retired system changes the sharing
+// On the CPU an ensemble steps its systems side by side, min(threads, systems) at a time on one
+// thread each, or, with two threads or more per system, in turn on all of them. Three unlike
+// systems (two sizes, so the workers' shares are uneven) on 1 to 4 threads, and two on 4 (in
+// turn), reach the bits each reaches alone on one thread; a retired system changes the sharing
 // and nothing else.
 TEST(CpuEnsemble, SystemsSideBySideStepAsTheyStepAlone) {
     std::vector<Scene> scenes = {noisy_dense_mixture(51), noisy_dense_mixture(52),

@@ -162,12 +162,10 @@ void Ensemble::step_cpu_systems() {
         }
     };
     cpu::for_each_in_parallel(shares_.size(), static_cast<int>(shares_.size()),
-                              threads_per_system() > 1, [&](std::size_t worker) {
+                              [&](std::size_t worker) {
                                   for (std::size_t m : shares_[worker])
                                       step_one(m);
                               });
-    for (const std::exception_ptr& e : failed)
-        if (e) std::rethrow_exception(e);
     profile_ = {};
     for (std::size_t m = 0; m < n; ++m) {
         const Simulation& s = cpu_systems_[m];
@@ -180,17 +178,23 @@ void Ensemble::step_cpu_systems() {
         profile_.resolution += s.profile().resolution;
         profile_.noise += s.profile().noise;
     }
+    for (const std::exception_ptr& e : failed)  // every system has stepped and been counted
+        if (e) std::rethrow_exception(e);
     for (std::size_t m = 0; m < n; ++m)
         if (blown_[m]) throw BlowUpError(naming_system(m, *blown_[m]), step_count_[m], time(m));
 }
 
 int Ensemble::systems_side_by_side() const {
-    return static_cast<int>(
-        std::min(static_cast<std::size_t>(options_.threads), cpu_systems_.size()));
+    const auto threads = static_cast<std::size_t>(options_.threads);
+    const std::size_t systems = cpu_systems_.size();
+    // With threads to spare for two or more per system, side by side would nest teams, which
+    // libgomp starts afresh at every region: the systems take turns on every thread instead.
+    if (systems < 2 || threads >= 2 * systems) return 1;
+    return static_cast<int>(std::min(threads, systems));
 }
 
 int Ensemble::threads_per_system() const {
-    return std::max(1, options_.threads / std::max(1, systems_side_by_side()));
+    return systems_side_by_side() > 1 ? 1 : options_.threads;
 }
 
 void Ensemble::share_threads() {

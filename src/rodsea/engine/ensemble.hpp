@@ -1,10 +1,10 @@
 #pragma once
 // Many independent systems stepped together: a phase diagram's dozens of small systems, each too
 // small to fill a GPU, share one device's kernels (each kernel's elements are the bodies,
-// spheres or contacts of every system). On the CPU they step side by side: with T threads and M
-// systems, min(T, M) systems at a time, each on T / min(T, M) threads (small systems use threads
-// far better one per system than all on one). Each system steps exactly as it would alone on the
-// same backend: the same bits, on any number of threads.
+// spheres or contacts of every system). On the CPU, with T threads and M systems, they step side
+// by side, min(T, M) at a time on one thread each (small systems use threads far better one per
+// system than all on one), unless T >= 2M: then one after another, each on all T. Each system
+// steps exactly as it would alone on the same backend: the same bits, on any number of threads.
 //
 //   std::vector<Simulation> systems;
 //   for (double phi : {0.2, 0.5, 0.8}) systems.emplace_back(params(phi), bodies(phi));

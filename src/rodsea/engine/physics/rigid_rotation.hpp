@@ -1,8 +1,8 @@
 #pragma once
 // Torque-free rotation of a rigid body for one time step: world angular momentum L is kept
-// exactly. Axisymmetric and spherical bodies (every rod and bead) follow the exact solution,
-// regular precession; asymmetric bodies use the symmetric splitting into the exact rotations
-// about the three principal axes (energy error O(dt²), bounded).
+// exactly. Axisymmetric bodies (every rod) follow the exact solution, regular precession, and
+// spheres (every bead) turn about their constant ω; asymmetric bodies use the symmetric splitting
+// into the exact rotations about the three principal axes (energy error O(dt²), bounded).
 #include <algorithm>
 #include <cmath>
 
@@ -149,12 +149,12 @@ RODSEA_HD inline void rotate_general(Quat& q, Vec3& spin, const Rotor& rotor, do
 }
 
 // The same regular precession as rotate_general for an axisymmetric body with symmetry axis K
-// (every rod and bead: rotate_general's square roots, divisions and quaternion rotations were
-// over 60 % of the step). The precession about L by φ = |L| dt / I_t is the quaternion
-// (cos(φ/2), L sin(φ/2) / |L|), and both entries are even series in |L| dt / 2I_t: no square
-// root of |L|², no division by it. ω = L / I_t + (1/I_a − 1/I_t) L_a u follows from L and the new
-// axis u without rotating back into the body frame. Returns false, changing nothing, when an
-// angle is too large for the series; rotate_general then does it.
+// (every rod, and a bead too large a turn for rotate_isotropic: rotate_general's square roots,
+// divisions and quaternion rotations were over 60 % of the step). The precession about L by φ = |L|
+// dt / I_t is the quaternion (cos(φ/2), L sin(φ/2) / |L|), and both entries are even series in |L|
+// dt / 2I_t: no square root of |L|², no division by it. ω = L / I_t + (1/I_a − 1/I_t) L_a u follows
+// from L and the new axis u without rotating back into the body frame. Returns false, changing
+// nothing, when an angle is too large for the series; rotate_general then does it.
 template <int K>
 RODSEA_HD bool rotate_symmetric(Quat& q, Vec3& spin, const Rotor& rotor, double dt) {
     const Vec3 u = rotated_axis(q, K);

@@ -36,27 +36,25 @@ inline Chunk chunk_of(std::size_t n, int t, int parts) {
     return {n * i / p, n * (i + 1) / p};
 }
 
-// body(i) for every i in [0, n) on up to `threads` threads, item i on the same thread at every
-// call (a static schedule keeps its data in that core's caches). Only for items whose results do
-// not depend on the thread that computes them, such as independent systems. `nested`: each body
-// opens parallel regions of its own, which then get threads of their own. The body must not
-// throw.
+// body(i) for every i in [0, n) on up to `threads` threads, item i on the same thread of the
+// team at every call (a static schedule: its data tends to stay in that thread's caches). Only
+// for items whose results do not depend on the thread that computes them, such as independent
+// systems, and whose own parallel regions (if any) then run on their one thread: libgomp starts
+// new threads for every nested team. The body must not throw.
 template <class Body>
-void for_each_in_parallel(std::size_t n, int threads, bool nested, const Body& body) {
+void for_each_in_parallel(std::size_t n, int threads, const Body& body) {
 #ifdef _OPENMP
     if (threads <= 1 || n <= 1) {  // no team to start
         for (std::size_t i = 0; i < n; ++i)
             body(i);
         return;
     }
-    if (nested && omp_get_max_active_levels() < 2) omp_set_max_active_levels(2);
     const auto count = static_cast<std::int64_t>(n);
 #pragma omp parallel for schedule(static) num_threads(threads)
     for (std::int64_t i = 0; i < count; ++i)
         body(static_cast<std::size_t>(i));
 #else
     (void)threads;
-    (void)nested;
     for (std::size_t i = 0; i < n; ++i)
         body(i);
 #endif
