@@ -98,42 +98,46 @@ TEST_P(FreeFlight, SpinningBeadTurnsAboutItsFixedSpin) {
 
 RODSEA_ON_EACH_BACKEND(FreeFlight);
 
+// One large step of torque-free rotation and 200 small ones from the same start, as
+// (attitude, spin) after each: a half-angle of 0.09 rad per large step (above the series' 0.02),
+// 4.5e-4 per small one.
+struct LargeAndSmall {
+    Quat q_large, q_small;
+    Vec3 w_large, w_small;
+};
+LargeAndSmall one_large_step_and_many_small(const physics::Rotor& rotor, const Vec3& w0) {
+    const Quat q0 = Quat::from_axis_angle(normalized(Vec3{0.3, 1.0, -0.2}), 0.7);
+    const double dt = 2e-3;
+    LargeAndSmall r{q0, q0, w0, w0};
+    physics::rotate_free(r.q_large, r.w_large, rotor, dt);
+    for (int k = 0; k < 200; ++k)
+        physics::rotate_free(r.q_small, r.w_small, rotor, dt / 200);
+    return r;
+}
+
 // A symmetric body takes small steps through power series and large ones (a half-angle above
 // 0.02 rad) through the library's sin and cos. Both follow the exact flow, so one large step
 // equals 200 small ones to round-off (~200 steps × a few ulps ≈ 1e-13).
 TEST(FreeFlight, SymmetricPrecessionIsTheSameInOneLargeStepAndManySmallOnes) {
-    const Vec3 inertia = polar_rod_species().shape.principal_inertia;
-    const Quat q0 = Quat::from_axis_angle(normalized(Vec3{0.3, 1.0, -0.2}), 0.7);
     const Vec3 w0{35.0, -20.0, 80.0};
-    const double dt = 2e-3;  // |ω| dt / 2 ≈ 0.09 rad per large step; 4.5e-4 per small one
-    Quat q_large = q0, q_small = q0;
-    Vec3 w_large = w0, w_small = w0;
-    const physics::Rotor rotor = physics::make_rotor(inertia);
-    physics::rotate_free(q_large, w_large, rotor, dt);
-    for (int k = 0; k < 200; ++k)
-        physics::rotate_free(q_small, w_small, rotor, dt / 200);
+    const LargeAndSmall r = one_large_step_and_many_small(
+        physics::make_rotor(polar_rod_species().shape.principal_inertia), w0);
     for (const Vec3& e : {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}})
-        EXPECT_NEAR(norm(rotate(q_large, e) - rotate(q_small, e)), 0.0, 1e-13);
-    EXPECT_NEAR(norm(w_large - w_small), 0.0, 1e-13 * norm(w0));
+        EXPECT_NEAR(norm(rotate(r.q_large, e) - rotate(r.q_small, e)), 0.0, 1e-13);
+    EXPECT_NEAR(norm(r.w_large - r.w_small), 0.0, 1e-13 * norm(w0));
 }
 
-// The same for a sphere: its large steps (a half-angle above 0.02 rad) go the symmetric body's
-// general way, its small ones its own series, and the two agree to round-off.
+// The same for a sphere: its large steps go the symmetric body's general way, its small ones its
+// own series, and the two agree to round-off; the small ones keep ω to the bit.
 TEST(FreeFlight, SphereRotationIsTheSameInOneLargeStepAndManySmallOnes) {
     const physics::Rotor rotor = physics::make_rotor(bead_species().shape.principal_inertia);
     ASSERT_TRUE(rotor.isotropic);
-    const Quat q0 = Quat::from_axis_angle(normalized(Vec3{0.3, 1.0, -0.2}), 0.7);
     const Vec3 w0{35.0, -20.0, 80.0};
-    const double dt = 2e-3;
-    Quat q_large = q0, q_small = q0;
-    Vec3 w_large = w0, w_small = w0;
-    physics::rotate_free(q_large, w_large, rotor, dt);
-    for (int k = 0; k < 200; ++k)
-        physics::rotate_free(q_small, w_small, rotor, dt / 200);
+    const LargeAndSmall r = one_large_step_and_many_small(rotor, w0);
     for (const Vec3& e : {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}})
-        EXPECT_NEAR(norm(rotate(q_large, e) - rotate(q_small, e)), 0.0, 1e-13);
-    EXPECT_NEAR(norm(w_large - w0), 0.0, 1e-13 * norm(w0));
-    EXPECT_EQ(norm(w_small - w0), 0.0);
+        EXPECT_NEAR(norm(rotate(r.q_large, e) - rotate(r.q_small, e)), 0.0, 1e-13);
+    EXPECT_NEAR(norm(r.w_large - w0), 0.0, 1e-13 * norm(w0));
+    EXPECT_EQ(norm(r.w_small - w0), 0.0);
 }
 
 // Reference: Euler's equations and q̇ = ½ q ⊗ (0, ω_body) by classical RK4 at dt/20.
