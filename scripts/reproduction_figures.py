@@ -60,6 +60,12 @@ FIG1F = [(0.0, f"{DATA}/finite-size/fig1c-phi_a0.50-scale0.15.series.csv")] + [
     for d in (0.026, 0.23, 1.21, 1.87)]
 FIG1F_WINDOW = (30.0, 90.0)
 
+# SI S5 (Fig. S7), the bead medium in the 38 mm box: (φ_a, series table); P over BEADS_WINDOW from
+# blocks of ROW38_BLOCK seconds. A φ_a not run yet is left out.
+BEADS = [(phi, f"{DATA}/beads-38mm/medium.area_fraction={phi:g}.series.csv")
+         for phi in (0.50, 0.60, 0.70, 0.75)]
+BEADS_WINDOW = (30.0, 90.0)
+
 # Fig. 5b, first look: the medium's velocity around polar rods against distance in the 63 mm box
 # (label, profile table) from `rodsea analyze --observables medium_velocity`.
 FIG5B_PROFILES = [
@@ -240,48 +246,66 @@ def draw_row38(plt):
     return fig, dump
 
 
-def draw_fig1f(plt):
-    """P against the polar rods' intrinsic noise D_r at φ_a = 0.50 in the 38 mm box (over
-    FIG1F_WINDOW, errors from blocks), and P(t) of each run."""
+def draw_points_and_series(plt, runs, window, x_label, x_name, unit, title):
+    """P over `window` (errors from blocks) against a parameter, one run per value, beside each
+    run's P(t). runs: [(value, series table)]; a table not there yet is left out."""
     from block_means import block_means
     fig, (points, series) = plt.subplots(1, 2, figsize=(10.0, 3.6))
     xs, ys, errs = [], [], []
     dump = {}
-    for (d_r, relative), colour in zip(FIG1F, ("C0", "C1", "C2", "C3", "C4")):
+    for k, (value, relative) in enumerate(runs):
         if not os.path.isfile(os.path.join(ROOT, relative)):
             continue  # a point not run yet
         t = read_csv(relative)
         for needed in ("t_from", "t_to", "P_polar"):
             column(t, needed, relative)
         try:
-            mean, err, _ = block_means(t, *FIG1F_WINDOW, ROW38_BLOCK)["P_polar"]
+            mean, err, _ = block_means(t, *window, ROW38_BLOCK)["P_polar"]
         except (KeyError, ValueError):
-            raise TableError(f"{relative}: shorter than {FIG1F_WINDOW[1]:g} s") from None
-        xs.append(d_r)
+            raise TableError(f"{relative}: shorter than {window[1]:g} s") from None
+        xs.append(value)
         ys.append(mean)
         errs.append(err)
         middle = 0.5 * (t["t_from"] + t["t_to"])
-        keep = middle <= FIG1F_WINDOW[1]
-        series.plot(middle[keep], t["P_polar"][keep], color=colour, lw=0.9,
-                    label=f"D_r = {d_r:g} rad²/s")
-        dump[f"P(t): D_r = {d_r:g}"] = {"x": middle[keep].tolist(),
-                                        "y": t["P_polar"][keep].tolist()}
+        keep = middle <= window[1]
+        series.plot(middle[keep], t["P_polar"][keep], color=f"C{k}", lw=0.9,
+                    label=f"{x_name} = {value:g}{unit}")
+        dump[f"P(t): {x_name} = {value:g}"] = {"x": middle[keep].tolist(),
+                                               "y": t["P_polar"][keep].tolist()}
     if not xs:
-        raise TableError(f"none of {', '.join(r for _, r in FIG1F)} exists")
+        raise TableError(f"none of {', '.join(r for _, r in runs)} exists")
     points.errorbar(xs, ys, yerr=errs, fmt="o-", ms=5, capsize=3, color="C3")
     dump["P"] = {"x": xs, "y": ys, "err": errs}
-    points.set_xscale("symlog", linthresh=0.01)
-    points.set_xlim(-0.002, 3.0)
-    points.set_xlabel("D_r (rad²/s; linear below 0.01)")
-    points.set_ylabel(f"P, {FIG1F_WINDOW[0]:g}–{FIG1F_WINDOW[1]:g} s")
-    points.set_title("P against the polar rods' noise", fontsize=10)
-    series.axvspan(*FIG1F_WINDOW, color="0.93", zorder=0)
+    points.set_xlabel(x_label)
+    points.set_ylabel(f"P, {window[0]:g}–{window[1]:g} s")
+    series.axvspan(*window, color="0.93", zorder=0)
     series.set_xlabel("t (s)")
     series.set_ylabel("P (1 s bins)")
     series.legend(loc="best", fontsize=7)
-    fig.suptitle("Fig. 1f, 38 mm box (18 polar rods), φ_p = 0.05, φ_a = 0.50, σ = 3.125 "
-                 "(grey: the window)", fontsize=10)
-    fig.tight_layout()
+    fig.suptitle(title + " (grey: the window)", fontsize=10)
+    fig.tight_layout(rect=(0, 0, 1, 0.94))
+    return fig, points, dump
+
+
+def draw_fig1f(plt):
+    """P against the polar rods' intrinsic noise D_r at φ_a = 0.50 in the 38 mm box (over
+    FIG1F_WINDOW, errors from blocks), and P(t) of each run."""
+    fig, points, dump = draw_points_and_series(
+        plt, FIG1F, FIG1F_WINDOW, "D_r (rad²/s; linear below 0.01)", "D_r", " rad²/s",
+        "Fig. 1f, 38 mm box (18 polar rods), φ_p = 0.05, φ_a = 0.50, σ = 3.125")
+    points.set_xscale("symlog", linthresh=0.01)
+    points.set_xlim(-0.002, 3.0)
+    points.set_title("P against the polar rods' noise", fontsize=10)
+    return fig, dump
+
+
+def draw_beads(plt):
+    """P against the bead medium's φ_a in the 38 mm box (over BEADS_WINDOW), and P(t)."""
+    fig, points, dump = draw_points_and_series(
+        plt, BEADS, BEADS_WINDOW, "φ_a (0.8 mm beads)", "φ_a", "",
+        "SI S5, bead medium, 38 mm box (18 polar rods), φ_p = 0.05, D_r = 0")
+    points.set_xlim(0.45, 0.80)
+    points.set_title("P against the beads' area fraction", fontsize=10)
     return fig, dump
 
 
@@ -316,7 +340,7 @@ def draw_fig5b(plt):
 
 FIGURES = {"fig1c": draw_fig1c, "fig1c-series": draw_fig1c_series,
            "finite-size": draw_finite_size, "row38": draw_row38, "fig1f": draw_fig1f,
-           "fig5b": draw_fig5b}
+           "beads": draw_beads, "fig5b": draw_fig5b}
 
 
 def main(argv):

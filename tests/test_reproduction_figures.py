@@ -1,7 +1,8 @@
 """Issue 19: the figures of docs/reproduction.md are drawn from the committed tables alone.
 Regenerates Fig. 1c's figure into a scratch directory and checks every curve it drew against
 the tables, read here with the csv module (not the script's parser), and the PNG's size; then
-the 38 mm row's and Fig. 1f's points against the block means of their series tables.
+the 38 mm row's, Fig. 1f's and the bead medium's points against the block means of their
+series tables.
 
     /usr/bin/python3 tests/test_reproduction_figures.py SOURCE_DIR SCRATCH_DIR
 Exit 77 (skipped) without numpy or matplotlib.
@@ -107,3 +108,9 @@ fig1f = drawn_figure("fig1f")
 expected = [(d_r, block_mean(os.path.join(source, relative), "P_polar", 30.0, 90.0))
             for d_r, relative in figures.FIG1F if os.path.isfile(os.path.join(source, relative))]
 check_points("fig1f", list(zip(fig1f["P"]["x"], fig1f["P"]["y"])), expected, 3)
+
+# The bead medium: each φ_a's point is the mean of its 15 s block means over 30–90 s.
+beads = drawn_figure("beads")
+expected = [(phi, block_mean(os.path.join(source, relative), "P_polar", 30.0, 90.0))
+            for phi, relative in figures.BEADS if os.path.isfile(os.path.join(source, relative))]
+check_points("beads", list(zip(beads["P"]["x"], beads["P"]["y"])), expected, 2)
