@@ -5,9 +5,10 @@ quotes for runs too short for the automatic steady window.
     scripts/block_means.py SERIES.csv... --from T0 [--to T1] [--block SECONDS]
 
 SERIES.csv is a table of scripts/reproduction_series.py (time bins of P_polar, S_medium, Sigma,
-N_m, ...). The window [T0, T1) (s; T1 default: the table's end) (bins by their middles) is cut into blocks of --block
-seconds (default 15; a shorter remainder at the end is left out); each column's mean is the mean of the block means and its error their
-standard deviation over √(blocks − 1), the error of a mean of independent blocks (blocks longer
+N_m, ...). The window [T0, T1) (s; T1 default: the table's end; bins by their middles) is cut
+into blocks of --block seconds (default 15; a shorter remainder at the end is left out); each
+column's mean is the mean of the block means and its error their standard deviation over
+√(blocks − 1), the error of a mean of independent blocks (blocks longer
 than the correlation time of P, a few seconds here). Prints one line per table and column.
 """
 import argparse

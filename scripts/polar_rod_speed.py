@@ -27,6 +27,15 @@ def axis_x(q):
 
 
 def speeds(path, start, end, lag):
+    try:
+        return read_speeds(path, start, end, lag)
+    except (OSError, KeyError, ValueError, UnicodeDecodeError, tomllib.TOMLDecodeError) as e:
+        raise SystemExit(f"{path}: not a rodsea trajectory with a config ({e})") from None
+
+
+def read_speeds(path, start, end, lag):
+    if lag <= 0:
+        raise SystemExit(f"--lag {lag}: must be > 0 s")
     with h5py.File(path, "r") as f:
         config = tomllib.loads(f["parameters/rodsea/config"][()].decode())
         kinds = [s.get("kind") for s in config.get("species", [])]
@@ -42,6 +51,8 @@ def speeds(path, start, end, lag):
         x = bodies["position/value"][keep][:, polar, :2].astype(float)
         q = bodies["orientation/value"][keep][:, polar, :].astype(float)
         box = bodies["box/edges/value"][0][:2]
+    if not np.all(np.isfinite(box)) or np.any(box <= 0):
+        raise SystemExit(f"{path}: box edges {box} are not positive lengths")
     t = time[keep]
     step = np.diff(x, axis=0)
     step -= box * np.round(step / box)  # minimum image: no rod crosses half the box per frame

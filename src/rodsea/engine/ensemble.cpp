@@ -150,7 +150,8 @@ void Ensemble::step() {
 void Ensemble::step_cpu_systems() {
     const std::size_t n = cpu_systems_.size();
     // Every system steps, as on the GPU, before the first blow-up is reported.
-    std::vector<std::exception_ptr> failed(n);
+    std::vector<std::exception_ptr>& failed = failed_;
+    failed.assign(n, nullptr);  // no allocation after the first step
     const auto step_one = [&](std::size_t m) {
         blown_[m].reset();
         try {

@@ -16,6 +16,7 @@
 // each keeps its own parameters (box, drive, species, noise, seed, solver) and step count; they
 // must share dt only in the sense that each step advances every system by its own dt.
 #include <cstdint>
+#include <exception>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -84,6 +85,7 @@ class Ensemble {
     // The CPU steps each Simulation; the data-parallel backends one stepper for all.
     std::vector<Simulation> cpu_systems_;
     std::vector<std::vector<std::size_t>> shares_;  // the CPU systems each worker steps
+    std::vector<std::exception_ptr> failed_;        // per CPU system, in the last step
     std::vector<std::unique_ptr<SpeciesTable>> species_;
     std::unique_ptr<parallel::EnsembleStepper> stepper_;
 };
