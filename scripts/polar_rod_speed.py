@@ -2,16 +2,20 @@
 """How fast the polar rods of a run move, over a time window: a check that they still self-propel
 (in a dense medium they may be caged, and a low P then says little about alignment).
 
-    scripts/polar_rod_speed.py RUN_DIR... --from T0 [--to T1] [--lag SECONDS]
+    scripts/polar_rod_speed.py RUN_DIR... --from T0 [--to T1] [--lag SECONDS] [--csv FILE]
 
 For each run: the polar rods' displacement over lags of --lag seconds (default 1; frame-to-frame
 steps unwrapped by the minimum image), as the mean speed |Δr|/lag and the mean speed along the
 rod's own axis u (body x, thick → thin), Δr·u/lag, both in mm/s over every rod and every lag
 start in [T0, T1). A lone rod at this gap moves 2.5 mm/s thick → thin (docs/model.md).
+The error is the standard error over rods of each rod's own mean: the spread between rods, not
+the (smaller) error of a time average, because a caged rod and a free one differ the most.
+--csv FILE also writes one row per run (speeds in mm/s, times in s) for data/reproduction/.
 Reads RUN_DIR/trajectory.h5 (H5MD); the polar rods are the species of kind "polar_rod" in the
 run's config stored there (species are numbered in the config's order).
 """
 import argparse
+import csv
 import sys
 
 import tomllib
@@ -64,9 +68,15 @@ def read_speeds(path, start, end, lag):
     u = axis_x(q[:-frames])[..., :2]
     u /= np.linalg.norm(u, axis=-1, keepdims=True)  # the rod lies nearly flat
     dt = t[frames:] - t[:-frames]
-    speed = np.linalg.norm(d, axis=-1) / dt[:, None]
-    along = np.sum(d * u, axis=-1) / dt[:, None]
-    return speed.mean(), along.mean(), polar.sum(), len(t)
+    speed = (np.linalg.norm(d, axis=-1) / dt[:, None]).mean(axis=0)  # one mean per rod
+    along = (np.sum(d * u, axis=-1) / dt[:, None]).mean(axis=0)
+    return (*mean_and_error(speed), *mean_and_error(along), polar.sum(), len(t))
+
+
+def mean_and_error(per_rod):
+    if len(per_rod) < 2:
+        return per_rod.mean(), float("nan")
+    return per_rod.mean(), per_rod.std(ddof=1) / np.sqrt(len(per_rod))
 
 
 def main():
@@ -75,11 +85,23 @@ def main():
     p.add_argument("--from", dest="start", type=float, required=True)
     p.add_argument("--to", dest="end", type=float, default=np.inf)
     p.add_argument("--lag", type=float, default=1.0)
+    p.add_argument("--csv", help="also write one row per run to this file")
     a = p.parse_args()
+    rows = []
     for run in a.runs:
-        speed, along, rods, frames = speeds(f"{run}/trajectory.h5", a.start, a.end, a.lag)
-        print(f"{run}: {rods} polar rods, {frames} frames: |Δr|/lag = {speed:.3f} mm/s, "
-              f"along the axis {along:+.3f} mm/s (lag {a.lag:g} s)")
+        speed, speed_err, along, along_err, rods, frames = speeds(
+            f"{run}/trajectory.h5", a.start, a.end, a.lag)
+        print(f"{run}: {rods} polar rods, {frames} frames: |Δr|/lag = {speed:.3f} ± "
+              f"{speed_err:.3f} mm/s, along the axis {along:+.3f} ± {along_err:.3f} mm/s "
+              f"(lag {a.lag:g} s)")
+        rows.append([run, a.start, a.end, a.lag, rods, frames, f"{speed:.4f}", f"{speed_err:.4f}",
+                     f"{along:.4f}", f"{along_err:.4f}"])
+    if a.csv:
+        with open(a.csv, "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(["run", "from_s", "to_s", "lag_s", "polar_rods", "frames", "speed_mm_s",
+                        "speed_err_mm_s", "along_axis_mm_s", "along_axis_err_mm_s"])
+            w.writerows(rows)
     return 0
 
 
