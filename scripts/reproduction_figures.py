@@ -65,6 +65,13 @@ FIG1F_WINDOW = (30.0, 90.0)
 BEADS = [(phi, f"{DATA}/beads-38mm/medium.area_fraction={phi:g}.series.csv")
          for phi in (0.50, 0.60, 0.70, 0.75)]
 BEADS_WINDOW = (30.0, 90.0)
+# The same with beads of 0.033 polar-rod masses (aluminium against brass; docs/reproduction.md),
+# 45 s runs: P over BEADS_LIGHT_WINDOW (the last 15 s: at φ_a ≥ 0.70 the rods order only after
+# 20–35 s) from blocks of BEADS_LIGHT_BLOCK seconds.
+BEADS_LIGHT = [(phi, f"{DATA}/beads-light-38mm/medium.area_fraction={phi:g}.series.csv")
+               for phi in (0.50, 0.60, 0.70, 0.75)]
+BEADS_LIGHT_WINDOW = (30.0, 45.0)
+BEADS_LIGHT_BLOCK = 5.0
 
 # Fig. 5b, first look: the medium's velocity around polar rods against distance in the 63 mm box
 # (label, profile table) from `rodsea analyze --observables medium_velocity`.
@@ -246,34 +253,43 @@ def draw_row38(plt):
     return fig, dump
 
 
-def draw_points_and_series(plt, runs, window, x_label, x_name, unit, title):
-    """P over `window` (errors from blocks) against a parameter, one run per value, beside each
-    run's P(t). runs: [(value, series table)]; a table not there yet is left out."""
+def window_points(runs, window, block):
+    """P over `window` (the mean of blocks of `block` seconds, and its error) of each run: [(value,
+    mean, error, series table)]; a table not there yet is left out."""
     from block_means import block_means
-    fig, (points, series) = plt.subplots(1, 2, figsize=(10.0, 3.6))
-    xs, ys, errs = [], [], []
-    dump = {}
-    for k, (value, relative) in enumerate(runs):
+    points = []
+    for value, relative in runs:
         if not os.path.isfile(os.path.join(ROOT, relative)):
             continue  # a point not run yet
         t = read_csv(relative)
         for needed in ("t_from", "t_to", "P_polar"):
             column(t, needed, relative)
         try:
-            mean, err, _ = block_means(t, *window, ROW38_BLOCK)["P_polar"]
+            mean, err, _ = block_means(t, *window, block)["P_polar"]
         except (KeyError, ValueError):
             raise TableError(f"{relative}: shorter than {window[1]:g} s") from None
-        xs.append(value)
-        ys.append(mean)
-        errs.append(err)
+        points.append((value, mean, err, t))
+    return points
+
+
+def draw_points_and_series(plt, runs, window, x_label, x_name, unit, title, block=ROW38_BLOCK):
+    """P over `window` (errors from blocks) against a parameter, one run per value, beside each
+    run's P(t). runs: [(value, series table)]; a table not there yet is left out."""
+    fig, (points, series) = plt.subplots(1, 2, figsize=(10.0, 3.6))
+    measured = window_points(runs, window, block)
+    if not measured:
+        raise TableError(f"none of {', '.join(r for _, r in runs)} exists")
+    dump = {}
+    values = [value for value, _ in runs]
+    for value, _, _, t in measured:
+        k = values.index(value)  # a colour per value, whichever points have run
         middle = 0.5 * (t["t_from"] + t["t_to"])
         keep = middle <= window[1]
         series.plot(middle[keep], t["P_polar"][keep], color=f"C{k}", lw=0.9,
                     label=f"{x_name} = {value:g}{unit}")
         dump[f"P(t): {x_name} = {value:g}"] = {"x": middle[keep].tolist(),
                                                "y": t["P_polar"][keep].tolist()}
-    if not xs:
-        raise TableError(f"none of {', '.join(r for _, r in runs)} exists")
+    xs, ys, errs = ([m[i] for m in measured] for i in range(3))
     points.errorbar(xs, ys, yerr=errs, fmt="o-", ms=5, capsize=3, color="C3")
     dump["P"] = {"x": xs, "y": ys, "err": errs}
     points.set_xlabel(x_label)
@@ -309,6 +325,29 @@ def draw_beads(plt):
     return fig, dump
 
 
+def draw_beads_light(plt):
+    """The same with light beads (BEADS_LIGHT, over BEADS_LIGHT_WINDOW), the default mass's
+    points beside them in grey."""
+    fig, points, dump = draw_points_and_series(
+        plt, BEADS_LIGHT, BEADS_LIGHT_WINDOW, "φ_a (0.8 mm beads)", "φ_a", "",
+        "SI S5, beads of 0.033 polar-rod masses, 38 mm box (18 polar rods), φ_p = 0.05, D_r = 0",
+        block=BEADS_LIGHT_BLOCK)
+    heavy = window_points(BEADS, BEADS_WINDOW, ROW38_BLOCK)
+    if heavy:
+        xs, ys, errs = ([m[i] for m in heavy] for i in range(3))
+        points.errorbar(xs, ys, yerr=errs, fmt="s--", ms=4, capsize=3, color="0.55",
+                        label=f"mass 0.2 ({BEADS_WINDOW[0]:g}–{BEADS_WINDOW[1]:g} s)")
+        dump["P, mass 0.2"] = {"x": xs, "y": ys, "err": errs}
+    points.lines[0].set_label(
+        f"mass 0.033 ({BEADS_LIGHT_WINDOW[0]:g}–{BEADS_LIGHT_WINDOW[1]:g} s)")
+    points.legend(loc="best", fontsize=7)
+    points.set_ylabel("P over the window")
+    points.set_xlim(0.45, 0.80)
+    points.set_ylim(0.0, 1.0)
+    points.set_title("P against φ_a: light and heavy beads", fontsize=10)
+    return fig, dump
+
+
 def draw_fig5b(plt):
     """The medium's mean velocity along the rod's axis (lab frame) and its mean speed against
     the distance from a polar rod, for each φ_a: the drag near the rod and the far field."""
@@ -340,7 +379,7 @@ def draw_fig5b(plt):
 
 FIGURES = {"fig1c": draw_fig1c, "fig1c-series": draw_fig1c_series,
            "finite-size": draw_finite_size, "row38": draw_row38, "fig1f": draw_fig1f,
-           "beads": draw_beads, "fig5b": draw_fig5b}
+           "beads": draw_beads, "beads-light": draw_beads_light, "fig5b": draw_fig5b}
 
 
 def main(argv):

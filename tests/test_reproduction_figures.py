@@ -1,8 +1,8 @@
 """Issue 19: the figures of docs/reproduction.md are drawn from the committed tables alone.
 Regenerates Fig. 1c's figure into a scratch directory and checks every curve it drew against
 the tables, read here with the csv module (not the script's parser), and the PNG's size; then
-the 38 mm row's, Fig. 1f's and the bead medium's points against the block means of their
-series tables.
+the 38 mm row's, Fig. 1f's and the bead medium's (heavy and light beads) points against the
+block means of their series tables.
 
     /usr/bin/python3 tests/test_reproduction_figures.py SOURCE_DIR SCRATCH_DIR
 Exit 77 (skipped) without numpy or matplotlib.
@@ -114,3 +114,12 @@ beads = drawn_figure("beads")
 expected = [(phi, block_mean(os.path.join(source, relative), "P_polar", 30.0, 90.0))
             for phi, relative in figures.BEADS if os.path.isfile(os.path.join(source, relative))]
 check_points("beads", list(zip(beads["P"]["x"], beads["P"]["y"])), expected, 2)
+
+# Light beads: each φ_a's point is the mean of its 5 s block means over 30–45 s, and the
+# default mass's points beside them are the "beads" figure's.
+light = drawn_figure("beads-light")
+expected = [(phi, block_mean(os.path.join(source, relative), "P_polar", 30.0, 45.0, block=5.0))
+            for phi, relative in figures.BEADS_LIGHT
+            if os.path.isfile(os.path.join(source, relative))]
+check_points("beads-light", list(zip(light["P"]["x"], light["P"]["y"])), expected, 3)
+assert light["P, mass 0.2"] == beads["P"], (light["P, mass 0.2"], beads["P"])

@@ -119,7 +119,9 @@ std::vector<KeySpec> make_keys() {
                             "beads; MODEL.md §2",
                             kApolarRod | kBead)
                     .doc("Mass in arbitrary units (only ratios matter); the inertia tensor "
-                         "scales with it."));
+                         "scales with it. A bead's mass decides whether dense beads cage the "
+                         "polar rods (0.2 cages them at φ_a = 0.70; 0.033, aluminium on brass, "
+                         "does not): docs/reproduction.md, SI S5."));
     k.push_back(
         real("species", "plate_friction")
             .range(closed(0.0, 10.0))
