@@ -338,7 +338,7 @@ def draw_beads_light(plt):
         points.errorbar(xs, ys, yerr=errs, fmt="s--", ms=4, capsize=3, color="0.55",
                         label=f"mass 0.2 ({BEADS_WINDOW[0]:g}–{BEADS_WINDOW[1]:g} s)")
         dump["P, mass 0.2"] = {"x": xs, "y": ys, "err": errs}
-    points.lines[0].set_label(
+    points.containers[0].set_label(  # the light beads' errorbar, drawn first
         f"mass 0.033 ({BEADS_LIGHT_WINDOW[0]:g}–{BEADS_LIGHT_WINDOW[1]:g} s)")
     points.legend(loc="best", fontsize=7)
     points.set_ylabel("P over the window")
