@@ -16,6 +16,7 @@ run's config stored there (species are numbered in the config's order).
 """
 import argparse
 import csv
+import os
 import sys
 
 import tomllib
@@ -97,12 +98,21 @@ def main():
         rows.append([run, a.start, a.end, a.lag, rods, frames, f"{speed:.4f}", f"{speed_err:.4f}",
                      f"{along:.4f}", f"{along_err:.4f}"])
     if a.csv:
-        with open(a.csv, "w", newline="") as f:
+        write_table(a.csv, rows)
+    return 0
+
+
+def write_table(path, rows):
+    """All or nothing: a table cut short by a failed write would pass for a finished one."""
+    try:
+        with open(path + ".tmp", "w", newline="") as f:
             w = csv.writer(f)
             w.writerow(["run", "from_s", "to_s", "lag_s", "polar_rods", "frames", "speed_mm_s",
                         "speed_err_mm_s", "along_axis_mm_s", "along_axis_err_mm_s"])
             w.writerows(rows)
-    return 0
+        os.replace(path + ".tmp", path)
+    except OSError as e:
+        raise SystemExit(f"--csv {path}: cannot be written ({e.strerror})") from None
 
 
 if __name__ == "__main__":
