@@ -546,6 +546,31 @@ TEST(Campaign, AnEnsembleRunnerMakesTheRunsTheLocalExecutorMakes) {
     EXPECT_NE(follow_up.find("'--backend' 'cpu'"), std::string::npos) << follow_up;
 }
 
+// A run's log that cannot be written (here its path is taken by a directory) is the campaign's
+// record, not the run: the ensemble runner names it and runs the run to the end beside the
+// others, and the campaign counts it done. (A point added to a finished campaign, as a
+// campaign's directory must be the campaign's before its runs' logs can be tampered with.)
+TEST(Campaign, AnEnsembleRunnerRunsOnWhenARunsLogCannotBeWritten) {
+    const ScratchDir scratch("campaign-ensemble-log");
+    const fs::path file = scratch.path() / "together.toml";
+    const fs::path dir = scratch.path() / "together";
+    const auto run_campaign = [&] {
+        return run_rodsea({"campaign", "run", file.string(), "--out", dir.string(), "--ensemble"},
+                          scratch.path());
+    };
+    std::ofstream(file) << ensemble_campaign("[0.1]");
+    ASSERT_EQ(run_campaign().exit_code, 0);
+    std::ofstream(file) << ensemble_campaign("[0.1, 0.3]");
+    const fs::path run_dir = dir / "runs" / "medium.area_fraction=0.3" / "seed1";
+    fs::create_directories(run_dir.string() + ".log");
+    const ChildResult result = run_campaign();
+    ASSERT_EQ(result.exit_code, 0) << result.out << result.err;
+    EXPECT_NE(result.err.find(run_dir.string() + ".log cannot be written"), std::string::npos)
+        << result.err;
+    EXPECT_NE(result.out.find("2/2 runs done"), std::string::npos) << result.out;
+    EXPECT_NE(read_file(run_dir / "progress.txt").find("state = done"), std::string::npos);
+}
+
 struct BadRun {
     std::vector<std::string> args;
     std::string message;

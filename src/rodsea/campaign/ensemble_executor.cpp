@@ -53,10 +53,17 @@ class TeeBuffer : public std::streambuf {
     std::streambuf* second_;
 };
 
-void append_to_log(const CampaignPaths& paths, const CampaignRun& run, const std::string& text) {
+// A run's log is the campaign's record of its sessions, not the run's output (its directory
+// holds that): a log that cannot be written (a full disk, its path taken) is named and the runs go
+// on, rather than the runner failing after the ensemble's round, with the round's ends unrecorded.
+void append_to_log(const CampaignPaths& paths, const CampaignRun& run, const std::string& text,
+                   std::ostream& err) {
     std::ofstream log(paths.log(run), std::ios::app);
     log << text;
-    if (!log) throw FileError(paths.log(run).string(), "cannot be written");
+    log.close();
+    if (log) return;
+    err << "rodsea: campaign: " << paths.log(run).string()
+        << " cannot be written; the run goes on, its session not logged there" << std::endl;
 }
 
 // The messages of the error output about the run in `dir`: each message starts with a line
@@ -143,7 +150,7 @@ int run_campaign_as_ensemble(const CampaignPaths& paths, const CampaignGrid& gri
                    << exact_number(unix_time_now()) << ": " << (resumes ? "resumed" : "started")
                    << " with " << taken.size() - 1 << " other runs on " << backend << ", "
                    << o.threads << " threads; their progress is in the runner's output\n";
-            append_to_log(paths, run, header.str());
+            append_to_log(paths, run, header.str(), err);
         }
 
         std::ostringstream captured;
@@ -178,7 +185,7 @@ int run_campaign_as_ensemble(const CampaignPaths& paths, const CampaignGrid& gri
             const CampaignRun& run = grid.runs[i];
             const int code = code_of.at(i);
             const std::string message = messages_of(captured.str(), paths.run_dir(run));
-            append_to_log(paths, run, message + "=== exit " + std::to_string(code) + "\n");
+            append_to_log(paths, run, message + "=== exit " + std::to_string(code) + "\n", err);
             if (code == kExitOk) {
                 ++tally.done;
                 if (!o.quiet)
