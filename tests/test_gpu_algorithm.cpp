@@ -297,6 +297,26 @@ TEST(CpuEnsemble, SystemsSideBySideStepAsTheyStepAlone) {
     EXPECT_EQ(ensemble.state_hash(1), alone_hashes[2]);
 }
 
+// Side by side, the systems are dealt to the workers again by what their steps cost, every 1000
+// steps (ensemble.cpp): a system may change workers mid-run, and its bits do not change. Three
+// unlike systems on two threads over three such looks.
+TEST(CpuEnsemble, SystemsDealtAgainByCostStepAsTheyStepAlone) {
+    const std::vector<Scene> scenes = {
+        noisy_dense_mixture(71), shaken(polar_in_apolar_mixture(0.05, 2.5, 0.15, 30.0, 72), 72),
+        shaken(polar_in_apolar_mixture(0.10, 1.0, 0.60, 20.0, 73), 73)};
+    constexpr std::uint64_t kSteps = 3100;
+    std::vector<Simulation> members;
+    for (const Scene& scene : scenes)
+        members.emplace_back(scene.params, scene.bodies);
+    Ensemble ensemble(std::move(members), on(BackendKind::cpu, 2));
+    ensemble.run(kSteps);
+    for (std::size_t m = 0; m < scenes.size(); ++m) {
+        Simulation alone(scenes[m].params, scenes[m].bodies);
+        alone.run(kSteps);
+        EXPECT_EQ(ensemble.state_hash(m), alone.state_hash()) << "system " << m;
+    }
+}
+
 // A blow-up on one worker while the other steps a healthy system: reported by its index after
 // both took the step, as when the systems step one after another.
 TEST(CpuEnsemble, ABlowUpSideBySideNamesItsSystem) {

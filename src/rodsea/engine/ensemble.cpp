@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <exception>
-#include <numeric>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -10,11 +9,20 @@
 #include "rodsea/engine/backend_factory.hpp"
 #include "rodsea/engine/cpu/detail/parallel.hpp"
 #include "rodsea/engine/parallel/parallel_ensemble.hpp"
+#include "rodsea/engine/work_shares.hpp"
 #include "rodsea/error.hpp"
 
 namespace rodsea {
 
 namespace {
+
+// Steps between looks at what each system's steps cost: about 0.1 s of wall time for the
+// 38 mm boxes of a campaign, long enough for the clock's jitter to average out, short enough
+// to follow a system that jams.
+constexpr std::uint64_t kStepsBetweenLooks = 1000;
+// A new deal must shorten the ensemble's step by this much: moving a system to another worker
+// costs it its caches, and costs measured over a window jitter by a few per cent.
+constexpr double kWorthMoving = 0.95;
 
 // A blow-up's description, saying which system of the ensemble it was.
 BlowUp naming_system(std::size_t m, BlowUp blown) {
@@ -179,6 +187,7 @@ void Ensemble::step_cpu_systems() {
         profile_.resolution += s.profile().resolution;
         profile_.noise += s.profile().noise;
     }
+    if (shares_.size() > 1 && ++steps_since_look_ >= kStepsBetweenLooks) reshare_by_measured_cost();
     for (const std::exception_ptr& e : failed)  // every system has stepped and been counted
         if (e) std::rethrow_exception(e);
     for (std::size_t m = 0; m < n; ++m)
@@ -201,21 +210,29 @@ int Ensemble::threads_per_system() const {
 void Ensemble::share_threads() {
     for (Simulation& s : cpu_systems_)
         s.set_threads(threads_per_system());
-    // Each system always on the same worker, for its caches; the largest first, each to the
-    // least loaded worker, so that a sweep's dense and dilute systems even out.
-    shares_.assign(static_cast<std::size_t>(systems_side_by_side()), {});
-    std::vector<std::size_t> by_size(cpu_systems_.size());
-    std::iota(by_size.begin(), by_size.end(), std::size_t{0});
-    const auto spheres = [this](std::size_t m) { return cpu_systems_[m].spheres().size(); };
-    std::stable_sort(by_size.begin(), by_size.end(),
-                     [&](std::size_t a, std::size_t b) { return spheres(a) > spheres(b); });
-    std::vector<std::size_t> load(shares_.size(), 0);
-    for (std::size_t m : by_size) {
-        const auto least =
-            static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
-        shares_[least].push_back(m);
-        load[least] += spheres(m);
+    // Until their steps are timed, the systems cost what their spheres do: the largest first,
+    // each to the least loaded worker, so that a sweep's dense and dilute systems even out.
+    std::vector<double> spheres;
+    for (const Simulation& s : cpu_systems_)
+        spheres.push_back(static_cast<double>(s.spheres().size()));
+    shares_ = share_by_cost(spheres, static_cast<std::size_t>(systems_side_by_side()));
+    stage_time_at_look_.clear();
+    for (const Simulation& s : cpu_systems_)
+        stage_time_at_look_.push_back(s.profile().total());
+    steps_since_look_ = 0;
+}
+
+void Ensemble::reshare_by_measured_cost() {
+    std::vector<double> cost;
+    for (std::size_t m = 0; m < cpu_systems_.size(); ++m) {
+        const double now = cpu_systems_[m].profile().total();
+        cost.push_back(now - stage_time_at_look_[m]);
+        stage_time_at_look_[m] = now;
     }
+    steps_since_look_ = 0;
+    std::vector<std::vector<std::size_t>> dealt = share_by_cost(cost, shares_.size());
+    if (busiest_share(dealt, cost) < kWorthMoving * busiest_share(shares_, cost))
+        shares_ = std::move(dealt);
 }
 
 void Ensemble::check_blow_up(std::size_t m) {

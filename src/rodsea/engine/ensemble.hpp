@@ -3,8 +3,11 @@
 // small to fill a GPU, share one device's kernels (each kernel's elements are the bodies,
 // spheres or contacts of every system). On the CPU, with T threads and M systems, they step side
 // by side, min(T, M) at a time on one thread each (small systems use threads far better one per
-// system than all on one), unless T >= 2M: then one after another, each on all T. Each system
-// steps exactly as it would alone on the same backend: the same bits, on any number of threads.
+// system than all on one), unless T >= 2M: then one after another, each on all T. Side by side,
+// each worker keeps its systems from step to step, dealt by what their steps cost as measured
+// (work_shares.hpp; a dense system of short rods costs twice a dilute one of as many spheres).
+// Each system steps exactly as it would alone on the same backend: the same bits, on any number
+// of threads and whichever worker steps it.
 //
 //   std::vector<Simulation> systems;
 //   for (double phi : {0.2, 0.5, 0.8}) systems.emplace_back(params(phi), bodies(phi));
@@ -72,6 +75,7 @@ class Ensemble {
     int systems_side_by_side() const;
     int threads_per_system() const;
     void share_threads();
+    void reshare_by_measured_cost();
     void make_stepper(const std::vector<const BodyState*>& states);
 
     BackendOptions options_;
@@ -85,7 +89,11 @@ class Ensemble {
     // The CPU steps each Simulation; the data-parallel backends one stepper for all.
     std::vector<Simulation> cpu_systems_;
     std::vector<std::vector<std::size_t>> shares_;  // the CPU systems each worker steps
-    std::vector<std::exception_ptr> failed_;        // per CPU system, in the last step
+    // What each CPU system's steps cost, in its stage time (StageProfile::total) since the last
+    // look: the shares follow the costs as a run's systems settle, jam or leave.
+    std::vector<double> stage_time_at_look_;
+    std::uint64_t steps_since_look_ = 0;
+    std::vector<std::exception_ptr> failed_;  // per CPU system, in the last step
     std::vector<std::unique_ptr<SpeciesTable>> species_;
     std::unique_ptr<parallel::EnsembleStepper> stepper_;
 };
