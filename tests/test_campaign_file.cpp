@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 
+#include "rodsea/campaign/campaign_cost.hpp"
 #include "rodsea/campaign/campaign_points.hpp"
 #include "rodsea/campaign/slurm_executor.hpp"
 #include "rodsea/config/campaign_file.hpp"
@@ -176,6 +177,24 @@ TEST(SlurmTime, ReadsEveryFormOfSbatchTimeAndRefusesTheRest) {
     // Under a minute, past a year, or not sbatch's syntax.
     for (const char* bad : {"", "0:30", "1h", "12:00:00:00", "-5", "1:-3", "400-00", "1.5"})
         EXPECT_THROW(parse_slurm_time(bad), InvalidParameter) << bad;
+}
+
+// The plan's wall time. --jobs: processes take the runs in order, each as one frees (3 h, 1 h,
+// 1 h, 1 h on two: the 3 h run holds one while the other takes the three 1 h runs); --threads
+// divides each run's time. --ensemble: the runs dealt by cost to min(threads, runs) workers,
+// whatever their order (the Fig. 4a campaign's 0.7, 0.4, 0.4 core-hours on two threads: 0.8 h),
+// or in turn on every thread once there are two threads per run.
+TEST(CampaignWallTime, JobsTakeRunsInOrderAnEnsembleDealsThemByCost) {
+    const double h = 3600.0;
+    EXPECT_DOUBLE_EQ(planned_wall_seconds({3 * h, h, h, h}, {.jobs = 2}), 3 * h);
+    EXPECT_DOUBLE_EQ(planned_wall_seconds({h, h, h, 3 * h}, {.jobs = 2}), 4 * h);
+    EXPECT_DOUBLE_EQ(planned_wall_seconds({3 * h, h, h, h}, {.jobs = 1, .threads = 2}), 3 * h);
+    const std::vector<double> fig4a = {0.7 * h, 0.4 * h, 0.4 * h};
+    EXPECT_DOUBLE_EQ(planned_wall_seconds(fig4a, {.threads = 2, .ensemble = true}), 0.8 * h);
+    EXPECT_DOUBLE_EQ(planned_wall_seconds({h, h, h, 3 * h}, {.threads = 2, .ensemble = true}),
+                     3 * h);
+    EXPECT_DOUBLE_EQ(planned_wall_seconds(fig4a, {.threads = 6, .ensemble = true}), 1.5 * h / 6);
+    EXPECT_DOUBLE_EQ(planned_wall_seconds({}, {.jobs = 4}), 0.0);
 }
 
 }  // namespace

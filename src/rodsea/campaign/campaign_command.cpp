@@ -61,7 +61,8 @@ const CommandSpec& campaign_command_spec() {
           "estimate"},
          {"--ensemble", "",
           "run, submit: step the runs (of each array task) together as one ensemble in one "
-          "process instead of --jobs processes: a GPU's way to run many small systems"},
+          "process instead of --jobs processes: a GPU's way to run many small systems; plan: "
+          "for the wall-time estimate"},
          {"--backend", "cpu|gpu",
           "run, submit: step every run on the host's cores or a CUDA device, replacing "
           "run.backend (for a run that started on the other, from here on)"},
@@ -125,10 +126,14 @@ Loaded load(const Arguments& a) {
 
 int plan(const Arguments& a, std::ostream& out) {
     const Loaded l = load(a);
-    const int jobs =
-        static_cast<int>(parse_count("--jobs", a.value("--jobs").value_or("1"), 1, 4096));
-    const int threads =
+    PlannedExecution how;
+    how.jobs = static_cast<int>(parse_count("--jobs", a.value("--jobs").value_or("1"), 1, 4096));
+    how.threads =
         static_cast<int>(parse_count("--threads", a.value("--threads").value_or("1"), 1, 1024));
+    how.ensemble = a.has("--ensemble");
+    if (how.ensemble && a.value("--jobs"))
+        throw InvalidParameter("--jobs", *a.value("--jobs"), "no --jobs with --ensemble",
+                               "the ensemble is one process; give it --threads");
     const double seconds =
         a.has("--no-measure")
             ? 0.0
@@ -136,7 +141,7 @@ int plan(const Arguments& a, std::ostream& out) {
                            60.0, "s");
     const std::vector<PointCost> costs =
         estimate_campaign_cost(l.campaign, l.grid, l.scaling, calibration_table_lookup(), seconds);
-    describe_campaign(l.campaign, l.grid, l.scaling, costs, jobs, threads, out);
+    describe_campaign(l.campaign, l.grid, l.scaling, costs, how, out);
     out << "  directory " << l.paths.dir.string() << "\n";
     return kExitOk;
 }
@@ -299,7 +304,7 @@ int collect(const Arguments& a, std::ostream& out) {
 // Each subcommand's options: one given to another subcommand is refused, not ignored.
 void check_options_of(const std::string& sub, const Arguments& a) {
     static const std::vector<std::pair<std::string, std::vector<std::string>>> options{
-        {"plan", {"--jobs", "--threads", "--measure-seconds", "--no-measure"}},
+        {"plan", {"--jobs", "--threads", "--ensemble", "--measure-seconds", "--no-measure"}},
         {"run",
          {"--jobs", "--threads", "--retry-failed", "--quiet", "--tasks", "--task", "--ensemble",
           "--backend"}},

@@ -10,6 +10,7 @@
 #include "rodsea/builder/initial_state.hpp"
 #include "rodsea/cli/progress.hpp"
 #include "rodsea/engine/simulation.hpp"
+#include "rodsea/engine/work_shares.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/number_text.hpp"
 #include "rodsea/run/plan_report.hpp"
@@ -85,9 +86,29 @@ std::vector<PointCost> estimate_campaign_cost(const Campaign& campaign, const Ca
     return costs;
 }
 
+double planned_wall_seconds(const std::vector<double>& run_core_seconds, PlannedExecution how) {
+    const auto threads = static_cast<std::size_t>(std::max(1, how.threads));
+    const std::size_t runs = run_core_seconds.size();
+    if (runs == 0) return 0.0;
+    if (how.ensemble) {
+        double total = 0.0;
+        for (const double s : run_core_seconds)
+            total += s;
+        if (threads >= 2 * runs) return total / static_cast<double>(threads);
+        return busiest_share(share_by_cost(run_core_seconds, std::min(threads, runs)),
+                             run_core_seconds);
+    }
+    std::vector<double> free_at(static_cast<std::size_t>(std::max(1, how.jobs)), 0.0);
+    for (const double s : run_core_seconds) {
+        const auto first_free = std::min_element(free_at.begin(), free_at.end());
+        *first_free += s / static_cast<double>(threads);
+    }
+    return *std::max_element(free_at.begin(), free_at.end());
+}
+
 void describe_campaign(const Campaign& campaign, const CampaignGrid& grid,
                        const CampaignScaling& scaling, const std::vector<PointCost>& costs,
-                       int jobs, int threads, std::ostream& out) {
+                       PlannedExecution how, std::ostream& out) {
     out << "campaign " << campaign.name;
     if (!campaign.description.empty()) out << ": " << campaign.description;
     out << "\n  " << grid.points.size() << " point" << (grid.points.size() == 1 ? "" : "s") << " x "
@@ -137,10 +158,22 @@ void describe_campaign(const Campaign& campaign, const CampaignGrid& grid,
             << format_number(kMeasureBox)
             << " mm, larger where a dense packing needs it, at each point's area fractions, from "
                "its initial state)";
-        const double wall_hours = total_core_hours / (std::max(1, jobs) * std::max(1, threads));
-        out << "\n  with --jobs " << jobs << " --threads " << threads << ": about "
-            << format_duration(wall_hours * 3600.0)
-            << " of wall time if threads scale perfectly (they do not: see docs/performance.md)";
+        std::vector<double> run_core_seconds;
+        for (const PointCost& c : costs)
+            for (int r = 0; r < campaign.replicates; ++r)
+                run_core_seconds.push_back(c.sphere_steps / c.measured_rate);
+        out << "\n  ";
+        if (how.ensemble)
+            out << "with --ensemble --threads " << how.threads;
+        else
+            out << "with --jobs " << how.jobs << " --threads " << how.threads;
+        out << ": about " << format_duration(planned_wall_seconds(run_core_seconds, how))
+            << " of wall time "
+            << (how.ensemble ? "if each run keeps its one-thread rate (side by side, runs lose "
+                               "some to shared caches and each step's join: see "
+                               "docs/performance.md)"
+                             : "if threads scale perfectly (they do not: see "
+                               "docs/performance.md)");
     } else {
         out << " (cost not measured: --no-measure, or a point could not be built even in its own "
                "box)";

@@ -24,9 +24,21 @@ std::vector<PointCost> estimate_campaign_cost(const Campaign& campaign, const Ca
                                               const EpsilonLookup& epsilon,
                                               double seconds_per_point);
 
+// How `campaign run` would spend the plan's wall time.
+struct PlannedExecution {
+    int jobs = 1, threads = 1;
+    bool ensemble = false;
+};
+
+// The wall time of runs that each take `run_core_seconds` on one thread, if threads scale
+// perfectly: --jobs processes take the runs in order, each as a process frees; an --ensemble
+// deals them to min(threads, runs) workers by cost as it does its systems (work_shares.hpp), or,
+// with two threads or more per run, steps them in turn on every thread.
+double planned_wall_seconds(const std::vector<double>& run_core_seconds, PlannedExecution how);
+
 // The plan: every point with its counts, spheres, steps and cost, and the totals.
 void describe_campaign(const Campaign& campaign, const CampaignGrid& grid,
                        const CampaignScaling& scaling, const std::vector<PointCost>& costs,
-                       int jobs, int threads, std::ostream& out);
+                       PlannedExecution how, std::ostream& out);
 
 }  // namespace rodsea
