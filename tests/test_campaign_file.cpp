@@ -197,5 +197,24 @@ TEST(CampaignWallTime, JobsTakeRunsInOrderAnEnsembleDealsThemByCost) {
     EXPECT_DOUBLE_EQ(planned_wall_seconds({}, {.jobs = 4}), 0.0);
 }
 
+// Run names cut to fit a column keep their ends, where a two-axis campaign's runs differ: cut
+// at the end, the Fig. 4a campaign's three runs would read alike.
+TEST(CampaignNames, NamesCutForAColumnKeepWhatTellsThemApart) {
+    std::vector<std::string> cut;
+    for (const char* sigma : {"1.25", "3.125", "5.625"}) {
+        const std::string id =
+            std::string("medium.area_fraction=0.75,medium.aspect_ratio=") + sigma + "/seed1";
+        cut.push_back(name_in_column(id, 40));
+        EXPECT_EQ(cut.back().size(), 40u) << cut.back();
+        EXPECT_EQ(cut.back().rfind("medium.area_", 0), 0u) << cut.back();
+        const std::string end = std::string("=") + sigma + "/seed1";
+        EXPECT_EQ(cut.back().substr(cut.back().size() - end.size()), end) << cut.back();
+        EXPECT_EQ(name_in_column(id, id.size()), id);
+    }
+    EXPECT_NE(cut[0], cut[1]);
+    EXPECT_NE(cut[1], cut[2]);
+    EXPECT_EQ(name_in_column("medium.area_fraction=0.75", 4), "medi");
+}
+
 }  // namespace
 }  // namespace rodsea

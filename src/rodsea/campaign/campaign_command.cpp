@@ -241,8 +241,13 @@ int status(const Arguments& a, std::ostream& out) {
     const Loaded l = load(a);
     check_campaign_dir(l.paths, l.scaling);
     std::size_t counts[5] = {};
+    std::size_t width = 3;
+    for (const CampaignRun& r : l.grid.runs)
+        width = std::max(width, r.id.size());
+    width = std::min<std::size_t>(width, kNameColumnWidth);
+    const int w = static_cast<int>(width);
     char line[512];
-    std::snprintf(line, sizeof line, "%-48s %-11s %7s %18s %10s %9s\n", "run", "state", "done",
+    std::snprintf(line, sizeof line, "%-*s %-11s %7s %18s %10s %9s\n", w, "run", "state", "done",
                   "t / duration (s)", "steps/s", "ETA");
     out << line;
     for (const CampaignRun& r : l.grid.runs) {
@@ -258,8 +263,8 @@ int status(const Arguments& a, std::ostream& out) {
                 if (p.eta_seconds() >= 0) eta = format_duration(p.eta_seconds());
             }
         }
-        const std::string id = r.id.size() > 48 ? r.id.substr(0, 45) + "..." : r.id;
-        std::snprintf(line, sizeof line, "%-48s %-11s %7s %18s %10s %9s\n", id.c_str(),
+        const std::string id = name_in_column(r.id, width);
+        std::snprintf(line, sizeof line, "%-*s %-11s %7s %18s %10s %9s\n", w, id.c_str(),
                       to_string(s.state), done.c_str(), time.c_str(), rate.c_str(), eta.c_str());
         out << line;
         if (s.state == RunState::failed)

@@ -122,7 +122,7 @@ void describe_campaign(const Campaign& campaign, const CampaignGrid& grid,
     std::size_t width = 5;
     for (const CampaignPoint& p : grid.points)
         width = std::max(width, p.name.size());
-    width = std::min<std::size_t>(width, 90);
+    width = std::min<std::size_t>(width, kNameColumnWidth);
     const int w = static_cast<int>(width);
     char line[640];
     std::snprintf(line, sizeof line, "  %-*s %7s %8s %9s %7s %11s %12s %9s %8s\n", w, "point",
@@ -137,8 +137,7 @@ void describe_campaign(const Campaign& campaign, const CampaignGrid& grid,
         total_sphere_steps += c.sphere_steps * campaign.replicates;
         all_measured = all_measured && std::isfinite(c.core_hours);
         if (std::isfinite(c.core_hours)) total_core_hours += c.core_hours;
-        const std::string name =
-            p.name.size() > width ? p.name.substr(0, width - 3) + "..." : p.name;
+        const std::string name = name_in_column(p.name, width);
         std::snprintf(
             line, sizeof line, "  %-*s %7.1f %8llu %9llu %7g %11llu %12s %9s %8s\n", w,
             name.c_str(), p.plan.engine.box.lx, static_cast<unsigned long long>(c.bodies),

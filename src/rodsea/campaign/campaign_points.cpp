@@ -1,6 +1,7 @@
 #include "rodsea/campaign/campaign_points.hpp"
 
 #include <algorithm>
+#include <string_view>
 
 #include "rodsea/builder/initial_state.hpp"
 #include "rodsea/error.hpp"
@@ -12,6 +13,15 @@ std::string short_key(const std::string& key) {
     if (key.rfind("species.", 0) == 0) return key.substr(8);
     const std::size_t dot = key.find('.');
     return dot == std::string::npos ? key : key.substr(dot + 1);
+}
+
+std::string name_in_column(const std::string& name, std::size_t width) {
+    constexpr std::string_view kCut = "...";
+    if (name.size() <= width) return name;
+    if (width <= kCut.size() + 2) return name.substr(0, width);
+    const std::size_t kept = width - kCut.size();
+    const std::size_t head = kept / 3;  // the rest for the end
+    return name.substr(0, head) + std::string(kCut) + name.substr(name.size() - (kept - head));
 }
 
 namespace {
