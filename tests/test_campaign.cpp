@@ -547,8 +547,8 @@ TEST(Campaign, AnEnsembleRunnerMakesTheRunsTheLocalExecutorMakes) {
 }
 
 // A run's log that cannot be written (here its path is taken by a directory) is the campaign's
-// record, not the run: the ensemble runner names it and runs the run to the end beside the
-// others, and the campaign counts it done. (A point added to a finished campaign, as a
+// record, not the run: the ensemble runner names it and runs the run to the end, and the campaign
+// counts it done. (A point added to a finished campaign, as a
 // campaign's directory must be the campaign's before its runs' logs can be tampered with.)
 TEST(Campaign, AnEnsembleRunnerRunsOnWhenARunsLogCannotBeWritten) {
     const ScratchDir scratch("campaign-ensemble-log");

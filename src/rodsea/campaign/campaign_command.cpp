@@ -34,7 +34,8 @@ const CommandSpec& campaign_command_spec() {
         "replicates, the analysis): every point is built and checked, packing included, before "
         "anything runs.\n"
         "  plan     the points, their bodies, spheres and steps, and the cost in core-hours, "
-        "measured on this machine (each point stepped for --measure-seconds in a small box)\n"
+        "measured on this machine (each point stepped for --measure-seconds in a small box), "
+        "and in wall time with --jobs or --ensemble and --threads\n"
         "  run      runs every run not yet done, --jobs at a time on --threads each, in DIR "
         "(default out/<campaign name>); run it again to continue: done runs are skipped, "
         "interrupted ones resume from their checkpoints, failed ones are retried once; Ctrl-C "
@@ -55,7 +56,9 @@ const CommandSpec& campaign_command_spec() {
           "box side times F, in (0, 1], area fractions kept (counts given as counts times F^2): "
           "run a figure small first; fixed for a campaign directory"},
          {"--duration", "T", "every run's time.duration, s; fixed for a campaign directory"},
-         {"--jobs", "N", "run, submit: runs at a time (in each array task) (default 1)"},
+         {"--jobs", "N",
+          "run, submit: runs at a time (in each array task) (default 1); plan: for the "
+          "wall-time estimate"},
          {"--threads", "T",
           "run: threads per run, or of the ensemble (default 1); plan: for the wall-time "
           "estimate"},

@@ -168,11 +168,10 @@ void describe_campaign(const Campaign& campaign, const CampaignGrid& grid,
             out << "with --jobs " << how.jobs << " --threads " << how.threads;
         out << ": about " << format_duration(planned_wall_seconds(run_core_seconds, how))
             << " of wall time "
-            << (how.ensemble ? "if each run keeps its one-thread rate (side by side, runs lose "
-                               "some to shared caches and each step's join: see "
-                               "docs/performance.md)"
-                             : "if threads scale perfectly (they do not: see "
-                               "docs/performance.md)");
+            << (how.ensemble && how.threads < 2 * static_cast<int>(run_core_seconds.size())
+                    ? "if each run keeps its one-thread rate side by side (it loses some to "
+                      "shared caches and each step's join: see docs/performance.md)"
+                    : "if threads scale perfectly (they do not: see docs/performance.md)");
     } else {
         out << " (cost not measured: --no-measure, or a point could not be built even in its own "
                "box)";

@@ -30,10 +30,12 @@ struct PlannedExecution {
     bool ensemble = false;
 };
 
-// The wall time of runs that each take `run_core_seconds` on one thread, if threads scale
-// perfectly: --jobs processes take the runs in order, each as a process frees; an --ensemble
-// deals them to min(threads, runs) workers by cost as it does its systems (work_shares.hpp), or,
-// with two threads or more per run, steps them in turn on every thread.
+// The wall time of runs that each take `run_core_seconds` (finite, >= 0) on one thread, if
+// threads scale perfectly: --jobs processes take the runs in order, each as a process frees; an
+// --ensemble deals them to min(threads, runs) workers by cost as it does its systems
+// (work_shares.hpp), or, with two threads or more per run, steps them in turn on every thread.
+// The ensemble deals by the cost of a step, this by a whole run's: the same when the runs have
+// as many steps, an approximation when their durations or time steps differ.
 double planned_wall_seconds(const std::vector<double>& run_core_seconds, PlannedExecution how);
 
 // The plan: every point with its counts, spheres, steps and cost, and the totals.

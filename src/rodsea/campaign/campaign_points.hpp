@@ -45,7 +45,7 @@ std::string short_key(const std::string& key);
 
 // A point's or run's name in a table column `width` characters wide: whole if it fits, else its
 // start and its end around "...". The end is kept because that is where names differ: the last
-// axis's value and the seed ("medium.area_fraction=0.75,m...um.aspect_ratio=1.25/seed1").
+// axis's value and the seed (in 40: "medium.area_...m.aspect_ratio=1.25/seed1").
 std::string name_in_column(const std::string& name, std::size_t width);
 // The widest such column of `campaign plan` and `status`: a two-axis point and its seed whole.
 inline constexpr std::size_t kNameColumnWidth = 80;

@@ -15,7 +15,6 @@
 #include "rodsea/cli/progress.hpp"
 #include "rodsea/cli/stop_signal.hpp"
 #include "rodsea/config/config_file.hpp"
-#include "rodsea/error.hpp"
 #include "rodsea/number_text.hpp"
 #include "rodsea/run/run_driver.hpp"
 

@@ -9,7 +9,8 @@
 //
 // One process writes every run's messages: the runner's output has them all (each naming its
 // run); each run's log (runs/<point>/seed<k>.log) gets a line per session and that run's own
-// error messages, and its .failed file what made it fail.
+// error messages, and its .failed file what made it fail. A log that cannot be written is named in
+// the runner's error output and its run goes on: the log is a record, not the run's output.
 #include <iosfwd>
 
 #include "rodsea/campaign/campaign_runner.hpp"

@@ -20,8 +20,8 @@ namespace {
 // 38 mm boxes of a campaign, long enough for the clock's jitter to average out, short enough
 // to follow a system that jams.
 constexpr std::uint64_t kStepsBetweenLooks = 1000;
-// A new deal must shorten the ensemble's step by this much: moving a system to another worker
-// costs it its caches, and costs measured over a window jitter by a few per cent.
+// A new deal must shorten the ensemble's step by this much (work_shares.hpp, better_deal):
+// costs measured over a window jitter by a few per cent.
 constexpr double kWorthMoving = 0.95;
 
 // A blow-up's description, saying which system of the ensemble it was.
@@ -93,6 +93,7 @@ void Ensemble::retire(const std::vector<std::size_t>& systems) {
         totals_[next] = totals_[m];
         blown_[next] = std::move(blown_[m]);
         if (!cpu_systems_.empty()) cpu_systems_[next] = std::move(cpu_systems_[m]);
+        if (!step_cost_.empty()) step_cost_[next] = step_cost_[m];
         if (!species_.empty()) species_[next] = std::move(species_[m]);
         ++next;
     }
@@ -102,6 +103,7 @@ void Ensemble::retire(const std::vector<std::size_t>& systems) {
     last_.resize(next);
     totals_.resize(next);
     blown_.resize(next);
+    if (!step_cost_.empty()) step_cost_.resize(next);
     if (!cpu_systems_.empty()) {
         cpu_systems_.erase(cpu_systems_.begin() + next, cpu_systems_.end());
         share_threads();  // fewer systems side by side: more threads each
@@ -210,12 +212,15 @@ int Ensemble::threads_per_system() const {
 void Ensemble::share_threads() {
     for (Simulation& s : cpu_systems_)
         s.set_threads(threads_per_system());
-    // Until their steps are timed, the systems cost what their spheres do: the largest first,
-    // each to the least loaded worker, so that a sweep's dense and dilute systems even out.
-    std::vector<double> spheres;
-    for (const Simulation& s : cpu_systems_)
-        spheres.push_back(static_cast<double>(s.spheres().size()));
-    shares_ = share_by_cost(spheres, static_cast<std::size_t>(systems_side_by_side()));
+    // Until their steps have been timed, the systems cost what their spheres do; after a system
+    // retires or the threads change, what they cost at the last look.
+    std::vector<double> cost = step_cost_;
+    if (cost.size() != cpu_systems_.size()) {
+        cost.clear();
+        for (const Simulation& s : cpu_systems_)
+            cost.push_back(static_cast<double>(s.spheres().size()));
+    }
+    shares_ = share_by_cost(cost, static_cast<std::size_t>(systems_side_by_side()));
     stage_time_at_look_.clear();
     for (const Simulation& s : cpu_systems_)
         stage_time_at_look_.push_back(s.profile().total());
@@ -223,16 +228,15 @@ void Ensemble::share_threads() {
 }
 
 void Ensemble::reshare_by_measured_cost() {
-    std::vector<double> cost;
+    step_cost_.assign(cpu_systems_.size(), 0.0);
     for (std::size_t m = 0; m < cpu_systems_.size(); ++m) {
         const double now = cpu_systems_[m].profile().total();
-        cost.push_back(now - stage_time_at_look_[m]);
+        step_cost_[m] = (now - stage_time_at_look_[m]) / static_cast<double>(steps_since_look_);
         stage_time_at_look_[m] = now;
     }
     steps_since_look_ = 0;
-    std::vector<std::vector<std::size_t>> dealt = share_by_cost(cost, shares_.size());
-    if (busiest_share(dealt, cost) < kWorthMoving * busiest_share(shares_, cost))
-        shares_ = std::move(dealt);
+    if (std::optional<WorkShares> dealt = better_deal(shares_, step_cost_, kWorthMoving))
+        shares_ = std::move(*dealt);
 }
 
 void Ensemble::check_blow_up(std::size_t m) {

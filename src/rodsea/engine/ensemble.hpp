@@ -5,7 +5,7 @@
 // by side, min(T, M) at a time on one thread each (small systems use threads far better one per
 // system than all on one), unless T >= 2M: then one after another, each on all T. Side by side,
 // each worker keeps its systems from step to step, dealt by what their steps cost as measured
-// (work_shares.hpp; a dense system of short rods costs twice a dilute one of as many spheres).
+// (work_shares.hpp; at one area fraction, short rods cost twice what long rods do per sphere).
 // Each system steps exactly as it would alone on the same backend: the same bits, on any number
 // of threads and whichever worker steps it.
 //
@@ -89,9 +89,11 @@ class Ensemble {
     // The CPU steps each Simulation; the data-parallel backends one stepper for all.
     std::vector<Simulation> cpu_systems_;
     std::vector<std::vector<std::size_t>> shares_;  // the CPU systems each worker steps
-    // What each CPU system's steps cost, in its stage time (StageProfile::total) since the last
-    // look: the shares follow the costs as a run's systems settle, jam or leave.
+    // What each CPU system's steps cost: its stage time (StageProfile::total) at the last look,
+    // and the stage time per step over the window before it (empty until the first look). The
+    // shares follow the costs as a campaign's systems settle, jam or leave.
     std::vector<double> stage_time_at_look_;
+    std::vector<double> step_cost_;
     std::uint64_t steps_since_look_ = 0;
     std::vector<std::exception_ptr> failed_;  // per CPU system, in the last step
     std::vector<std::unique_ptr<SpeciesTable>> species_;

@@ -5,9 +5,8 @@
 
 namespace rodsea {
 
-std::vector<std::vector<std::size_t>> share_by_cost(const std::vector<double>& costs,
-                                                    std::size_t workers) {
-    std::vector<std::vector<std::size_t>> shares(std::max<std::size_t>(workers, 1));
+WorkShares share_by_cost(const std::vector<double>& costs, std::size_t workers) {
+    WorkShares shares(std::max<std::size_t>(workers, 1));
     std::vector<std::size_t> by_cost(costs.size());
     std::iota(by_cost.begin(), by_cost.end(), std::size_t{0});
     std::stable_sort(by_cost.begin(), by_cost.end(),
@@ -22,8 +21,7 @@ std::vector<std::vector<std::size_t>> share_by_cost(const std::vector<double>& c
     return shares;
 }
 
-double busiest_share(const std::vector<std::vector<std::size_t>>& shares,
-                     const std::vector<double>& costs) {
+double busiest_share(const WorkShares& shares, const std::vector<double>& costs) {
     double busiest = 0.0;
     for (const std::vector<std::size_t>& share : shares) {
         double load = 0.0;
@@ -32,6 +30,13 @@ double busiest_share(const std::vector<std::vector<std::size_t>>& shares,
         busiest = std::max(busiest, load);
     }
     return busiest;
+}
+
+std::optional<WorkShares> better_deal(const WorkShares& current, const std::vector<double>& costs,
+                                      double worth) {
+    WorkShares dealt = share_by_cost(costs, current.size());
+    if (busiest_share(dealt, costs) < worth * busiest_share(current, costs)) return dealt;
+    return std::nullopt;
 }
 
 }  // namespace rodsea

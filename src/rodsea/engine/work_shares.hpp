@@ -4,17 +4,25 @@
 // costs, the costliest first, each to the worker with the least so far (longest processing time
 // first: within 4/3 of the best split, and the best for three systems on two workers).
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace rodsea {
 
-// max(workers, 1) lists of indices into `costs`, each costliest first (as dealt); equal costs
-// are dealt in index order, so the same costs give the same shares.
-std::vector<std::vector<std::size_t>> share_by_cost(const std::vector<double>& costs,
-                                                    std::size_t workers);
+using WorkShares = std::vector<std::vector<std::size_t>>;
+
+// max(workers, 1) lists of indices into `costs` (finite, >= 0), each costliest first (as dealt);
+// equal costs are dealt in index order, so the same costs give the same shares.
+WorkShares share_by_cost(const std::vector<double>& costs, std::size_t workers);
 
 // The busiest worker's total cost under `shares`: what one step of the ensemble takes.
-double busiest_share(const std::vector<std::vector<std::size_t>>& shares,
-                     const std::vector<double>& costs);
+double busiest_share(const WorkShares& shares, const std::vector<double>& costs);
+
+// The deal by `costs` on as many workers as `current` has, if it makes the busiest worker's
+// load less than `worth` times what it is under `current`; else nothing. A system that changes
+// workers loses its caches, and costs measured over a window jitter: a deal that gains less than
+// that is not worth making.
+std::optional<WorkShares> better_deal(const WorkShares& current, const std::vector<double>& costs,
+                                      double worth);
 
 }  // namespace rodsea
