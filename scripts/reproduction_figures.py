@@ -73,6 +73,13 @@ BEADS_LIGHT = [(phi, f"{DATA}/beads-light-38mm/medium.area_fraction={phi:g}.seri
 BEADS_LIGHT_WINDOW = (30.0, 45.0)
 BEADS_LIGHT_BLOCK = 5.0
 
+# Fig. 4a (inset) in the 38 mm box, φ_a = 0.75, D_r = 0.23 rad²/s: (σ, series table); P and the
+# medium's S over FIG4A_WINDOW from blocks of FIG4A_BLOCK seconds. A σ not run yet is left out.
+FIG4A = [(sigma, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspect_ratio={sigma:g}"
+          ".series.csv") for sigma in (1.25, 3.125, 5.625)]
+FIG4A_WINDOW = (30.0, 60.0)
+FIG4A_BLOCK = 5.0
+
 # Fig. 5b, first look: the medium's velocity around polar rods against distance in the 63 mm box
 # (label, profile table) from `rodsea analyze --observables medium_velocity`.
 FIG5B_PROFILES = [
@@ -253,19 +260,19 @@ def draw_row38(plt):
     return fig, dump
 
 
-def window_points(runs, window, block):
-    """P over `window` (the mean of blocks of `block` seconds, and its error) of each run: [(value,
-    mean, error, series table)]; a table not there yet is left out."""
+def window_points(runs, window, block, name="P_polar"):
+    """`name` (default P) over `window` (the mean of blocks of `block` seconds, and its error) of
+    each run: [(value, mean, error, series table)]; a table not there yet is left out."""
     from block_means import block_means
     points = []
     for value, relative in runs:
         if not os.path.isfile(os.path.join(ROOT, relative)):
             continue  # a point not run yet
         t = read_csv(relative)
-        for needed in ("t_from", "t_to", "P_polar"):
+        for needed in ("t_from", "t_to", name):
             column(t, needed, relative)
         try:
-            mean, err, _ = block_means(t, *window, block)["P_polar"]
+            mean, err, _ = block_means(t, *window, block)[name]
         except (KeyError, ValueError):
             raise TableError(f"{relative}: shorter than {window[1]:g} s") from None
         points.append((value, mean, err, t))
@@ -348,6 +355,27 @@ def draw_beads_light(plt):
     return fig, dump
 
 
+def draw_fig4a(plt):
+    """P and the medium's S against the medium rods' aspect ratio σ at φ_a = 0.75 (over
+    FIG4A_WINDOW, errors from blocks), and P(t) of each run."""
+    fig, points, dump = draw_points_and_series(
+        plt, FIG4A, FIG4A_WINDOW, "σ (medium rods' aspect ratio)", "σ", "",
+        "Fig. 4a inset, 38 mm box (18 polar rods), φ_p = 0.05, φ_a = 0.75, D_r = 0.23 rad²/s",
+        block=FIG4A_BLOCK)
+    nematic = window_points(FIG4A, FIG4A_WINDOW, FIG4A_BLOCK, "S_medium")
+    xs, ys, errs = ([m[i] for m in nematic] for i in range(3))
+    points.errorbar(xs, ys, yerr=errs, fmt="s--", ms=4, capsize=3, color="C0",
+                    label="S of the medium")
+    dump["S_medium"] = {"x": xs, "y": ys, "err": errs}
+    points.containers[0].set_label("P of the polar rods")  # drawn first
+    points.legend(loc="best", fontsize=7)
+    points.set_ylabel(f"over {FIG4A_WINDOW[0]:g}–{FIG4A_WINDOW[1]:g} s")
+    points.set_xlim(0.8, 6.0)
+    points.set_ylim(0.0, 1.0)
+    points.set_title("P and the medium's S against σ", fontsize=10)
+    return fig, dump
+
+
 def draw_fig5b(plt):
     """The medium's mean velocity along the rod's axis (lab frame) and its mean speed against
     the distance from a polar rod, for each φ_a: the drag near the rod and the far field."""
@@ -379,7 +407,8 @@ def draw_fig5b(plt):
 
 FIGURES = {"fig1c": draw_fig1c, "fig1c-series": draw_fig1c_series,
            "finite-size": draw_finite_size, "row38": draw_row38, "fig1f": draw_fig1f,
-           "beads": draw_beads, "beads-light": draw_beads_light, "fig5b": draw_fig5b}
+           "beads": draw_beads, "beads-light": draw_beads_light, "fig4a": draw_fig4a,
+           "fig5b": draw_fig5b}
 
 
 def main(argv):

@@ -123,3 +123,11 @@ expected = [(phi, block_mean(os.path.join(source, relative), "P_polar", 30.0, 45
             if os.path.isfile(os.path.join(source, relative))]
 check_points("beads-light", list(zip(light["P"]["x"], light["P"]["y"])), expected, 3)
 assert light["P, mass 0.2"] == beads["P"], (light["P, mass 0.2"], beads["P"])
+
+# Fig. 4a: each σ's P and the medium's S are the means of their 5 s block means over 30–60 s.
+fig4a = drawn_figure("fig4a")
+for drawn, name in (("P", "P_polar"), ("S_medium", "S_medium")):
+    expected = [(sigma, block_mean(os.path.join(source, relative), name, 30.0, 60.0, block=5.0))
+                for sigma, relative in figures.FIG4A
+                if os.path.isfile(os.path.join(source, relative))]
+    check_points("fig4a", list(zip(fig4a[drawn]["x"], fig4a[drawn]["y"])), expected, 3)
