@@ -133,6 +133,11 @@ TEST(CampaignFile, BadFilesAreRefusedByKeyWithTheAllowedValues) {
          "a name no other figure has"},
         {"[[override]]\nset = { \"time.durration\" = 1.0 }\n", "did you mean 'duration'"},
         {"[campaign]\nbase = \"missing.toml\"\n", "missing.toml"},
+        // What `collect` asks of the analysis, refused before hours of runs, not at collect.
+        {"[analysis]\nobservables = [\"order\", \"nematic\"]\n",
+         "analysis.observables = nematic: allowed order, pair"},
+        {"[analysis]\nobservables = [\"flock\"]\n", "did you mean 'flocks'"},
+        {"[analysis]\nparameters = { \"flocks.epss\" = 2.0 }\n", "did you mean"},
     };
     for (const BadCampaign& c : cases) {
         try {

@@ -71,6 +71,20 @@ std::string species_summary(const AnalysisSetup& setup) {
     return text + " and " + std::to_string(setup.steady_frames) + " steady frames";
 }
 
+void check_observable_names(const std::vector<std::string>& requested, const std::string& key) {
+    std::vector<std::string> names;
+    for (const ObservableInfo& o : observable_catalogue())
+        names.push_back(o.name);
+    std::string allowed;
+    for (const std::string& n : names)
+        allowed += (allowed.empty() ? "" : ", ") + n;
+    for (const std::string& n : requested) {
+        if (std::find(names.begin(), names.end(), n) != names.end()) continue;
+        const auto match = config::closest_match(n, names);
+        throw InvalidParameter(key, n, allowed, match ? "did you mean '" + *match + "'?" : "");
+    }
+}
+
 std::vector<std::string> select_observables(const std::vector<std::string>& requested,
                                             const AnalysisSetup& setup,
                                             std::vector<std::string>* skipped) {
@@ -88,15 +102,8 @@ std::vector<std::string> select_observables(const std::vector<std::string>& requ
         }
         return chosen;
     }
-    std::string allowed;
-    for (const std::string& n : names)
-        allowed += (allowed.empty() ? "" : ", ") + n;
+    check_observable_names(requested, "--observables");
     for (const std::string& n : requested) {
-        if (std::find(names.begin(), names.end(), n) == names.end()) {
-            const auto match = config::closest_match(n, names);
-            throw InvalidParameter("--observables", n, allowed,
-                                   match ? "did you mean '" + *match + "'?" : "");
-        }
         const std::string why = missing_requirement(n, setup);
         if (!why.empty())
             throw InvalidParameter(

@@ -15,6 +15,11 @@ struct ObservableInfo {
 };
 const std::vector<ObservableInfo>& observable_catalogue();
 
+// Throws InvalidParameter naming `key` (as the user gave it: "--observables",
+// "analysis.observables") for a name not in the catalogue, with the names allowed and a
+// did-you-mean.
+void check_observable_names(const std::vector<std::string>& names, const std::string& key);
+
 // Why `name` cannot run on this setup ("" when it can).
 std::string missing_requirement(const std::string& name, const AnalysisSetup& setup);
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <string_view>
 
+#include "rodsea/analyze/analysis_options.hpp"
+#include "rodsea/analyze/observable_registry.hpp"
 #include "rodsea/builder/initial_state.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/run/steady_stop.hpp"
@@ -54,6 +56,17 @@ bool same_value(const config::Value& a, const config::Value& b) {
 
 CampaignGrid expand_campaign(const Campaign& c, const CampaignScaling& scaling,
                              const EpsilonLookup& epsilon) {
+    // What `collect` will ask of the analysis, checked now: hours of runs must not end in an
+    // analysis that refuses its options.
+    check_observable_names(c.analysis.observables, "analysis.observables");
+    AnalysisOptions unused;
+    for (const auto& [key, value] : c.analysis.parameters) {
+        try {
+            set_analysis_option(unused, key, value);
+        } catch (const InvalidParameter& e) {
+            throw e.in_context("[analysis] parameters of the campaign");
+        }
+    }
     CampaignGrid grid;
     std::vector<std::size_t> index(c.axes.size(), 0);
     while (true) {
