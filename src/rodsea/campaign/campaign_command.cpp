@@ -127,6 +127,13 @@ Loaded load(const Arguments& a) {
     return l;
 }
 
+// plan and run: the ensemble is one process, so --jobs has no meaning beside it.
+void refuse_jobs_with_ensemble(const Arguments& a) {
+    if (a.has("--ensemble") && a.value("--jobs"))
+        throw InvalidParameter("--jobs", *a.value("--jobs"), "no --jobs with --ensemble",
+                               "the ensemble is one process; give it --threads");
+}
+
 int plan(const Arguments& a, std::ostream& out) {
     const Loaded l = load(a);
     PlannedExecution how;
@@ -134,9 +141,7 @@ int plan(const Arguments& a, std::ostream& out) {
     how.threads =
         static_cast<int>(parse_count("--threads", a.value("--threads").value_or("1"), 1, 1024));
     how.ensemble = a.has("--ensemble");
-    if (how.ensemble && a.value("--jobs"))
-        throw InvalidParameter("--jobs", *a.value("--jobs"), "no --jobs with --ensemble",
-                               "the ensemble is one process; give it --threads");
+    refuse_jobs_with_ensemble(a);
     const double seconds =
         a.has("--no-measure")
             ? 0.0
@@ -163,9 +168,7 @@ int run(const Arguments& a, std::ostream& out, std::ostream& err) {
     o.retry_failed = a.has("--retry-failed");
     o.quiet = a.has("--quiet");
     o.backend = backend_option(a);
-    if (a.has("--ensemble") && a.value("--jobs"))
-        throw InvalidParameter("--jobs", *a.value("--jobs"), "no --jobs with --ensemble",
-                               "the ensemble is one process; give it --threads");
+    refuse_jobs_with_ensemble(a);
     if (o.backend) require_usable_backend(*o.backend, "--backend");
     if (const auto tasks = a.value("--tasks")) {
         const char* env = std::getenv("SLURM_ARRAY_TASK_ID");

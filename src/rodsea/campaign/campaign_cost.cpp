@@ -91,12 +91,13 @@ double planned_wall_seconds(const std::vector<double>& run_core_seconds, Planned
     const std::size_t runs = run_core_seconds.size();
     if (runs == 0) return 0.0;
     if (how.ensemble) {
-        double total = 0.0;
+        const std::size_t workers = workers_side_by_side(threads, runs);
+        if (workers > 1)
+            return busiest_share(share_by_cost(run_core_seconds, workers), run_core_seconds);
+        double total = 0.0;  // in turn, each run on every thread
         for (const double s : run_core_seconds)
             total += s;
-        if (threads >= 2 * runs) return total / static_cast<double>(threads);
-        return busiest_share(share_by_cost(run_core_seconds, std::min(threads, runs)),
-                             run_core_seconds);
+        return total / static_cast<double>(threads);
     }
     std::vector<double> free_at(static_cast<std::size_t>(std::max(1, how.jobs)), 0.0);
     for (const double s : run_core_seconds) {
@@ -168,7 +169,8 @@ void describe_campaign(const Campaign& campaign, const CampaignGrid& grid,
             out << "with --jobs " << how.jobs << " --threads " << how.threads;
         out << ": about " << format_duration(planned_wall_seconds(run_core_seconds, how))
             << " of wall time "
-            << (how.ensemble && how.threads < 2 * static_cast<int>(run_core_seconds.size())
+            << (how.ensemble && workers_side_by_side(static_cast<std::size_t>(how.threads),
+                                                     run_core_seconds.size()) > 1
                     ? "if each run keeps its one-thread rate side by side (it loses some to "
                       "shared caches and each step's join: see docs/performance.md)"
                     : "if threads scale perfectly (they do not: see docs/performance.md)");

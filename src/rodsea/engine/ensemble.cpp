@@ -197,12 +197,8 @@ void Ensemble::step_cpu_systems() {
 }
 
 int Ensemble::systems_side_by_side() const {
-    const auto threads = static_cast<std::size_t>(options_.threads);
-    const std::size_t systems = cpu_systems_.size();
-    // With threads to spare for two or more per system, side by side would nest teams, which
-    // libgomp starts afresh at every region: the systems take turns on every thread instead.
-    if (systems < 2 || threads >= 2 * systems) return 1;
-    return static_cast<int>(std::min(threads, systems));
+    return static_cast<int>(
+        workers_side_by_side(static_cast<std::size_t>(options_.threads), cpu_systems_.size()));
 }
 
 int Ensemble::threads_per_system() const {

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "rodsea/engine/simulation.hpp"
+#include "rodsea/engine/work_shares.hpp"
 
 namespace rodsea {
 
@@ -88,7 +89,7 @@ class Ensemble {
     StageProfile profile_;
     // The CPU steps each Simulation; the data-parallel backends one stepper for all.
     std::vector<Simulation> cpu_systems_;
-    std::vector<std::vector<std::size_t>> shares_;  // the CPU systems each worker steps
+    WorkShares shares_;  // the CPU systems each worker steps
     // What each CPU system's steps cost: its stage time (StageProfile::total) at the last look,
     // and the stage time per step over the window before it (empty until the first look). The
     // shares follow the costs as a campaign's systems settle, jam or leave.

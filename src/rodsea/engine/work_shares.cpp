@@ -5,6 +5,11 @@
 
 namespace rodsea {
 
+std::size_t workers_side_by_side(std::size_t threads, std::size_t systems) {
+    if (systems < 2 || threads >= 2 * systems) return 1;
+    return std::min(threads, systems);
+}
+
 WorkShares share_by_cost(const std::vector<double>& costs, std::size_t workers) {
     WorkShares shares(std::max<std::size_t>(workers, 1));
     std::vector<std::size_t> by_cost(costs.size());

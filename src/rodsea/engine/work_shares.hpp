@@ -11,6 +11,12 @@ namespace rodsea {
 
 using WorkShares = std::vector<std::vector<std::size_t>>;
 
+// How many workers step `systems` side by side on `threads`, one thread each: min(threads,
+// systems), or 1 when there is one system or at least two threads for each (side by side would
+// then nest OpenMP teams, which libgomp starts afresh at every region: the systems take turns,
+// each on every thread).
+std::size_t workers_side_by_side(std::size_t threads, std::size_t systems);
+
 // max(workers, 1) lists of indices into `costs` (finite, >= 0), each costliest first (as dealt);
 // equal costs are dealt in index order, so the same costs give the same shares.
 WorkShares share_by_cost(const std::vector<double>& costs, std::size_t workers);
