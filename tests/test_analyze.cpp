@@ -289,7 +289,9 @@ TEST_F(AnalyzeCli, BadInputIsRefusedByNameAndWritesNothing) {
         {{"analyze", medium, "--observables", "flocks"}, 2, "needs polar rods"},
         {{"analyze", mix, "--observables", "flock"}, 2, "did you mean 'flocks'"},
         {{"analyze", mix, "--param", "flocks.epss=1"}, 2, "did you mean 'flocks.eps'"},
-        {{"analyze", mix, "--param", "flocks.eps=-1"}, 2, "flocks.eps"},
+        {{"analyze", mix, "--param", "flocks.eps=-1"},
+         2,
+         "invalid --param flocks.eps = -1: allowed"},
         {{"analyze", mix, "--param", "pair.r_max=50"}, 2, "L/2 = 10"},
         {{"analyze", mix, medium, "--out", "x"}, 2, "--out"},
     };

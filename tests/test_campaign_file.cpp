@@ -137,7 +137,12 @@ TEST(CampaignFile, BadFilesAreRefusedByKeyWithTheAllowedValues) {
         {"[analysis]\nobservables = [\"order\", \"nematic\"]\n",
          "analysis.observables = nematic: allowed order, pair"},
         {"[analysis]\nobservables = [\"flock\"]\n", "did you mean 'flocks'"},
-        {"[analysis]\nparameters = { \"flocks.epss\" = 2.0 }\n", "did you mean"},
+        // Named as the file writes it, not as analyze's --param.
+        {"[analysis]\nparameters = { \"flocks.epss\" = 2.0 }\n",
+         "analysis.parameters.flocks.epss = an unknown key"},
+        {"[analysis]\nparameters = { \"flocks.epss\" = 2.0 }\n", "did you mean 'flocks.eps'"},
+        {"[analysis]\nparameters = { \"flocks.eps\" = -1.0 }\n",
+         "invalid analysis.parameters.flocks.eps = -1"},
     };
     for (const BadCampaign& c : cases) {
         try {

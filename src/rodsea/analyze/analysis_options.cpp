@@ -182,8 +182,8 @@ const std::vector<KeySpec>& analysis_option_keys() {
     return keys;
 }
 
-void set_analysis_option(AnalysisOptions& options, const std::string& key,
-                         const std::string& value) {
+void set_analysis_option(AnalysisOptions& options, const std::string& key, const std::string& value,
+                         const std::string& given_as) {
     const std::vector<KeySpec>& keys = analysis_option_keys();
     const auto it =
         std::find_if(keys.begin(), keys.end(), [&](const KeySpec& k) { return key == k.path(); });
@@ -192,11 +192,15 @@ void set_analysis_option(AnalysisOptions& options, const std::string& key,
         for (const KeySpec& k : keys)
             names.push_back(k.path());
         const auto match = config::closest_match(key, names);
-        throw InvalidParameter("--param " + key, "an unknown key",
-                               "one of the keys in docs/analysis.md",
+        throw InvalidParameter(given_as, "an unknown key", "one of the keys in docs/analysis.md",
                                match ? "did you mean '" + *match + "'?" : "");
     }
-    const config::Value v = config::value_from_text(*it, value);
+    config::Value v;
+    try {
+        v = config::value_from_text(*it, value);
+    } catch (const InvalidParameter&) {  // the same error, under the name the user wrote
+        throw InvalidParameter(given_as, value, it->allowed_text());
+    }
     const Field& field = kFields[static_cast<std::size_t>(it - keys.begin())];
     if (const auto* d = std::get_if<double AnalysisOptions::*>(&field))
         options.** d = std::get<double>(v);

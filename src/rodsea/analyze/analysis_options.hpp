@@ -45,10 +45,11 @@ struct AnalysisOptions {
 // The keys, in the config's key-table form (table "pair", name "r_max", ...), in docs order.
 const std::vector<config::KeySpec>& analysis_option_keys();
 
-// Sets `key` (e.g. "flocks.eps") from text. Throws InvalidParameter naming the key, the value and
-// the allowed range, with a did-you-mean for a misspelt key.
-void set_analysis_option(AnalysisOptions& options, const std::string& key,
-                         const std::string& value);
+// Sets `key` (e.g. "flocks.eps") from text. Throws InvalidParameter naming the key as the user
+// wrote it (`given_as`, e.g. "--param flocks.eps" or "analysis.parameters.flocks.eps"), the value
+// and the allowed range, with a did-you-mean for a misspelt key.
+void set_analysis_option(AnalysisOptions& options, const std::string& key, const std::string& value,
+                         const std::string& given_as);
 
 // Fills the automatic values for this run, unchecked (what a picture takes as its defaults).
 AnalysisOptions automatic_analysis_options(AnalysisOptions options, const AnalysisSetup& setup);

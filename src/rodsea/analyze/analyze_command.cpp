@@ -120,7 +120,8 @@ int analyze_command(const std::vector<std::string>& args, std::ostream& out, std
         const auto eq = kv.find('=');
         if (eq == std::string::npos)
             throw InvalidParameter("--param", kv, "KEY=VALUE, e.g. flocks.eps=2.25");
-        set_analysis_option(request.options, kv.substr(0, eq), kv.substr(eq + 1));
+        const std::string key = kv.substr(0, eq);
+        set_analysis_option(request.options, key, kv.substr(eq + 1), "--param " + key);
     }
     std::optional<std::filesystem::path> out_dir, table;
     if (const auto dir = words.value("--out")) out_dir = *dir;

@@ -24,7 +24,7 @@ AnalyzeRequest request_of(const CampaignAnalysis& a) {
     r.observables = a.observables;
     r.from = a.from;
     for (const auto& [key, value] : a.parameters)
-        set_analysis_option(r.options, key, value);
+        set_analysis_option(r.options, key, value, campaign_analysis_parameter_name(key));
     return r;
 }
 

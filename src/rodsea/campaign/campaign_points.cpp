@@ -60,13 +60,8 @@ CampaignGrid expand_campaign(const Campaign& c, const CampaignScaling& scaling,
     // analysis that refuses its options.
     check_observable_names(c.analysis.observables, "analysis.observables");
     AnalysisOptions unused;
-    for (const auto& [key, value] : c.analysis.parameters) {
-        try {
-            set_analysis_option(unused, key, value);
-        } catch (const InvalidParameter& e) {
-            throw e.in_context("[analysis] parameters of the campaign");
-        }
-    }
+    for (const auto& [key, value] : c.analysis.parameters)
+        set_analysis_option(unused, key, value, campaign_analysis_parameter_name(key));
     CampaignGrid grid;
     std::vector<std::size_t> index(c.axes.size(), 0);
     while (true) {

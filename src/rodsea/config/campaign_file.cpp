@@ -409,7 +409,7 @@ class CampaignReader {
                 throw InvalidParameter("analysis.parameters", "not a table", "an inline table",
                                        where(*p));
             for (auto&& [k, node] : *p->as_table()) {
-                const Value v = value(node, "analysis.parameters." + std::string(k.str()));
+                const Value v = value(node, campaign_analysis_parameter_name(std::string(k.str())));
                 a.parameters.emplace_back(std::string(k.str()), setting_text(v));
             }
         }

@@ -37,6 +37,11 @@ struct CampaignAnalysis {
     std::vector<std::pair<std::string, std::string>> parameters;  // --param KEY=VALUE
 };
 
+// How the campaign file names an [analysis] parameter, for its errors: "analysis.parameters.KEY".
+inline std::string campaign_analysis_parameter_name(const std::string& key) {
+    return "analysis.parameters." + key;
+}
+
 // What a [[figure]] draws: curves of collected scalars against an axis, a map of one scalar over
 // two axes (a phase diagram), one of `rodsea plot`'s figures of a run's analysis per point, the
 // final snapshot per point, or the points' runs side by side in one movie.
