@@ -97,6 +97,21 @@ BENCHMARK(BM_StepPaperLargest)
     ->MinTime(2.0)
     ->UseRealTime();
 
+// The Fig. 4a point at σ = 5.625 (polar rods at φ_p = 0.05 in medium rods of ℓ_a = 4.5 mm, 17
+// spheres each, at φ_a = 0.75, the 38 mm box): long rods packed side by side, where the sphere
+// pairs and the plate contacts per body are the most of any campaign.
+void BM_StepDenseLongRods(benchmark::State& state) {
+    run_mixture(state, rodsea::polar_in_apolar_mixture(0.05, 4.5, 0.75, 38.0, 1),
+                static_cast<int>(state.range(0)));
+}
+BENCHMARK(BM_StepDenseLongRods)
+    ->ArgNames({"threads"})
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMicrosecond)
+    ->MinTime(3.0)
+    ->UseRealTime();
+
 // The bead medium of SI S5 near its densest point (φ_a = 0.70 of 0.8 mm beads, polar rods at
 // φ_p = 0.05, a 38 mm box: the reproduction's bead campaign), 1 thread: a bead touches several
 // others at once, so contacts and sweeps per sphere are the rod mixture's several times over.

@@ -6,7 +6,10 @@
 
 #include <cmath>
 
+#include "rodsea/engine/cpu/contact_search.hpp"
 #include "rodsea/engine/cpu/sphere_table.hpp"
+#include "rodsea/engine/physics/contact_geometry.hpp"
+#include "rodsea/engine/simulation.hpp"
 #include "rodsea/random.hpp"
 #include "rodsea/scenes/scenes.hpp"
 
@@ -51,6 +54,71 @@ TEST(SphereTable, SpheresOnAnAxisAreWhereTheRotationMatrixPutsThem) {
             ASSERT_EQ(table.position[s].x, expected.x) << "body " << b;
             ASSERT_EQ(table.position[s].y, expected.y) << "body " << b;
             ASSERT_EQ(table.position[s].z, expected.z) << "body " << b;
+        }
+    }
+}
+
+// The plate search skips whole bodies whose lowest sphere bottom and highest top lie between the
+// plates. It must find exactly what a scan of every sphere finds: the same contacts, in sphere
+// order, with the same overlaps to the bit, on one thread and two, in a layer whose bodies are
+// thrown at every height and tilt so that some poke through the base, some through the lid, some
+// through both, and most through neither.
+TEST(PlateSearch, SkipsBodiesClearOfThePlatesAndFindsWhatAScanOfEverySphereFinds) {
+    EngineParameters params;
+    params.box = {40.0, 40.0};
+    params.species = {polar_rod_species(), apolar_rod_species(4.5), bead_species()};
+    const StepContext step = step_context(params, 0);
+    const physics::PlateState& plates = step.plates;
+    BodyState bodies;
+    SplitMix64 rng(5);
+    for (std::uint32_t b = 0; b < 600; ++b) {
+        const Vec3 axis{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-0.3, 0.3)};
+        bodies.add(b % 3,
+                   {rng.uniform(0, 40), rng.uniform(0, 40),
+                    rng.uniform(plates.base_z - 0.3, plates.lid_z + 0.3)},
+                   Quat::from_axis_angle(normalized(axis), rng.uniform(-3.2, 3.2)));
+    }
+    const SpeciesTable species = SpeciesTable::from(params);
+    cpu::SphereTable spheres;
+    spheres.assign(bodies.species, species);
+    spheres.update_positions(bodies.view(), species, 1);
+
+    std::vector<Contact> expected;
+    for (std::size_t s = 0; s < spheres.size(); ++s) {
+        const physics::PlateOverlaps o =
+            physics::plate_overlaps(spheres.position[s].z, spheres.radius[s], plates);
+        const std::uint32_t b = spheres.body[s];
+        const ContactCoefficients& k = species.plate[bodies.species[b]];
+        if (o.base > 0.0)
+            expected.push_back(physics::plate_contact(b, spheres.position[s], spheres.radius[s],
+                                                      bodies.position[b], true, o.base, k));
+        if (o.lid > 0.0)
+            expected.push_back(physics::plate_contact(b, spheres.position[s], spheres.radius[s],
+                                                      bodies.position[b], false, o.lid, k));
+    }
+    std::size_t clear = 0, base_and_lid = 0;
+    for (std::uint32_t b = 0; b < bodies.size(); ++b) {
+        clear += spheres.lowest[b] >= plates.base_z && spheres.highest[b] <= plates.lid_z;
+        base_and_lid += spheres.lowest[b] < plates.base_z && spheres.highest[b] > plates.lid_z;
+    }
+    ASSERT_GT(clear, 50u);        // the skip is taken
+    ASSERT_GT(base_and_lid, 0u);  // and a tilted rod spans the gap
+    ASSERT_GT(expected.size(), 300u);
+
+    for (int threads = 1; threads <= 2; ++threads) {
+        cpu::ContactFinder finder;
+        std::vector<Contact> found;
+        const cpu::ContactSearchStats stats =
+            finder.find(spheres, bodies.view(), species, step, found, threads);
+        ASSERT_EQ(stats.plate_contacts, expected.size()) << threads << " threads";
+        for (std::size_t i = 0; i < expected.size(); ++i) {
+            const Contact& c = found[stats.body_contacts + i];
+            const Contact& e = expected[i];
+            ASSERT_EQ(c.a, e.a) << i;
+            ASSERT_EQ(c.b, e.b) << i;
+            ASSERT_EQ(c.overlap, e.overlap) << i;
+            ASSERT_EQ(c.arm_a.x, e.arm_a.x) << i;
+            ASSERT_EQ(c.arm_a.z, e.arm_a.z) << i;
         }
     }
 }

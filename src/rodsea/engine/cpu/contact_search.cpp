@@ -53,7 +53,7 @@ void find_body_contacts(const VerletPairList& pairs, const SearchInput& in, Chun
         });
 }
 
-// The contacts of spheres [range) with the base and the lid, in sphere order.
+// The contacts of the spheres of bodies [range) with the base and the lid, in sphere order.
 void find_plate_contacts(const SearchInput& in, Chunk range, std::vector<Contact>& found,
                          ContactFinder::Depth& depth) {
     const SphereTable& spheres = in.spheres;
@@ -65,11 +65,16 @@ void find_plate_contacts(const SearchInput& in, Chunk range, std::vector<Contact
                                                in.species.plate[in.bodies.species[b]]));
         depth.add(overlap / r);
     };
-    for (size_t s = range.begin; s < range.end; ++s) {
-        const physics::PlateOverlaps o =
-            physics::plate_overlaps(spheres.position[s].z, spheres.radius[s], in.plates);
-        if (o.base > 0.0) add(s, true, o.base);
-        if (o.lid > 0.0) add(s, false, o.lid);
+    for (size_t b = range.begin; b < range.end; ++b) {
+        // Whole bodies clear of both plates are most of them; NaN bounds are searched.
+        if (spheres.lowest[b] >= in.plates.base_z && spheres.highest[b] <= in.plates.lid_z)
+            continue;
+        for (size_t s = spheres.first_of[b]; s < spheres.first_of[b + 1]; ++s) {
+            const physics::PlateOverlaps o =
+                physics::plate_overlaps(spheres.position[s].z, spheres.radius[s], in.plates);
+            if (o.base > 0.0) add(s, true, o.base);
+            if (o.lid > 0.0) add(s, false, o.lid);
+        }
     }
 }
 
@@ -86,7 +91,7 @@ ContactSearchStats ContactFinder::find(const SphereTable& spheres, BodyView bodi
         Depth depth;
         find_body_contacts(pairs_, in, {0, pairs_.size()}, out, depth);
         stats.body_contacts = out.size();
-        find_plate_contacts(in, {0, spheres.size()}, out, depth);
+        find_plate_contacts(in, {0, bodies.size()}, out, depth);
         stats.plate_contacts = out.size() - stats.body_contacts;
         stats.max_overlap_fraction = depth.deepest;
         stats.gross_overlaps = depth.gross;
@@ -103,7 +108,7 @@ ContactSearchStats ContactFinder::find(const SphereTable& spheres, BodyView bodi
         plate_chunks_[t].clear();
         find_body_contacts(pairs_, in, chunk_of(pairs_.size(), t, team), body_chunks_[t],
                            depth_[t]);
-        find_plate_contacts(in, chunk_of(spheres.size(), t, team), plate_chunks_[t], depth_[t]);
+        find_plate_contacts(in, chunk_of(bodies.size(), t, team), plate_chunks_[t], depth_[t]);
     }
     // Body contacts then plate contacts, each in chunk order: the serial list.
     stats.body_contacts = gather(body_chunks_, out, 0);

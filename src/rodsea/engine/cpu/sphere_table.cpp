@@ -1,5 +1,8 @@
 #include "rodsea/engine/cpu/sphere_table.hpp"
 
+#include <algorithm>
+#include <limits>
+
 #include "rodsea/engine/physics/sphere_placement.hpp"
 
 namespace rodsea::cpu {
@@ -17,6 +20,8 @@ void SphereTable::assign(std::span<const std::uint32_t> body_species, const Spec
         first_of.push_back(static_cast<std::uint32_t>(body.size()));
     }
     position.resize(body.size());
+    lowest.resize(body_species.size());
+    highest.resize(body_species.size());
 }
 
 void SphereTable::update_positions(BodyView bodies, const SpeciesTable& species, int threads) {
@@ -25,10 +30,18 @@ void SphereTable::update_positions(BodyView bodies, const SpeciesTable& species,
     for (std::ptrdiff_t b = 0; b < n; ++b) {
         const std::uint32_t k = bodies.species[b];
         const std::uint32_t first = first_of[b];
+        const std::uint32_t end = first_of[b + 1];
         physics::place_spheres(position.data() + first,
-                               species.sphere_offset.data() + species.first_sphere[k],
-                               first_of[b + 1] - first, bodies.position[b], bodies.orientation[b],
-                               species.sphere_axis[k]);
+                               species.sphere_offset.data() + species.first_sphere[k], end - first,
+                               bodies.position[b], bodies.orientation[b], species.sphere_axis[k]);
+        // Written the way plate_overlaps writes them, so that a skipped body has no overlap.
+        double low = std::numeric_limits<double>::infinity(), high = -low;
+        for (std::uint32_t s = first; s < end; ++s) {
+            low = std::min(low, position[s].z - radius[s]);
+            high = std::max(high, position[s].z + radius[s]);
+        }
+        lowest[b] = low;
+        highest[b] = high;
     }
 }
 
