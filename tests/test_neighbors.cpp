@@ -3,7 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -208,6 +212,56 @@ TEST(VerletPairList, KeepsItsPairsUntilAPointMovesHalfTheSkin) {
     d.points[10].y += 0.051;
     EXPECT_TRUE(list.update(d.points, d.radii, d.groups, box));
     EXPECT_EQ(list.builds(), 2u);
+}
+
+// The sifted visit keeps exactly the listed pairs a contact test would not reject (|d| < r_i + r_j
+// in 3D, d ≠ 0), in list order and with the same d to the bit, across several blocks of pairs; a
+// point with a NaN height keeps all its pairs, so that the contact search still sees the NaN.
+TEST(VerletPairList, VisitsExactlyThePairsThatMayTouchInListOrder) {
+    const PeriodicBox2D box{12.0, 9.0};
+    Discs d = random_discs(box, 1500, 10);
+    SplitMix64 rng(11);
+    for (Vec3& p : d.points)
+        p.z = rng.uniform(-0.5, 0.5);  // some close in the plane are apart in height
+    VerletPairList list(0.1);
+    list.update(d.points, d.radii, d.groups, box);
+    d.points[3].z = std::numeric_limits<double>::quiet_NaN();
+    d.points[5] = d.points[9];  // a pair at distance 0, if listed, is rejected
+    struct Visit {
+        std::size_t k;  // the pair's place in the list
+        std::uint32_t i, j;
+        Vec3 d;
+    };
+    std::vector<Visit> expected;
+    std::size_t nan_pairs = 0, k = 0;
+    list.for_each_pair(d.points, [&](std::uint32_t i, std::uint32_t j, const Vec3& s) {
+        const double reach = d.radii[i] + d.radii[j], d2 = norm2(s);
+        if (!(d2 >= reach * reach || d2 == 0.0)) expected.push_back({k, i, j, s});
+        nan_pairs += std::isnan(d2);
+        ++k;
+    });
+    const auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };  // NaN ≠ NaN
+    for (const std::size_t begin : {std::size_t{0}, std::size_t{77}}) {  // and from inside a block
+        std::vector<Visit> sifted;
+        list.for_each_touching_pair(d.points, d.radii, begin, list.size(),
+                                    [&](std::uint32_t i, std::uint32_t j, const Vec3& s) {
+                                        sifted.push_back({0, i, j, s});
+                                    });
+        std::vector<Visit> tail;
+        std::copy_if(expected.begin(), expected.end(), std::back_inserter(tail),
+                     [&](const Visit& v) { return v.k >= begin; });
+        ASSERT_EQ(sifted.size(), tail.size()) << "from pair " << begin;
+        for (std::size_t n = 0; n < tail.size(); ++n) {
+            ASSERT_EQ(sifted[n].i, tail[n].i) << n;
+            ASSERT_EQ(sifted[n].j, tail[n].j) << n;
+            ASSERT_EQ(bits(sifted[n].d.x), bits(tail[n].d.x)) << n;
+            ASSERT_EQ(bits(sifted[n].d.y), bits(tail[n].d.y)) << n;
+            ASSERT_EQ(bits(sifted[n].d.z), bits(tail[n].d.z)) << n;
+        }
+    }
+    EXPECT_GT(list.size(), 3u * 256u);                // several blocks
+    EXPECT_LT(expected.size(), list.size() * 3 / 4);  // and the sift drops pairs
+    EXPECT_GT(nan_pairs, 0u);
 }
 
 TEST(VerletPairList, RefusesASkinThatIsNotPositive) {

@@ -12,11 +12,21 @@
 namespace rodsea {
 
 struct SpeciesTable {
-    std::vector<double> inverse_mass;         // 1 / mass units
-    std::vector<Vec3> inverse_inertia;        // inverse principal moments, 1 / (mass units mm²)
-    std::vector<physics::Rotor> rotor;        // torque-free rotation constants
-    std::vector<double> reach2;               // farthest sphere centre from the centre, mm²
-    std::vector<int> sphere_axis;             // the body axis every sphere centre is on, or -1
+    std::vector<double> inverse_mass;   // 1 / mass units
+    std::vector<Vec3> inverse_inertia;  // inverse principal moments, 1 / (mass units mm²)
+    std::vector<physics::Rotor> rotor;  // torque-free rotation constants
+    std::vector<double> reach2;         // farthest sphere centre from the centre, mm²
+    std::vector<int> sphere_axis;       // the body axis every sphere centre is on, or -1
+    // The outline of each species in height: sphere k of a body on axis sphere_axis, at offset
+    // a_k along it with radius r_k, reaches z + a_k u ± r_k, u the axis's vertical component; its
+    // lowest bottom is z − max_k (r_k − a_k u) and its highest top z + max_k (r_k + a_k u). The
+    // outline keeps the spheres that attain those maxima at some tilt u in [−1, 1] (the two ends
+    // and the thick middle of a tapered rod), their radii grown by < 10⁻⁷ mm for the slivers of
+    // tilt it leaves out (species_table.cpp). Any other shape: one entry, a = 0 and r its
+    // farthest sphere surface from the centre. Outline k of species s: first_outline[s] ≤ k <
+    // first_outline[s + 1].
+    std::vector<std::uint32_t> first_outline;
+    std::vector<double> outline_along, outline_radius;  // mm
     std::vector<std::uint32_t> first_sphere;  // into sphere_offset/radius, plus one past the end
     std::vector<Vec3> sphere_offset;          // principal body frame, mm
     std::vector<double> sphere_radius;        // mm

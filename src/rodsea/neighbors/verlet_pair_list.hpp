@@ -8,6 +8,7 @@
 // Pairs are kept sorted by (i, j) with i < j, so the order in which contacts are found does not
 // depend on when the list was last rebuilt: a run resumed from a checkpoint finds the same
 // contacts in the same order as the run that never stopped.
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -52,6 +53,35 @@ class VerletPairList {
         for (size_t k = begin; k < end; ++k) {
             const std::uint32_t i = first_[k], j = second_[k];
             visit(i, j, minimum_image(points[i] - points[j]));
+        }
+    }
+
+    // visit(i, j, d) as for_each_pair, for the pairs [begin, end) whose spheres (radii r) may
+    // touch: all but those with |d| ≥ r_i + r_j (3D) or d = 0, which a contact test rejects; a
+    // NaN distance is visited, for the caller to see. Most listed pairs do not touch, and a loop
+    // that decides pair by pair mispredicts which and waits for each far sphere in turn, so a
+    // block of pairs is sifted first without branches and then only the kept ones are visited,
+    // in list order.
+    template <class Visit>
+    void for_each_touching_pair(std::span<const Vec3> points, std::span<const double> radii,
+                                size_t begin, size_t end, Visit&& visit) const {
+        constexpr size_t kBlock = 256;
+        std::uint16_t kept[kBlock];
+        for (size_t block = begin; block < end; block += kBlock) {
+            const size_t stop = std::min(end, block + kBlock);
+            size_t n = 0;
+            for (size_t k = block; k < stop; ++k) {
+                const std::uint32_t i = first_[k], j = second_[k];
+                const double reach = radii[i] + radii[j];
+                const double d2 = norm2(minimum_image(points[i] - points[j]));
+                kept[n] = static_cast<std::uint16_t>(k - block);
+                n += !((d2 >= reach * reach) | (d2 == 0.0));
+            }
+            for (size_t h = 0; h < n; ++h) {
+                const size_t k = block + kept[h];
+                const std::uint32_t i = first_[k], j = second_[k];
+                visit(i, j, minimum_image(points[i] - points[j]));
+            }
         }
     }
 

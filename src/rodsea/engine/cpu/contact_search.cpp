@@ -35,8 +35,8 @@ namespace {
 void find_body_contacts(const VerletPairList& pairs, const SearchInput& in, Chunk range,
                         std::vector<Contact>& found, ContactFinder::Depth& depth) {
     const SphereTable& spheres = in.spheres;
-    pairs.for_each_pair(
-        spheres.position, range.begin, range.end,
+    pairs.for_each_touching_pair(
+        spheres.position, spheres.radius, range.begin, range.end,
         [&](std::uint32_t i, std::uint32_t j, const Vec3& d) {
             const std::uint32_t bi = spheres.body[i], bj = spheres.body[j];
             Contact c;

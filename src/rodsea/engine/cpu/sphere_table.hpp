@@ -16,9 +16,9 @@ struct SphereTable {
     std::vector<double> radius;           // mm
     std::vector<Vec3> position;           // world, mm; x, y not wrapped
     std::vector<std::uint32_t> first_of;  // first sphere of each body, plus one past the end
-    // Per body, the lowest sphere bottom min(z − r) and the highest top max(z + r), mm, from the
-    // same z as `position`: a body whose spheres cannot touch a plate is skipped whole by the
-    // plate search, which otherwise reads every sphere every step.
+    // Per body, bounds below its lowest sphere bottom min(z − r) and above its highest top
+    // max(z + r), mm, as `position` rounds them: a body whose spheres cannot touch a plate is
+    // skipped whole by the plate search, which otherwise reads every sphere every step.
     std::vector<double> lowest, highest;
 
     void assign(std::span<const std::uint32_t> body_species, const SpeciesTable& species);
