@@ -223,10 +223,10 @@ TEST(VerletPairList, VisitsExactlyThePairsThatMayTouchInListOrder) {
     SplitMix64 rng(11);
     for (Vec3& p : d.points)
         p.z = rng.uniform(-0.5, 0.5);  // some close in the plane are apart in height
+    d.points[5] = d.points[9];         // a pair at distance 0: listed, and rejected
     VerletPairList list(0.1);
     list.update(d.points, d.radii, d.groups, box);
     d.points[3].z = std::numeric_limits<double>::quiet_NaN();
-    d.points[5] = d.points[9];  // a pair at distance 0, if listed, is rejected
     struct Visit {
         std::size_t k;  // the pair's place in the list
         std::uint32_t i, j;
@@ -234,23 +234,30 @@ TEST(VerletPairList, VisitsExactlyThePairsThatMayTouchInListOrder) {
     };
     std::vector<Visit> expected;
     std::size_t nan_pairs = 0, k = 0;
+    bool twins = false;
     list.for_each_pair(d.points, [&](std::uint32_t i, std::uint32_t j, const Vec3& s) {
         const double reach = d.radii[i] + d.radii[j], d2 = norm2(s);
         if (!(d2 >= reach * reach || d2 == 0.0)) expected.push_back({k, i, j, s});
         nan_pairs += std::isnan(d2);
+        twins = twins || (i == 5 && j == 9);
         ++k;
     });
+    ASSERT_TRUE(twins);
     const auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };  // NaN ≠ NaN
-    for (const std::size_t begin : {std::size_t{0}, std::size_t{77}}) {  // and from inside a block
+    // The whole list, ranges starting and ending inside blocks (as threads split it), none.
+    const std::size_t all = list.size();
+    const std::vector<std::pair<std::size_t, std::size_t>> ranges = {
+        {0, all}, {77, all}, {0, 300}, {300, 301}, {all / 2, all / 2}, {all / 3, 2 * all / 3}};
+    for (const auto& [begin, end] : ranges) {
         std::vector<Visit> sifted;
-        list.for_each_touching_pair(d.points, d.radii, begin, list.size(),
+        list.for_each_touching_pair(d.points, d.radii, begin, end,
                                     [&](std::uint32_t i, std::uint32_t j, const Vec3& s) {
                                         sifted.push_back({0, i, j, s});
                                     });
         std::vector<Visit> tail;
         std::copy_if(expected.begin(), expected.end(), std::back_inserter(tail),
-                     [&](const Visit& v) { return v.k >= begin; });
-        ASSERT_EQ(sifted.size(), tail.size()) << "from pair " << begin;
+                     [&](const Visit& v) { return v.k >= begin && v.k < end; });
+        ASSERT_EQ(sifted.size(), tail.size()) << "pairs " << begin << " to " << end;
         for (std::size_t n = 0; n < tail.size(); ++n) {
             ASSERT_EQ(sifted[n].i, tail[n].i) << n;
             ASSERT_EQ(sifted[n].j, tail[n].j) << n;

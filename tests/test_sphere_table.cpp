@@ -85,6 +85,14 @@ TEST(PlateSearch, SkipsBodiesClearOfThePlatesAndFindsWhatAScanOfEverySphereFinds
                     rng.uniform(plates.base_z - 0.3, plates.lid_z + 0.3)},
                    Quat::from_axis_angle(normalized(axis), rng.uniform(-3.2, 3.2)));
     }
+    // Beads whose bottom or top is at a plate, and an ulp either side: the margin, not luck,
+    // must keep them searched.
+    const double r = params.species[2].shape.radii[0];
+    for (const double z : {plates.base_z + r, plates.lid_z - r})
+        for (const double toward : {-1.0, 1.0}) {
+            bodies.add(2, {1.0, 1.0, z}, Quat{});
+            bodies.add(2, {1.0, 1.0, std::nextafter(z, toward * 1e9)}, Quat{});
+        }
     const SpeciesTable species = SpeciesTable::from(params);
     cpu::SphereTable spheres;
     spheres.assign(bodies.species, species);
@@ -105,7 +113,8 @@ TEST(PlateSearch, SkipsBodiesClearOfThePlatesAndFindsWhatAScanOfEverySphereFinds
     }
     // The outline: the tapered polar rod's two ends, the apolar rod's two ends and thick middle,
     // the bead, the bent shape's bounding sphere. A bound on a rod or bead is its extreme sphere
-    // to the slack and the margin (< 10⁻⁷ mm); on the bent shape, a bound.
+    // to the slack and the margin (2 × 17 × 10⁻⁹ × 2.05 mm = 7×10⁻⁸ mm for the 4.5 mm rod, the
+    // widest, and 10⁻¹² of the heights): within 10⁻⁷ mm. On the bent shape, a bound.
     EXPECT_EQ(species.first_outline, (std::vector<std::uint32_t>{0, 2, 5, 6, 7}));
     std::size_t clear = 0, base_and_lid = 0;
     for (std::uint32_t b = 0; b < bodies.size(); ++b) {

@@ -199,7 +199,7 @@ void set_analysis_option(AnalysisOptions& options, const std::string& key, const
     try {
         v = config::value_from_text(*it, value);
     } catch (const InvalidParameter&) {  // the same error, under the name the user wrote
-        throw InvalidParameter(given_as, value, it->allowed_text());
+        throw InvalidParameter(given_as, value.empty() ? "\"\"" : value, it->allowed_text());
     }
     const Field& field = kFields[static_cast<std::size_t>(it - keys.begin())];
     if (const auto* d = std::get_if<double AnalysisOptions::*>(&field))

@@ -21,8 +21,9 @@ struct SpeciesTable {
     // a_k along it with radius r_k, reaches z + a_k u ± r_k, u the axis's vertical component; its
     // lowest bottom is z − max_k (r_k − a_k u) and its highest top z + max_k (r_k + a_k u). The
     // outline keeps the spheres that attain those maxima at some tilt u in [−1, 1] (the two ends
-    // and the thick middle of a tapered rod), their radii grown by < 10⁻⁷ mm for the slivers of
-    // tilt it leaves out (species_table.cpp). Any other shape: one entry, a = 0 and r its
+    // and the thick middle of a tapered rod), their radii grown by 2 n 10⁻⁹ max|a_k| (n spheres;
+    // 7×10⁻⁸ mm for a 4.5 mm rod) for the slivers of tilt it leaves out (species_table.cpp).
+    // Any other shape: one entry, a = 0 and r its
     // farthest sphere surface from the centre. Outline k of species s: first_outline[s] ≤ k <
     // first_outline[s + 1].
     std::vector<std::uint32_t> first_outline;

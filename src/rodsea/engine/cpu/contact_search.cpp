@@ -66,7 +66,8 @@ void find_plate_contacts(const SearchInput& in, Chunk range, std::vector<Contact
         depth.add(overlap / r);
     };
     for (size_t b = range.begin; b < range.end; ++b) {
-        // Whole bodies clear of both plates are most of them; NaN bounds are searched.
+        // Whole bodies clear of both plates are most of them. A NaN height gives NaN bounds,
+        // which are searched; spheres of a NaN tilt have NaN heights and touch nothing.
         if (spheres.lowest[b] >= in.plates.base_z && spheres.highest[b] <= in.plates.lid_z)
             continue;
         for (size_t s = spheres.first_of[b]; s < spheres.first_of[b + 1]; ++s) {
@@ -101,11 +102,13 @@ ContactSearchStats ContactFinder::find(const SphereTable& spheres, BodyView bodi
     body_chunks_.resize(slots);
     plate_chunks_.resize(slots);
     depth_.assign(slots, Depth{});
+    for (size_t t = 0; t < slots; ++t) {  // a team smaller than asked leaves slots unfilled
+        body_chunks_[t].clear();
+        plate_chunks_[t].clear();
+    }
 #pragma omp parallel num_threads(threads)
     {
         const int team = team_size(), t = thread_index();
-        body_chunks_[t].clear();
-        plate_chunks_[t].clear();
         find_body_contacts(pairs_, in, chunk_of(pairs_.size(), t, team), body_chunks_[t],
                            depth_[t]);
         find_plate_contacts(in, chunk_of(bodies.size(), t, team), plate_chunks_[t], depth_[t]);

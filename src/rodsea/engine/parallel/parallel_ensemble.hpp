@@ -245,6 +245,7 @@ class ParallelEnsemble final : public EnsembleStepper {
             const auto body_shift = static_cast<std::uint32_t>(all.size());
             const auto sphere_shift = static_cast<std::uint32_t>(spheres.body.size());
             const auto offset_shift = static_cast<std::uint32_t>(species.sphere_offset.size());
+            const auto outline_shift = static_cast<std::uint32_t>(species.outline_along.size());
             first_body_of_system.push_back(body_shift);
             for (std::size_t b = 0; b < m.bodies.size(); ++b) {
                 all.add(static_cast<std::uint32_t>(m.bodies.species[b] + species_first),
@@ -271,8 +272,12 @@ class ParallelEnsemble final : public EnsembleStepper {
             append(species.sphere_radius, t.sphere_radius);
             append(species.plate, t.plate);
             append(species.polar, t.polar);
-            for (std::size_t k = 0; k < t.size(); ++k)
+            append(species.outline_along, t.outline_along);
+            append(species.outline_radius, t.outline_radius);
+            for (std::size_t k = 0; k < t.size(); ++k) {
                 species.first_sphere.push_back(t.first_sphere[k] + offset_shift);
+                species.first_outline.push_back(t.first_outline[k] + outline_shift);
+            }
             for (std::size_t a = 0; a < t.size(); ++a) {  // this system's block of pairs
                 pair_row.push_back(static_cast<std::uint32_t>(species.pair.size() + a * t.size()));
                 local_index.push_back(static_cast<std::uint32_t>(a));
@@ -285,6 +290,7 @@ class ParallelEnsemble final : public EnsembleStepper {
                 2.0 * *std::max_element(t.sphere_radius.begin(), t.sphere_radius.end()));
         }
         species.first_sphere.push_back(static_cast<std::uint32_t>(species.sphere_offset.size()));
+        species.first_outline.push_back(static_cast<std::uint32_t>(species.outline_along.size()));
         spheres.first_of.push_back(static_cast<std::uint32_t>(spheres.body.size()));
         species_count_ = static_cast<std::uint32_t>(species_first);
 
