@@ -66,9 +66,11 @@ void find_plate_contacts(const SearchInput& in, Chunk range, std::vector<Contact
         depth.add(overlap / r);
     };
     for (size_t b = range.begin; b < range.end; ++b) {
-        // Whole bodies clear of both plates are most of them. A NaN height gives NaN bounds,
-        // which are searched; spheres of a NaN tilt have NaN heights and touch nothing.
-        if (spheres.lowest[b] >= in.plates.base_z && spheres.highest[b] <= in.plates.lid_z)
+        // Whole bodies clear of both plates are most of them (a lone sphere is read directly).
+        // A NaN height gives NaN bounds, which are searched; spheres of a NaN tilt have NaN
+        // heights and touch nothing.
+        if (spheres.first_of[b + 1] - spheres.first_of[b] > 1 &&
+            spheres.lowest[b] >= in.plates.base_z && spheres.highest[b] <= in.plates.lid_z)
             continue;
         for (size_t s = spheres.first_of[b]; s < spheres.first_of[b + 1]; ++s) {
             const physics::PlateOverlaps o =

@@ -23,8 +23,8 @@ void PlateProjection::apply(const std::vector<Contact>& contacts, BodyView bodie
         bodies.position[b].z += dz;
         for (std::uint32_t s = spheres.first_of[b]; s < spheres.first_of[b + 1]; ++s)
             spheres.position[s].z += dz;
-        spheres.lowest[b] += dz;   // still bounds: the spheres moved by dz exactly, to rounding
-        spheres.highest[b] += dz;  // within the bounds' margin
+        spheres.lowest[b] += dz;   // still bounds (a bead's are unused): the spheres moved by dz,
+        spheres.highest[b] += dz;  // to a rounding within the bounds' margin
     }
 }
 

@@ -37,9 +37,11 @@ void SphereTable::update_positions(BodyView bodies, const SpeciesTable& species,
         // The body's lowest sphere bottom and highest top from its centre, its tilt and the
         // species' outline (species_table.hpp): a look at two or three spheres instead of all.
         // The margin (10⁻¹² of the heights, where x + s u and these sums round at 10⁻¹⁶) keeps
-        // them bounds on the spheres as rounded.
-        const int axis = species.sphere_axis[k];
+        // them bounds on the spheres as rounded. A lone sphere (a bead) is its own bound: the
+        // plate search reads it directly, and its bounds are not set.
+        if (first_of[b + 1] - first == 1) continue;
         const double z = bodies.position[b].z;
+        const int axis = species.sphere_axis[k];
         const double u = axis >= 0 ? rotated_axis(bodies.orientation[b], axis).z : 0.0;
         double down = 0.0, up = 0.0;
         for (std::uint32_t o = species.first_outline[k]; o < species.first_outline[k + 1]; ++o) {

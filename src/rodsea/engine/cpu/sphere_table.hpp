@@ -19,8 +19,8 @@ struct SphereTable {
     // Per body, bounds below its lowest sphere bottom min(z − r) and above its highest top
     // max(z + r), mm, as `position` rounds them: a body whose spheres cannot touch a plate is
     // skipped whole by the plate search, which otherwise reads every sphere every step. Set by
-    // update_positions (for unit quaternions, as free flight leaves them) and moved with the
-    // spheres by the plate projection.
+    // update_positions (for unit quaternions, as free flight leaves them) for bodies of more
+    // than one sphere, and moved with the spheres by the plate projection.
     std::vector<double> lowest, highest;
 
     void assign(std::span<const std::uint32_t> body_species, const SpeciesTable& species);
