@@ -79,6 +79,9 @@ FIG4A = [(sigma, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspect_rat
           ".series.csv") for sigma in (1.25, 3.125, 5.625)]
 FIG4A_WINDOW = (30.0, 60.0)
 FIG4A_BLOCK = 5.0
+# The same point at σ = 5.625 in the 88 mm box (98 polar rods): its P(t) and S(t) beside the
+# 38 mm runs', while it is short of FIG4A_WINDOW.
+FIG4A_88MM = f"{DATA}/fig4a-88mm/medium.area_fraction=0.75,medium.aspect_ratio=5.625.series.csv"
 
 # Fig. 5b, first look: the medium's velocity around polar rods against distance in the 63 mm box
 # (label, profile table) from `rodsea analyze --observables medium_velocity`.
@@ -373,6 +376,18 @@ def draw_fig4a(plt):
     points.set_xlim(0.8, 6.0)
     points.set_ylim(0.0, 1.0)
     points.set_title("P and the medium's S against σ", fontsize=10)
+    if os.path.isfile(os.path.join(ROOT, FIG4A_88MM)):
+        t = read_csv(FIG4A_88MM)
+        middle = 0.5 * (column(t, "t_from", FIG4A_88MM) + column(t, "t_to", FIG4A_88MM))
+        p, nematic = column(t, "P_polar", FIG4A_88MM), column(t, "S_medium", FIG4A_88MM)
+        series = fig.axes[1]
+        k = [sigma for sigma, _ in FIG4A].index(5.625)
+        series.plot(middle, p, color=f"C{k}", lw=1.2, ls="--", label="σ = 5.625, 88 mm box")
+        series.plot(middle, nematic, color="0.3", lw=1.0, ls=":",
+                    label="S of the medium, σ = 5.625, 88 mm")
+        series.legend(loc="best", fontsize=7)
+        dump["P(t): σ = 5.625, 88 mm"] = {"x": middle.tolist(), "y": p.tolist()}
+        dump["S(t): σ = 5.625, 88 mm"] = {"x": middle.tolist(), "y": nematic.tolist()}
     return fig, dump
 
 
