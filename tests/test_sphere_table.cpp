@@ -17,14 +17,17 @@
 namespace rodsea {
 namespace {
 
+// Three spheres on no common axis: the general path of every stage.
+Species bent_species() {
+    return {"bent",
+            BodyKind::bead,
+            make_shape({{{0, 0, 0}, 0.3}, {{1.0, 0.2, 0}, 0.2}, {{0.1, 0.9, 0.3}, 0.25}}, 1.0),
+            {0.0, 0.3}};
+}
+
 TEST(SphereTable, SpheresOnAnAxisAreWhereTheRotationMatrixPutsThem) {
     EngineParameters params;
-    params.species = {
-        polar_rod_species(), apolar_rod_species(2.5), bead_species(),
-        Species{"bent",
-                BodyKind::bead,
-                make_shape({{{0, 0, 0}, 0.3}, {{1.0, 0.2, 0}, 0.2}, {{0.1, 0.9, 0.3}, 0.25}}, 1.0),
-                {0.0, 0.3}}};
+    params.species = {polar_rod_species(), apolar_rod_species(2.5), bead_species(), bent_species()};
     // The rods' and the bead's centres lie on x exactly, so they take the x + s u path.
     const std::vector<Species>& species = params.species;
     for (size_t k = 0; k < 3; ++k)
@@ -69,12 +72,7 @@ TEST(SphereTable, SpheresOnAnAxisAreWhereTheRotationMatrixPutsThem) {
 TEST(PlateSearch, SkipsBodiesClearOfThePlatesAndFindsWhatAScanOfEverySphereFinds) {
     EngineParameters params;
     params.box = {40.0, 40.0};
-    params.species = {
-        polar_rod_species(), apolar_rod_species(4.5), bead_species(),
-        Species{"bent",
-                BodyKind::bead,
-                make_shape({{{0, 0, 0}, 0.3}, {{1.0, 0.2, 0}, 0.2}, {{0.1, 0.9, 0.3}, 0.25}}, 1.0),
-                {0.0, 0.3}}};
+    params.species = {polar_rod_species(), apolar_rod_species(4.5), bead_species(), bent_species()};
     const StepContext step = step_context(params, 0);
     const physics::PlateState& plates = step.plates;
     BodyState bodies;
