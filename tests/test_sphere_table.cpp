@@ -118,9 +118,10 @@ TEST(PlateSearch, SkipsBodiesClearOfThePlatesAndFindsWhatAScanOfEverySphereFinds
                                                       bodies.position[b], false, o.lid, k));
     }
     // The outline: the tapered polar rod's two ends, the apolar rod's two ends and thick middle,
-    // the bead, the bent shape's bounding sphere. A bound on a rod or bead is its extreme sphere
-    // to the slack and the margin (2 × 17 × 10⁻⁹ × 2.05 mm = 7×10⁻⁸ mm for the 4.5 mm rod, the
-    // widest, and 10⁻¹² of the heights): within 10⁻⁷ mm. On the bent shape, a bound.
+    // the bead (unused: a lone sphere is read directly), the bent shape's bounding sphere. A
+    // bound on a rod is its extreme sphere to the slack and the margin (2 × 17 × 10⁻⁹ × 2.05 mm
+    // = 7×10⁻⁸ mm for the 4.5 mm rod, the widest, and 10⁻¹² of the heights): within 10⁻⁷ mm. On
+    // the bent shape, a bound.
     EXPECT_EQ(species.first_outline, (std::vector<std::uint32_t>{0, 2, 5, 6, 7}));
     std::size_t clear = 0, base_and_lid = 0;
     for (std::uint32_t b = 0; b < bodies.size(); ++b) {
