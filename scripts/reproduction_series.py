@@ -5,9 +5,10 @@
 
 Reads each run's analysis (RUN_DIR/analysis, written by `rodsea analyze` or `campaign collect`)
 and writes DIR/<point>.series.csv: per time bin (default 1 s) the means of P of the polar rods,
-S of the medium, Σ (baseline removed), N_m and the fraction of polar rods in flocks, with the
-number of frames in the bin and whether the bin lies in the steady window (nan for what the run
-does not have: Σ without a medium). <point> is the run's
+S of the medium, Σ (baseline removed), N_m, the fraction of polar rods in flocks and the
+transverse and longitudinal band amplitudes |ρ_k| (the `bands` observable), with the number of
+frames in the bin and whether the bin lies in the steady window (nan for what the run does not
+have: Σ without a medium, bands where the analysis did not compute them). <point> is the run's
 campaign point (the name of the directory above seed<k>), or the run directory's name; a
 campaign's further replicates (seed<k>, k > 1) write DIR/<point>.seed<k>.series.csv.
 Units: time s; the rest are numbers (docs/analysis.md).
@@ -24,6 +25,8 @@ COLUMNS = [  # (analysis file, column, name in the series table)
     ("segregation.csv", "Sigma", "Sigma"),
     ("flocks.csv", "N_m", "N_m"),
     ("flocks.csv", "fraction_in_flocks", "fraction_in_flocks"),
+    ("bands.csv", "transverse", "band_transverse"),
+    ("bands.csv", "longitudinal", "band_longitudinal"),
 ]
 
 

@@ -575,7 +575,7 @@ TEST(PeriodicWrap, EveryObservableIsInvariantUnderAShiftOfTheWholeFrame) {
     AnalysisOptions options;
     options.medium_distance = 30.0;
     for (const std::string name :
-         {"order", "pair", "corotating", "flocks", "segregation", "medium_velocity"}) {
+         {"order", "pair", "corotating", "flocks", "segregation", "bands", "medium_velocity"}) {
         const auto a = make_observable(name, setup, resolved(setup, options));
         const auto b = make_observable(name, setup, resolved(setup, options));
         const auto ra = run_on(*a, {make_frame(side, bodies)}, setup);

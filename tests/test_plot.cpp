@@ -33,14 +33,21 @@ struct Inches {
 };
 constexpr Inches kCurve{6.5, 4.5}, kWide{11.0, 4.5}, kMap{6.5, 5.5};
 
-const std::map<std::string, Inches> kRunFigures{
-    {"order_parameters.png", kCurve}, {"autocorrelation.png", kCurve},
-    {"flocks_time.png", kCurve},      {"flock_sizes.png", kWide},
-    {"g_r_theta.png", kMap},          {"G_r_theta.png", kMap},
-    {"pair_correlation.png", kWide},  {"segregation.png", kCurve},
-    {"medium_velocity.png", kCurve},  {"fields_mean.png", kWide},
-    {"fields_last.png", kWide},       {"interface.png", kCurve},
-    {"defects.png", kWide},           {"flock_defects.png", kWide}};
+const std::map<std::string, Inches> kRunFigures{{"order_parameters.png", kCurve},
+                                                {"autocorrelation.png", kCurve},
+                                                {"flocks_time.png", kCurve},
+                                                {"flock_sizes.png", kWide},
+                                                {"g_r_theta.png", kMap},
+                                                {"G_r_theta.png", kMap},
+                                                {"pair_correlation.png", kWide},
+                                                {"segregation.png", kCurve},
+                                                {"bands.png", kCurve},
+                                                {"medium_velocity.png", kCurve},
+                                                {"fields_mean.png", kWide},
+                                                {"fields_last.png", kWide},
+                                                {"interface.png", kCurve},
+                                                {"defects.png", kWide},
+                                                {"flock_defects.png", kWide}};
 const std::vector<std::string> kTableFigures{"P_vs_phi_a.png", "Sigma_vs_phi_a.png", "P_vs_D_r.png",
                                              "Sigma_vs_D_r.png", "phase_diagram.png"};
 

@@ -31,6 +31,7 @@ from ._rodsea import (  # noqa: E402,F401  (the C++ core, re-exported)
     PairCorrelation,
     Simulation,
     __version__,
+    bands,
     coarse_grain,
     dbscan,
     in_plane_angles,

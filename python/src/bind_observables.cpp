@@ -12,6 +12,7 @@
 #include "bindings.hpp"
 #include "rodsea/analysis/corotating_maps.hpp"
 #include "rodsea/analysis/dbscan.hpp"
+#include "rodsea/analysis/density_modes.hpp"
 #include "rodsea/analysis/medium_velocity.hpp"
 #include "rodsea/analysis/neighbor_query.hpp"
 #include "rodsea/analysis/pair_correlation.hpp"
@@ -144,6 +145,28 @@ void bind_observables(py::module_& m) {
         },
         py::arg("box"), py::arg("polar"), py::arg("others"), py::arg("cell") = 9.0,
         py::arg("samples") = 20, py::arg("seed") = 1);
+
+    m.def(
+        "bands",
+        [](const py::sequence& box, const Doubles& positions, const Doubles& angles) {
+            const std::vector<Vec3> p = points_of(positions, "positions");
+            const std::vector<double> a = values_of(angles, p.size(), "angles");
+            const double axis = director_angle(a);
+            const BandAmplitudes b = band_amplitudes(box_of(box), p, axis);
+            py::dict modes;
+            for (std::size_t k = 0; k < kLongestModes.size(); ++k)
+                modes[py::make_tuple(kLongestModes[k].mx, kLongestModes[k].my)] = b.modes[k];
+            py::dict out;
+            out["axis"] = axis;
+            out["modes"] = modes;
+            out["transverse"] = b.transverse;
+            out["longitudinal"] = b.longitudinal;
+            return out;
+        },
+        py::arg("box"), py::arg("positions"), py::arg("angles"),
+        "the polar rods' longest density modes |ρ_k| of one frame ({(m_x, m_y): |ρ_k|}), their "
+        "axis of motion (rad) and the modes most nearly along it (transverse bands) and across it "
+        "(longitudinal bands), as the `bands` observable of rodsea analyze");
 
     py::class_<MediumVelocity>(m, "MediumVelocity",
                                "the medium's velocity around each polar rod, by distance")

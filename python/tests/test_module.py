@@ -180,6 +180,18 @@ def test_flocks_time_correlation_segregation_and_medium_velocity_compute(small_r
     assert c.C[0] == pytest.approx(1.0) and len(c.C) == 4
     sigma = rodsea.segregation(run.box, frame["positions"], polar, cell=5.0)
     assert 0.0 <= sigma <= 1.0
+    # Rods along x in a stripe along x, a quarter of the box wide: a longitudinal band whose
+    # mode (0, 1) is the stripe's transform, |sin(n k δ/2) / (n sin(k δ/2))| for n rows δ apart.
+    side, n, w = 40.0, 5, 10.0
+    ys = 15.0 + w * (np.arange(n) + 0.5) / n
+    xs = side * (np.arange(8) + 0.5) / 8
+    stripe = np.array([[x, y] for y in ys for x in xs])
+    b = rodsea.bands((side, side), stripe, np.zeros(len(stripe)))
+    k, d = 2 * np.pi / side, w / n
+    expected = abs(np.sin(n * k * d / 2) / (n * np.sin(k * d / 2)))
+    assert b["longitudinal"] == pytest.approx(expected, abs=1e-12)
+    assert b["modes"][(0, 1)] == pytest.approx(expected, abs=1e-12)
+    assert b["transverse"] == pytest.approx(0.0, abs=1e-12) and b["axis"] == pytest.approx(0.0)
     medium = ~polar
     mv = rodsea.MediumVelocity(d=3.0, r_max=5.0, bin=1.0).compute(
         run.box, frame["positions"][medium], frame["velocities"][medium],

@@ -32,6 +32,7 @@ FIGURES = {
     "corotating": ["g_r_theta.png", "G_r_theta.png"],
     "pair": ["pair_correlation.png"],
     "segregation": ["segregation.png"],
+    "bands": ["bands.png"],
     "medium_velocity": ["medium_velocity.png"],
 }
 FIGURES.update(field_figures.FIGURES)
@@ -145,6 +146,7 @@ def plan(run_input, log):
         "corotating": corotating_jobs,
         "pair": pair_jobs,
         "segregation": segregation_jobs,
+        "bands": band_jobs,
         "medium_velocity": medium_velocity_jobs,
         **field_figures.BUILDERS,
     }
@@ -555,6 +557,36 @@ def segregation_jobs(a, log):
         return fig
 
     return [("segregation.png", draw)]
+
+
+# --- bands ------------------------------------------------------------------------------------
+
+def band_jobs(a, log):
+    t = a.table("bands", "bands")
+    time, steady = t.number("time"), t.number("steady")
+    transverse, longitudinal = t.number("transverse"), t.number("longitudinal")
+    mean_t = a.scalar("bands", "band_transverse")
+    mean_l = a.scalar("bands", "band_longitudinal")
+    random = (a.scalar("bands", "band_random") or {}).get("value")
+
+    def draw(plt):
+        fig, ax = plt.subplots(figsize=SIZE_CURVE)
+        shade_steady(ax, time, steady)
+        ax.plot(time, longitudinal, lw=1.4, marker="o", ms=3,
+                label=f"longitudinal (across the motion): {value_text(mean_l)}")
+        ax.plot(time, transverse, lw=1.2, marker="s", ms=3,
+                label=f"transverse (along the motion): {value_text(mean_t)}")
+        if finite(random):
+            ax.axhline(random, color="0.4", ls=":", lw=1,
+                       label=f"random positions √(π/4N) = {random:.3f}")
+        ax.set_ylim(bottom=0.0)
+        ax.set_xlabel("t (s)")
+        ax.set_ylabel("|ρ_k| of the polar rods (longest modes)")
+        title(ax, a, "Bands of polar rods: longest density modes")
+        ax.legend(loc="best")
+        return fig
+
+    return [("bands.png", draw)]
 
 
 # --- medium velocity --------------------------------------------------------------------------

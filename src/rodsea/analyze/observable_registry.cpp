@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "rodsea/analyze/autocorrelation_observable.hpp"
+#include "rodsea/analyze/band_observable.hpp"
 #include "rodsea/analyze/corotating_maps_observable.hpp"
 #include "rodsea/analyze/defect_observable.hpp"
 #include "rodsea/analyze/drift_observable.hpp"
@@ -28,6 +29,9 @@ const std::vector<ObservableInfo>& observable_catalogue() {
          "DBSCAN flocks: N_m(t), <N_m>, histograms, labels per frame; flocks followed in time "
          "(merges, splits, lifetimes, leading rod)"},
         {"segregation", "Σ with its random-mixing baseline subtracted"},
+        {"bands",
+         "the polar rods' longest density modes: transverse and longitudinal bands relative to "
+         "their axis of motion"},
         {"medium_velocity", "medium velocity around polar rods vs distance, and at d"},
         {"drift", "mean velocity of each species; the medium's along the polar rods' heading"},
         {"fields",
@@ -53,6 +57,7 @@ std::string missing_requirement(const std::string& name, const AnalysisSetup& se
         if (setup.steady_frames < 2) return "needs at least two frames in the steady window";
     }
     if (name == "flocks" && polar == 0) return "needs polar rods";
+    if (name == "bands" && polar < 2) return "needs at least two polar rods";
     if ((name == "segregation" || name == "medium_velocity") && (polar == 0 || medium == 0))
         return "needs polar rods and a medium";
     const long long medium_rods = setup.count_of(BodyKind::apolar_rod);
@@ -123,6 +128,7 @@ std::unique_ptr<Observable> make_observable(const std::string& name, const Analy
         return std::make_unique<AutocorrelationObservable>(setup, options);
     if (name == "flocks") return std::make_unique<FlockObservable>(setup, options);
     if (name == "segregation") return std::make_unique<SegregationObservable>(setup, options);
+    if (name == "bands") return std::make_unique<BandObservable>(setup);
     if (name == "medium_velocity")
         return std::make_unique<MediumVelocityObservable>(setup, options);
     if (name == "drift") return std::make_unique<DriftObservable>(setup);

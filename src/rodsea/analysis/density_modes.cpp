@@ -1,0 +1,66 @@
+#include "rodsea/analysis/density_modes.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace rodsea {
+
+namespace {
+
+Vec3 wave_vector(const PeriodicBox2D& box, DensityMode mode) {
+    const double two_pi = 2.0 * std::numbers::pi;
+    return {two_pi * mode.mx / box.lx, two_pi * mode.my / box.ly, 0.0};
+}
+
+}  // namespace
+
+double density_mode_amplitude(const PeriodicBox2D& box, std::span<const Vec3> points,
+                              DensityMode mode) {
+    if (points.empty()) return std::nan("");
+    const Vec3 k = wave_vector(box, mode);
+    double re = 0.0, im = 0.0;
+    for (const Vec3& p : points) {
+        const double phase = k.x * p.x + k.y * p.y;  // a whole number of turns per box side
+        re += std::cos(phase);
+        im += std::sin(phase);
+    }
+    return std::hypot(re, im) / static_cast<double>(points.size());
+}
+
+double director_angle(std::span<const double> theta) {
+    double c = 0.0, s = 0.0;
+    for (const double t : theta) {
+        c += std::cos(2.0 * t);
+        s += std::sin(2.0 * t);
+    }
+    // S below 1e-12 is rounding (sin 2θ of θ = π/2 is 1e-16, not 0): no axis.
+    if (std::hypot(c, s) <= 1e-12 * static_cast<double>(theta.size())) return std::nan("");
+    const double angle = 0.5 * std::atan2(s, c);  // (−π/2, π/2]
+    return angle < 0.0 ? angle + std::numbers::pi : angle;
+}
+
+BandAmplitudes band_amplitudes(const PeriodicBox2D& box, std::span<const Vec3> points,
+                               double axis) {
+    BandAmplitudes b;
+    for (std::size_t m = 0; m < kLongestModes.size(); ++m)
+        b.modes[m] = density_mode_amplitude(box, points, kLongestModes[m]);
+    if (!std::isfinite(axis)) {
+        b.transverse = b.longitudinal = std::nan("");
+        return b;
+    }
+    // |cos| of the angle between each k and the axis; the first mode wins a tie.
+    const Vec3 along{std::cos(axis), std::sin(axis), 0.0};
+    std::size_t most_along = 0, most_across = 0;
+    double best_along = -1.0, best_across = 2.0;
+    for (std::size_t m = 0; m < kLongestModes.size(); ++m) {
+        const Vec3 k = wave_vector(box, kLongestModes[m]);
+        const double c = std::abs(k.x * along.x + k.y * along.y) / std::hypot(k.x, k.y);
+        if (c > best_along) best_along = c, most_along = m;
+        if (c < best_across) best_across = c, most_across = m;
+    }
+    b.transverse = b.modes[most_along];
+    b.longitudinal = b.modes[most_across];
+    return b;
+}
+
+}  // namespace rodsea

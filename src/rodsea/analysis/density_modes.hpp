@@ -1,0 +1,47 @@
+#pragma once
+// Bands of polar rods as the longest-wavelength modes of their density: ρ_k = (1/N) Σ_j
+// exp(i k·r_j) over the N rods for the wave-vectors of the periodic box with the fewest
+// wavelengths across it, k = 2π (m_x / L_x, m_y / L_y) for (m_x, m_y) = (1, 0), (0, 1), (1, 1),
+// (1, −1). |ρ_k| is 0 for a uniform lattice, |sin(k w / 2) / (k w / 2)| for a uniform band of
+// width w spanning the box across k, and √(π / 4N) on average for N random positions: a band
+// that spans the box shows up as one large |ρ_k|. Relative to the rods' axis of motion the paper
+// tells two kinds apart (its Fig. 4): transverse bands, wider across the motion than along it, so
+// that the density varies along the motion (k ∥ axis); longitudinal bands, along the motion, so
+// that it varies across it (k ⊥ axis).
+#include <array>
+#include <span>
+
+#include "rodsea/math/periodic_box.hpp"
+#include "rodsea/math/vec3.hpp"
+
+namespace rodsea {
+
+struct DensityMode {
+    int mx = 0, my = 0;  // wavelengths across the box in x and in y
+};
+
+// (1, 0), (0, 1), (1, 1), (1, −1): the longest wavelengths a periodic box holds along x, y and
+// its two diagonals.
+inline constexpr std::array<DensityMode, 4> kLongestModes{
+    {DensityMode{1, 0}, DensityMode{0, 1}, DensityMode{1, 1}, DensityMode{1, -1}}};
+
+// |ρ_k| of the points for the mode's wave-vector, in [0, 1]; NaN for no points.
+double density_mode_amplitude(const PeriodicBox2D& box, std::span<const Vec3> points,
+                              DensityMode mode);
+
+// The angle (rad, in [0, π)) of the axis that rods with in-plane angles θ point along, either
+// way: half the angle of ⟨(cos 2θ, sin 2θ)⟩. NaN when that mean is zero to rounding (S below
+// 1e-12: no axis) or there are no angles.
+double director_angle(std::span<const double> theta);
+
+struct BandAmplitudes {
+    std::array<double, kLongestModes.size()> modes{};  // |ρ_k| of each of kLongestModes
+    // |ρ_k| of the mode whose k is most nearly along the axis (transverse bands) and of the one
+    // most nearly across it (longitudinal bands); NaN without an axis.
+    double transverse = 0.0, longitudinal = 0.0;
+};
+
+// The modes of `points` and their split relative to the axis at angle `axis` (rad, mod π).
+BandAmplitudes band_amplitudes(const PeriodicBox2D& box, std::span<const Vec3> points, double axis);
+
+}  // namespace rodsea

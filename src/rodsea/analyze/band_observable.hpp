@@ -1,0 +1,28 @@
+#pragma once
+// Bands of polar rods every frame (analysis/density_modes.hpp): the longest-wavelength density
+// modes of the polar rods, split into the transverse and the longitudinal band relative to
+// their axis of motion, the director of their headings (either heading: lanes of rods moving
+// both ways along one axis are one longitudinal band).
+#include <vector>
+
+#include "rodsea/analysis/density_modes.hpp"
+#include "rodsea/analyze/observable.hpp"
+
+namespace rodsea {
+
+class BandObservable final : public Observable {
+  public:
+    explicit BandObservable(const AnalysisSetup& setup) : setup_(setup) {}
+    std::string name() const override { return "bands"; }
+    bool wants_transient() const override { return true; }
+    void compute(const FrameContext& frame) override;
+    ObservableResults finish() override;
+
+  private:
+    AnalysisSetup setup_;
+    std::vector<double> times_, axis_, transverse_, longitudinal_;
+    std::vector<BandAmplitudes> amplitudes_;
+    std::vector<char> steady_;
+};
+
+}  // namespace rodsea
