@@ -183,6 +183,33 @@ TEST(VerletPairList, HoldsExactlyThePairsWithinReachPlusSkinInSortedOrder) {
     EXPECT_GT(expected.size(), 100u);
 }
 
+// Threads split the grid's cell rows: on any number of them, more than the rows too, the list is
+// the brute-force one in the same order, after a first build by a larger team and after a forced
+// rebuild (no pair a larger team found may linger).
+TEST(VerletPairList, IsTheSameListOnAnyNumberOfThreads) {
+    const PeriodicBox2D box{12.0, 9.0};
+    const Discs d = random_discs(box, 400, 17);
+    const auto expected = close_pairs(
+        d, box, [&](std::uint32_t i, std::uint32_t j) { return d.radii[i] + d.radii[j] + 0.1; });
+    for (const int threads : {1, 2, 3, 5, 64}) {
+        VerletPairList list(0.1);
+        EXPECT_TRUE(list.update(d.points, d.radii, d.groups, box,
+                                std::numeric_limits<double>::infinity(), 7));
+        list.build(d.points, d.radii, d.groups, box, threads);
+        EXPECT_EQ(listed(list, d, box), expected) << threads << " threads";
+        EXPECT_EQ(list.builds(), 2u);
+    }
+    // A box a single cell row high (fewer than three cells of the widest disc across).
+    const PeriodicBox2D flat{12.0, 2.5};
+    const Discs f = random_discs(flat, 60, 18);
+    const auto flat_expected = close_pairs(
+        f, flat, [&](std::uint32_t i, std::uint32_t j) { return f.radii[i] + f.radii[j] + 0.1; });
+    VerletPairList list(0.1);
+    list.build(f.points, f.radii, f.groups, flat, 4);
+    EXPECT_EQ(listed(list, f, flat), flat_expected);
+    EXPECT_GT(flat_expected.size(), 10u);
+}
+
 // Moves smaller than skin / 2 keep the list, and it still holds every overlapping pair; a
 // sphere whose wrapped image jumps by a box side has not moved; a move past skin / 2 rebuilds.
 TEST(VerletPairList, KeepsItsPairsUntilAPointMovesHalfTheSkin) {

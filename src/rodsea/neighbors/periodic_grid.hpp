@@ -39,6 +39,26 @@ class PeriodicGrid2D {
     template <class Visit>
     void for_each_pair_within(double cutoff, Visit&& visit) const;
 
+    // The same pairs by slot, visit(a, b, d) with d = point in slot a − point in slot b, for the
+    // pairs whose slot a lies in the cell rows [row_begin, row_end) (rows along y, 0 .. rows()):
+    // the pairs of disjoint row ranges are disjoint, and the ranges of all rows give every pair
+    // once, so that threads can split the rows between them.
+    template <class Visit>
+    void for_each_slot_pair_within(double cutoff, int row_begin, int row_end, Visit&& visit) const;
+    int rows() const { return ny_; }
+
+    // The cell pairs behind those loops, for a caller with its own loop over their points:
+    // visit(a_begin, a_end, b_begin, b_end, sx, sy, same) for each occupied cell c of the rows
+    // [row_begin, row_end), first with itself (same: take the pairs a < b), then with each
+    // occupied neighbour of the half stencil; (sx, sy) (mm) brings the neighbour's image next to
+    // c. Along an axis of a single cell there is no shift: the minimum image is taken per pair
+    // there (single_cell_x(), single_cell_y()). Slots index slot_points().
+    template <class VisitCells>
+    void for_each_cell_pair(int row_begin, int row_end, VisitCells&& visit) const;
+    bool single_cell_x() const { return nx_ == 1; }
+    bool single_cell_y() const { return ny_ == 1; }
+    std::span<const Vec3> slot_points() const { return sorted_; }  // wrapped, in slot order
+
     // visit(j, d) for every point j with d = p_j − q (minimum image in x, y; z as given) and
     // d.x² + d.y² < radius². The radius may not exceed half the shorter box side (the minimum
     // image must be unique; std::invalid_argument otherwise); each cell is visited at most once
@@ -67,25 +87,41 @@ class PeriodicGrid2D {
 
 template <class Visit>
 void PeriodicGrid2D::for_each_pair_within(double cutoff, Visit&& visit) const {
+    for_each_slot_pair_within(cutoff, 0, ny_, [&](std::uint32_t a, std::uint32_t b, const Vec3& d) {
+        visit(order_[a], order_[b], d);
+    });
+}
+
+template <class Visit>
+void PeriodicGrid2D::for_each_slot_pair_within(double cutoff, int row_begin, int row_end,
+                                               Visit&& visit) const {
     check_cutoff(cutoff, cell_width());
     const double c2 = cutoff * cutoff;
     const bool single_x = nx_ == 1, single_y = ny_ == 1;
-    const auto consider = [&](std::uint32_t a, std::uint32_t b, double sx, double sy) {
-        Vec3 d = sorted_[a] - sorted_[b];
-        d.x += sx;
-        d.y += sy;
-        if (single_x) d.x -= box_.lx * std::nearbyint(d.x / box_.lx);
-        if (single_y) d.y -= box_.ly * std::nearbyint(d.y / box_.ly);
-        if (d.x * d.x + d.y * d.y < c2) visit(order_[a], order_[b], d);
+    const auto cells = [&](std::uint32_t a_begin, std::uint32_t a_end, std::uint32_t b_begin,
+                           std::uint32_t b_end, double sx, double sy, bool same) {
+        for (std::uint32_t a = a_begin; a < a_end; ++a) {
+            for (std::uint32_t b = same ? a + 1 : b_begin; b < b_end; ++b) {
+                Vec3 d = sorted_[a] - sorted_[b];
+                d.x += sx;
+                d.y += sy;
+                if (single_x) d.x -= box_.lx * std::nearbyint(d.x / box_.lx);
+                if (single_y) d.y -= box_.ly * std::nearbyint(d.y / box_.ly);
+                if (d.x * d.x + d.y * d.y < c2) visit(a, b, d);
+            }
+        }
     };
-    for (int cy = 0; cy < ny_; ++cy) {
+    for_each_cell_pair(row_begin, row_end, cells);
+}
+
+template <class VisitCells>
+void PeriodicGrid2D::for_each_cell_pair(int row_begin, int row_end, VisitCells&& visit) const {
+    for (int cy = std::max(row_begin, 0); cy < std::min(row_end, ny_); ++cy) {
         for (int cx = 0; cx < nx_; ++cx) {
             const int c = cy * nx_ + cx;
             const std::uint32_t begin = start_[c], end = start_[c + 1];
             if (begin == end) continue;  // sparse systems: most cells are empty
-            for (std::uint32_t a = begin; a < end; ++a)
-                for (std::uint32_t b = a + 1; b < end; ++b)
-                    consider(a, b, 0.0, 0.0);
+            visit(begin, end, begin, end, 0.0, 0.0, true);
             for (const auto& [dx, dy] : half_stencil_) {
                 int ncx = cx + dx, ncy = cy + dy;
                 double sx = 0.0, sy = 0.0;  // brings the neighbour's image next to cell c
@@ -98,10 +134,8 @@ void PeriodicGrid2D::for_each_pair_within(double cutoff, Visit&& visit) const {
                 else if (ncy >= ny_)
                     ncy -= ny_, sy = -box_.ly;
                 const int nc = ncy * nx_ + ncx;
-                const std::uint32_t nbegin = start_[nc], nend = start_[nc + 1];
-                for (std::uint32_t a = begin; a < end; ++a)
-                    for (std::uint32_t b = nbegin; b < nend; ++b)
-                        consider(a, b, sx, sy);
+                if (start_[nc] != start_[nc + 1])
+                    visit(begin, end, start_[nc], start_[nc + 1], sx, sy, false);
             }
         }
     }

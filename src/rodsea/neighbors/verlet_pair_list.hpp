@@ -35,9 +35,14 @@ class VerletPairList {
     // `travel` (mm) bounds how far any point moved in the plane since the last update: the
     // points are only looked at once these bounds add up to skin / 2 (bodies move micrometres
     // per step, so most steps skip the check). Infinity, the default, checks every time.
+    // `threads` share the check and the rebuild; the list is the same on any number of them.
     bool update(std::span<const Vec3> points, std::span<const double> radii,
                 std::span<const std::uint32_t> groups, const PeriodicBox2D& box,
-                double travel = std::numeric_limits<double>::infinity());
+                double travel = std::numeric_limits<double>::infinity(), int threads = 1);
+
+    // Builds the list now, whatever the points moved (update() calls it when it must).
+    void build(std::span<const Vec3> points, std::span<const double> radii,
+               std::span<const std::uint32_t> groups, const PeriodicBox2D& box, int threads = 1);
 
     // visit(i, j, d) for each listed pair, i < j, with d = p_i − p_j (minimum image in x, y),
     // in the list's (i, j) order. `points` are the same points as in the last update().
@@ -103,9 +108,12 @@ class VerletPairList {
             d.y += box_.ly;
         return d;
     }
-    double largest_move(std::span<const Vec3> points) const;  // since the last build, mm
-    void rebuild(std::span<const Vec3> points, std::span<const double> radii,
-                 std::span<const std::uint32_t> groups, const PeriodicBox2D& box);
+    double largest_move(std::span<const Vec3> points, int threads) const;  // since the build, mm
+    // The pairs of the grid's cell rows [row_begin, row_end) into `out`, unsorted.
+    struct Pair {
+        std::uint32_t first, second;
+    };
+    void collect(int row_begin, int row_end, std::vector<Pair>& out) const;
 
     double skin_;
     PeriodicBox2D box_;
@@ -114,9 +122,13 @@ class VerletPairList {
     double slack_ = 0.0;  // bound on the largest move since the last build (mm)
     std::vector<std::uint32_t> first_, second_;  // the pairs, sorted by (first, second)
     std::vector<Vec3> reference_;                // the points at the last build
-    // Scratch for rebuilds.
+    // Scratch for rebuilds: the grid, each slot's radius + skin / 2 and group (contiguous for the
+    // cell loop), each thread's pairs, and the count of pairs of each first point.
     PeriodicGrid2D grid_;
-    std::vector<std::uint64_t> keys_;
+    std::vector<double> slot_reach_;
+    std::vector<std::uint32_t> slot_group_;
+    std::vector<std::vector<Pair>> found_;
+    std::vector<std::uint32_t> start_;
 };
 
 }  // namespace rodsea

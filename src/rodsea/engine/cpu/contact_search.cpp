@@ -86,7 +86,7 @@ void find_plate_contacts(const SearchInput& in, Chunk range, std::vector<Contact
 ContactSearchStats ContactFinder::find(const SphereTable& spheres, BodyView bodies,
                                        const SpeciesTable& species, const StepContext& step,
                                        std::vector<Contact>& out, int threads, double travel) {
-    pairs_.update(spheres.position, spheres.radius, spheres.body, step.box, travel);
+    pairs_.update(spheres.position, spheres.radius, spheres.body, step.box, travel, threads);
     const SearchInput in{spheres, bodies, species, step.plates};
     ContactSearchStats stats;
     if (threads <= 1) {  // straight into `out`: no copies
