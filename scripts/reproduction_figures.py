@@ -282,10 +282,13 @@ def window_points(runs, window, block, name="P_polar"):
     return points
 
 
-def draw_points_and_series(plt, runs, window, x_label, x_name, unit, title, block=ROW38_BLOCK):
+def draw_points_and_series(plt, runs, window, x_label, x_name, unit, title, block=ROW38_BLOCK,
+                           panels=2):
     """P over `window` (errors from blocks) against a parameter, one run per value, beside each
-    run's P(t). runs: [(value, series table)]; a table not there yet is left out."""
-    fig, (points, series) = plt.subplots(1, 2, figsize=(10.0, 3.6))
+    run's P(t), and `panels` − 2 empty panels after them for the caller. runs: [(value, series
+    table)]; a table not there yet is left out."""
+    fig, axes = plt.subplots(1, panels, figsize=(5.0 * panels, 3.6))
+    points, series = axes[0], axes[1]
     measured = window_points(runs, window, block)
     if not measured:
         raise TableError(f"none of {', '.join(r for _, r in runs)} exists")
@@ -364,7 +367,7 @@ def draw_fig4a(plt):
     fig, points, dump = draw_points_and_series(
         plt, FIG4A, FIG4A_WINDOW, "σ (medium rods' aspect ratio)", "σ", "",
         "Fig. 4a inset, 38 mm box (18 polar rods), φ_p = 0.05, φ_a = 0.75, D_r = 0.23 rad²/s",
-        block=FIG4A_BLOCK)
+        block=FIG4A_BLOCK, panels=3)
     nematic = window_points(FIG4A, FIG4A_WINDOW, FIG4A_BLOCK, "S_medium")
     xs, ys, errs = ([m[i] for m in nematic] for i in range(3))
     points.errorbar(xs, ys, yerr=errs, fmt="s--", ms=4, capsize=3, color="C0",
@@ -388,7 +391,38 @@ def draw_fig4a(plt):
         series.legend(loc="best", fontsize=7)
         dump["P(t): σ = 5.625, 88 mm"] = {"x": middle.tolist(), "y": p.tolist()}
         dump["S(t): σ = 5.625, 88 mm"] = {"x": middle.tolist(), "y": nematic.tolist()}
+    draw_fig4a_bands(fig.axes[2], dump)
     return fig, dump
+
+
+def draw_fig4a_bands(ax, dump):
+    """The longitudinal band, |ρ_k| of the polar rods' longest density mode across their axis of
+    motion (the `bands` observable), against time in every run whose table has it, beside the
+    mean for rods at random positions, √(π/4N)."""
+    k_of = {sigma: k for k, (sigma, _) in enumerate(FIG4A)}
+    runs = [(f"σ = {sigma:g}, 38 mm", relative, f"C{k_of[sigma]}", "-", 18)
+            for sigma, relative in FIG4A]
+    runs.append(("σ = 5.625, 88 mm", FIG4A_88MM, f"C{k_of[5.625]}", "--", 98))
+    floors = set()
+    for label, relative, colour, style, rods in runs:
+        if not os.path.isfile(os.path.join(ROOT, relative)):
+            continue
+        t = read_csv(relative)
+        if "band_longitudinal" not in t.dtype.names or np.isnan(t["band_longitudinal"]).all():
+            continue  # analysed before the bands observable
+        middle = 0.5 * (column(t, "t_from", relative) + column(t, "t_to", relative))
+        ax.plot(middle, t["band_longitudinal"], color=colour, lw=1.0, ls=style, label=label)
+        dump[f"longitudinal band: {label}"] = {"x": middle.tolist(),
+                                               "y": t["band_longitudinal"].tolist()}
+        floors.add(rods)
+    for rods in sorted(floors):
+        ax.axhline(np.sqrt(np.pi / (4 * rods)), color="0.5", lw=0.8, ls=":")
+    ax.set_xlabel("t (s)")
+    ax.set_ylabel("longitudinal band |ρ_k| (1 s bins)")
+    ax.set_ylim(0.0, 1.0)
+    ax.set_title("band along the motion (dotted: random, √(π/4N))", fontsize=10)
+    if floors:
+        ax.legend(loc="best", fontsize=7)
 
 
 def draw_fig5b(plt):

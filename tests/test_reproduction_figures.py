@@ -9,6 +9,7 @@ Exit 77 (skipped) without numpy or matplotlib.
 """
 import csv
 import json
+import math
 import os
 import struct
 import subprocess
@@ -142,3 +143,24 @@ if os.path.isfile(path):
                         ("S(t): σ = 5.625, 88 mm", "S_medium")):
         assert same(fig4a[drawn]["y"], [float(r[col[name]]) for r in rows[1:]]), drawn
     print(f"checked the 88 mm run's P(t) and S(t) ({len(rows) - 1} bins) against its table")
+
+# Fig. 4a's third panel: every longitudinal band drawn is its table's column, read here with the
+# csv module, and a run whose table has the column is drawn.
+bands_checked = 0
+band_runs = [(f"σ = {sigma:g}, 38 mm", relative) for sigma, relative in figures.FIG4A]
+for label, relative in band_runs + [("σ = 5.625, 88 mm", figures.FIG4A_88MM)]:
+    path = os.path.join(source, relative)
+    if not os.path.isfile(path):
+        continue
+    with open(path, encoding="utf-8") as f:
+        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
+    if "band_longitudinal" not in rows[0]:
+        continue
+    column_index = rows[0].index("band_longitudinal")
+    table = [float(r[column_index]) for r in rows[1:]]
+    if all(math.isnan(v) for v in table):
+        continue
+    drawn = fig4a[f"longitudinal band: {label}"]["y"]
+    assert same(drawn, table), label
+    bands_checked += 1
+print(f"checked {bands_checked} longitudinal band series of fig4a against their tables")
