@@ -110,7 +110,7 @@ const std::vector<CampaignKey>& campaign_keys() {
          "Map: the value whose contour is drawn, e.g. 0.5 for P = 0.5."},
         {"figure", "plot", "string", "", "required (analysis)",
          "Analysis: the figure of `rodsea plot` (g_r_theta, G_r_theta, autocorrelation, "
-         "flock_sizes, flocks_time, order_parameters, pair_correlation, segregation, "
+         "flock_sizes, flocks_time, order_parameters, pair_correlation, segregation, bands, "
          "medium_velocity)."},
         {"figure", "when", "table", "", "{} (every point)",
          "The points drawn: axis keys and a value or an array of values, e.g. "
@@ -525,9 +525,9 @@ class CampaignReader {
         }
         if (f.kind == FigureKind::analysis) {
             const std::vector<std::string> plots{
-                "g_r_theta",        "G_r_theta",   "autocorrelation",
-                "flock_sizes",      "flocks_time", "order_parameters",
-                "pair_correlation", "segregation", "medium_velocity"};
+                "g_r_theta",   "G_r_theta",        "autocorrelation",  "flock_sizes",
+                "flocks_time", "order_parameters", "pair_correlation", "segregation",
+                "bands",       "medium_velocity"};
             if (std::find(plots.begin(), plots.end(), f.plot) == plots.end()) {
                 std::string list;
                 for (const std::string& p : plots)
