@@ -39,22 +39,17 @@ class PeriodicGrid2D {
     template <class Visit>
     void for_each_pair_within(double cutoff, Visit&& visit) const;
 
-    // The same pairs by slot, visit(a, b, d) with d = point in slot a − point in slot b, for the
-    // pairs whose slot a lies in the cell rows [row_begin, row_end) (rows along y, 0 .. rows()):
-    // the pairs of disjoint row ranges are disjoint, and the ranges of all rows give every pair
-    // once, so that threads can split the rows between them.
-    template <class Visit>
-    void for_each_slot_pair_within(double cutoff, int row_begin, int row_end, Visit&& visit) const;
-    int rows() const { return ny_; }
-
-    // The cell pairs behind those loops, for a caller with its own loop over their points:
+    // The cell pairs behind that loop, for a caller with its own loop over their points:
     // visit(a_begin, a_end, b_begin, b_end, sx, sy, same) for each occupied cell c of the rows
-    // [row_begin, row_end), first with itself (same: take the pairs a < b), then with each
-    // occupied neighbour of the half stencil; (sx, sy) (mm) brings the neighbour's image next to
-    // c. Along an axis of a single cell there is no shift: the minimum image is taken per pair
-    // there (single_cell_x(), single_cell_y()). Slots index slot_points().
+    // [row_begin, row_end) (rows along y, 0 .. rows()), first with itself (same: take the slot
+    // pairs a < b), then with each occupied neighbour of the half stencil; (sx, sy) (mm) brings
+    // the neighbour's image next to c. Along an axis of a single cell there is no shift: the
+    // minimum image is taken per pair there (single_cell_x(), single_cell_y()). Slots index
+    // slot_points() and order(). The pairs of disjoint row ranges are disjoint, and all the
+    // rows give every pair once, so that threads can split the rows between them.
     template <class VisitCells>
     void for_each_cell_pair(int row_begin, int row_end, VisitCells&& visit) const;
+    int rows() const { return ny_; }
     bool single_cell_x() const { return nx_ == 1; }
     bool single_cell_y() const { return ny_ == 1; }
     std::span<const Vec3> slot_points() const { return sorted_; }  // wrapped, in slot order
@@ -87,14 +82,6 @@ class PeriodicGrid2D {
 
 template <class Visit>
 void PeriodicGrid2D::for_each_pair_within(double cutoff, Visit&& visit) const {
-    for_each_slot_pair_within(cutoff, 0, ny_, [&](std::uint32_t a, std::uint32_t b, const Vec3& d) {
-        visit(order_[a], order_[b], d);
-    });
-}
-
-template <class Visit>
-void PeriodicGrid2D::for_each_slot_pair_within(double cutoff, int row_begin, int row_end,
-                                               Visit&& visit) const {
     check_cutoff(cutoff, cell_width());
     const double c2 = cutoff * cutoff;
     const bool single_x = nx_ == 1, single_y = ny_ == 1;
@@ -107,11 +94,11 @@ void PeriodicGrid2D::for_each_slot_pair_within(double cutoff, int row_begin, int
                 d.y += sy;
                 if (single_x) d.x -= box_.lx * std::nearbyint(d.x / box_.lx);
                 if (single_y) d.y -= box_.ly * std::nearbyint(d.y / box_.ly);
-                if (d.x * d.x + d.y * d.y < c2) visit(a, b, d);
+                if (d.x * d.x + d.y * d.y < c2) visit(order_[a], order_[b], d);
             }
         }
     };
-    for_each_cell_pair(row_begin, row_end, cells);
+    for_each_cell_pair(0, ny_, cells);
 }
 
 template <class VisitCells>
