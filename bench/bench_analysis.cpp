@@ -128,6 +128,7 @@ BENCHMARK_CAPTURE(BM_Observable, corotating, "corotating")->Unit(benchmark::kMil
 BENCHMARK_CAPTURE(BM_Observable, autocorrelation, "autocorrelation")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Observable, flocks, "flocks")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Observable, segregation, "segregation")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Observable, bands, "bands")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Observable, medium_velocity, "medium_velocity")->Unit(benchmark::kMillisecond);
 
 // Issue 21's observables on the same frame. Fields: all 101870 bodies on cells of 2 mm (126 ×
