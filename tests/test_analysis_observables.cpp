@@ -594,6 +594,10 @@ TEST(PeriodicWrap, EveryObservableIsInvariantUnderAShiftOfTheWholeFrame) {
         for (std::size_t t = 0; t < ra.tables.size(); ++t)
             for (std::size_t row = 0; row < ra.tables[t].rows.size(); ++row)
                 for (std::size_t c = 0; c < ra.tables[t].rows[row].size(); ++c) {
+                    // Where a band lies moves with the frame (test_density_modes.cpp checks it
+                    // moves with it); everything else must not change.
+                    const std::string& header = ra.tables[t].columns[c];
+                    if (header.size() > 3 && header.ends_with("_at")) continue;
                     const double x = ra.tables[t].rows[row][c], y = rb.tables[t].rows[row][c];
                     if (std::isnan(x)) {
                         EXPECT_TRUE(std::isnan(y)) << name;

@@ -52,9 +52,15 @@ TEST(DensityModes, AStripeAcrossTheBoxHasTheTransformOfItsWidthInOneModeOnly) {
     EXPECT_NEAR(density_mode_amplitude(frame.box, p, {1, 0}), 0.0, 1e-12);
     EXPECT_NEAR(density_mode_amplitude(frame.box, p, {1, 1}), 0.0, 1e-12);
     EXPECT_NEAR(density_mode_amplitude(frame.box, p, {1, -1}), 0.0, 1e-12);
-    // Moving the stripe changes the phase of ρ_k, not its size, across the periodic edge too.
+    // The phase of ρ_k places the stripe: its centre line, y = 30 mm along k = (0, 2π/L).
+    EXPECT_NEAR(density_mode_position(frame.box, density_mode(frame.box, p, {0, 1}), {0, 1}), 30.0,
+                1e-9);
+    // Moving the stripe moves that phase, not the amplitude, across the periodic edge too (its
+    // rows run from y = 70 to 90, i.e. 2 mm past the edge).
     const auto moved = make_frame(side, stripe(side, 80.0, w, rows, columns, 0.0));
-    EXPECT_NEAR(density_mode_amplitude(moved.box, positions(moved), {0, 1}), expected, 1e-12);
+    const auto rho = density_mode(moved.box, positions(moved), {0, 1});
+    EXPECT_NEAR(std::abs(rho), expected, 1e-12);
+    EXPECT_NEAR(density_mode_position(moved.box, rho, {0, 1}), 80.0, 1e-9);
 }
 
 TEST(DensityModes, UniformBoxAndRandomPositionsHaveTheirKnownAmplitudes) {
@@ -133,6 +139,8 @@ TEST(Bands, AStripeOfRodsMovingAlongItIsLongitudinalAndAcrossItTransverse) {
     EXPECT_NEAR(scalar(lanes, "band_longitudinal").estimate.mean, expected, 1e-12);
     EXPECT_NEAR(scalar(lanes, "band_transverse").estimate.mean, 0.0, 1e-12);
     EXPECT_NEAR(scalar(lanes, "band_random").estimate.mean, std::sqrt(kPi / (4.0 * 98)), 1e-15);
+    const TableResult& lane_table = table(lanes, "bands");
+    EXPECT_NEAR(lane_table.rows[0][column(lane_table, "longitudinal_at")], 30.0, 1e-9);
     // The same stripe, rods along y: they cross it, a transverse band.
     const auto front = band_of(kPi / 2 + 0.1);
     EXPECT_NEAR(scalar(front, "band_transverse").estimate.mean, expected, 1e-12);

@@ -161,12 +161,15 @@ void bind_observables(py::module_& m) {
             out["modes"] = modes;
             out["transverse"] = b.transverse;
             out["longitudinal"] = b.longitudinal;
+            out["transverse_at"] = b.transverse_at;
+            out["longitudinal_at"] = b.longitudinal_at;
             return out;
         },
         py::arg("box"), py::arg("positions"), py::arg("angles"),
         "the polar rods' longest density modes |ρ_k| of one frame ({(m_x, m_y): |ρ_k|}), their "
-        "axis of motion (rad) and the modes most nearly along it (transverse bands) and across it "
-        "(longitudinal bands), as the `bands` observable of rodsea analyze");
+        "axis of motion (rad), the modes most nearly along it (transverse bands) and across it "
+        "(longitudinal bands), and where those two peak along their k (mm), as the `bands` "
+        "observable of rodsea analyze");
 
     py::class_<MediumVelocity>(m, "MediumVelocity",
                                "the medium's velocity around each polar rod, by distance")

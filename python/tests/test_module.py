@@ -192,6 +192,7 @@ def test_flocks_time_correlation_segregation_and_medium_velocity_compute(small_r
     assert b["longitudinal"] == pytest.approx(expected, abs=1e-12)
     assert b["modes"][(0, 1)] == pytest.approx(expected, abs=1e-12)
     assert b["transverse"] == pytest.approx(0.0, abs=1e-12) and b["axis"] == pytest.approx(0.0)
+    assert b["longitudinal_at"] == pytest.approx(15.0 + w / 2, abs=1e-9)  # the stripe's centre
     medium = ~polar
     mv = rodsea.MediumVelocity(d=3.0, r_max=5.0, bin=1.0).compute(
         run.box, frame["positions"][medium], frame["velocities"][medium],

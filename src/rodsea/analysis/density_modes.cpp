@@ -14,9 +14,9 @@ Vec3 wave_vector(const PeriodicBox2D& box, DensityMode mode) {
 
 }  // namespace
 
-double density_mode_amplitude(const PeriodicBox2D& box, std::span<const Vec3> points,
-                              DensityMode mode) {
-    if (points.empty()) return std::nan("");
+std::complex<double> density_mode(const PeriodicBox2D& box, std::span<const Vec3> points,
+                                  DensityMode mode) {
+    if (points.empty()) return {std::nan(""), std::nan("")};
     const Vec3 k = wave_vector(box, mode);
     double re = 0.0, im = 0.0;
     for (const Vec3& p : points) {
@@ -24,7 +24,20 @@ double density_mode_amplitude(const PeriodicBox2D& box, std::span<const Vec3> po
         re += std::cos(phase);
         im += std::sin(phase);
     }
-    return std::hypot(re, im) / static_cast<double>(points.size());
+    const auto n = static_cast<double>(points.size());
+    return {re / n, im / n};
+}
+
+double density_mode_amplitude(const PeriodicBox2D& box, std::span<const Vec3> points,
+                              DensityMode mode) {
+    return std::abs(density_mode(box, points, mode));
+}
+
+double density_mode_position(const PeriodicBox2D& box, std::complex<double> rho, DensityMode mode) {
+    const Vec3 k = wave_vector(box, mode);
+    const double length = std::hypot(k.x, k.y), wavelength = 2.0 * std::numbers::pi / length;
+    const double at = std::arg(rho) / length;  // (−λ/2, λ/2]
+    return at < 0.0 ? at + wavelength : at;
 }
 
 double director_angle(std::span<const double> theta) {
@@ -42,10 +55,13 @@ double director_angle(std::span<const double> theta) {
 BandAmplitudes band_amplitudes(const PeriodicBox2D& box, std::span<const Vec3> points,
                                double axis) {
     BandAmplitudes b;
-    for (std::size_t m = 0; m < kLongestModes.size(); ++m)
-        b.modes[m] = density_mode_amplitude(box, points, kLongestModes[m]);
+    std::array<std::complex<double>, kLongestModes.size()> rho;
+    for (std::size_t m = 0; m < kLongestModes.size(); ++m) {
+        rho[m] = density_mode(box, points, kLongestModes[m]);
+        b.modes[m] = std::abs(rho[m]);
+    }
     if (!std::isfinite(axis)) {
-        b.transverse = b.longitudinal = std::nan("");
+        b.transverse = b.longitudinal = b.transverse_at = b.longitudinal_at = std::nan("");
         return b;
     }
     // |cos| of the angle between each k and the axis; the first mode wins a tie.
@@ -60,6 +76,8 @@ BandAmplitudes band_amplitudes(const PeriodicBox2D& box, std::span<const Vec3> p
     }
     b.transverse = b.modes[most_along];
     b.longitudinal = b.modes[most_across];
+    b.transverse_at = density_mode_position(box, rho[most_along], kLongestModes[most_along]);
+    b.longitudinal_at = density_mode_position(box, rho[most_across], kLongestModes[most_across]);
     return b;
 }
 

@@ -9,6 +9,7 @@
 // that the density varies along the motion (k ∥ axis); longitudinal bands, along the motion, so
 // that it varies across it (k ⊥ axis).
 #include <array>
+#include <complex>
 #include <span>
 
 #include "rodsea/math/periodic_box.hpp"
@@ -25,9 +26,18 @@ struct DensityMode {
 inline constexpr std::array<DensityMode, 4> kLongestModes{
     {DensityMode{1, 0}, DensityMode{0, 1}, DensityMode{1, 1}, DensityMode{1, -1}}};
 
-// |ρ_k| of the points for the mode's wave-vector, in [0, 1]; NaN for no points.
+// ρ_k of the points for the mode's wave-vector; NaN for no points.
+std::complex<double> density_mode(const PeriodicBox2D& box, std::span<const Vec3> points,
+                                  DensityMode mode);
+
+// |ρ_k|, in [0, 1]; NaN for no points.
 double density_mode_amplitude(const PeriodicBox2D& box, std::span<const Vec3> points,
                               DensityMode mode);
+
+// Where the mode's density peaks, along its k (mm from the box's origin, in [0, 2π / |k|)): for
+// a band, its centre line across its width; its change over time is the band's drift across
+// itself. arg(ρ_k) / |k|, NaN for no points.
+double density_mode_position(const PeriodicBox2D& box, std::complex<double> rho, DensityMode mode);
 
 // The angle (rad, in [0, π)) of the axis that rods with in-plane angles θ point along, either
 // way: half the angle of ⟨(cos 2θ, sin 2θ)⟩. NaN when that mean is zero to rounding (S below
@@ -39,6 +49,8 @@ struct BandAmplitudes {
     // |ρ_k| of the mode whose k is most nearly along the axis (transverse bands) and of the one
     // most nearly across it (longitudinal bands); NaN without an axis.
     double transverse = 0.0, longitudinal = 0.0;
+    // Where those two modes peak along their k (density_mode_position), mm; NaN without an axis.
+    double transverse_at = 0.0, longitudinal_at = 0.0;
 };
 
 // The modes of `points` and their split relative to the axis at angle `axis` (rad, mod π).

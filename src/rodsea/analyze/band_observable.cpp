@@ -27,16 +27,19 @@ ObservableResults BandObservable::finish() {
     r.parameters = {{"polar_rods", n, ""}};
     TableResult t{"bands",
                   "the polar rods' density modes |ρ_k| = |Σ exp(i k·r)| / N for k = 2π (m_x / "
-                  "L_x, m_y / L_y), and those most nearly along (transverse bands) and across "
-                  "(longitudinal bands) their axis of motion",
+                  "L_x, m_y / L_y), those most nearly along (transverse bands) and across "
+                  "(longitudinal bands) their axis of motion, and where each of these two peaks "
+                  "along its k (arg ρ_k / |k|, mm from the box's origin: a band's drift across "
+                  "itself)",
                   {"time", "steady", "axis", "rho_1_0", "rho_0_1", "rho_1_1", "rho_1_m1",
-                   "transverse", "longitudinal"},
-                  {"s", "", "rad", "", "", "", "", "", ""},
+                   "transverse", "longitudinal", "transverse_at", "longitudinal_at"},
+                  {"s", "", "rad", "", "", "", "", "", "", "mm", "mm"},
                   {}};
     for (std::size_t k = 0; k < times_.size(); ++k) {
         const BandAmplitudes& b = amplitudes_[k];
         t.rows.push_back({times_[k], static_cast<double>(steady_[k]), axis_[k], b.modes[0],
-                          b.modes[1], b.modes[2], b.modes[3], transverse_[k], longitudinal_[k]});
+                          b.modes[1], b.modes[2], b.modes[3], transverse_[k], longitudinal_[k],
+                          b.transverse_at, b.longitudinal_at});
     }
     r.scalars.push_back({"band_transverse", "",
                          "|ρ_k| of the longest density mode along the polar rods' axis of motion "
