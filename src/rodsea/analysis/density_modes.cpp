@@ -20,7 +20,8 @@ std::complex<double> density_mode(const PeriodicBox2D& box, std::span<const Vec3
     const Vec3 k = wave_vector(box, mode);
     double re = 0.0, im = 0.0;
     for (const Vec3& p : points) {
-        const double phase = k.x * p.x + k.y * p.y;  // a whole number of turns per box side
+        // k turns a whole number of times per box side: any periodic image gives the same ρ_k.
+        const double phase = k.x * p.x + k.y * p.y;
         re += std::cos(phase);
         im += std::sin(phase);
     }

@@ -12,8 +12,6 @@ void BandObservable::compute(const FrameContext& context) {
     times_.push_back(context.frame().time);
     steady_.push_back(context.steady() ? 1 : 0);
     axis_.push_back(axis);
-    transverse_.push_back(b.transverse);
-    longitudinal_.push_back(b.longitudinal);
     amplitudes_.push_back(b);
 }
 
@@ -35,20 +33,23 @@ ObservableResults BandObservable::finish() {
                    "transverse", "longitudinal", "transverse_at", "longitudinal_at"},
                   {"s", "", "rad", "", "", "", "", "", "", "mm", "mm"},
                   {}};
+    std::vector<double> transverse, longitudinal;
     for (std::size_t k = 0; k < times_.size(); ++k) {
         const BandAmplitudes& b = amplitudes_[k];
+        transverse.push_back(b.transverse);
+        longitudinal.push_back(b.longitudinal);
         t.rows.push_back({times_[k], static_cast<double>(steady_[k]), axis_[k], b.modes[0],
-                          b.modes[1], b.modes[2], b.modes[3], transverse_[k], longitudinal_[k],
+                          b.modes[1], b.modes[2], b.modes[3], b.transverse, b.longitudinal,
                           b.transverse_at, b.longitudinal_at});
     }
     r.scalars.push_back({"band_transverse", "",
                          "|ρ_k| of the longest density mode along the polar rods' axis of motion "
                          "(transverse bands), steady mean",
-                         steady_estimate(transverse_, steady_)});
+                         steady_estimate(transverse, steady_)});
     r.scalars.push_back({"band_longitudinal", "",
                          "|ρ_k| of the longest density mode across the polar rods' axis of "
                          "motion (longitudinal bands), steady mean",
-                         steady_estimate(longitudinal_, steady_)});
+                         steady_estimate(longitudinal, steady_)});
     r.scalars.push_back({"band_random", "",
                          "mean |ρ_k| of the same number of polar rods at random positions, "
                          "√(π / 4N)",

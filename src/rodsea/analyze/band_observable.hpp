@@ -20,7 +20,7 @@ class BandObservable final : public Observable {
 
   private:
     AnalysisSetup setup_;
-    std::vector<double> times_, axis_, transverse_, longitudinal_;
+    std::vector<double> times_, axis_;
     std::vector<BandAmplitudes> amplitudes_;
     std::vector<char> steady_;
 };
