@@ -208,6 +208,27 @@ TEST(VerletPairList, IsTheSameListOnAnyNumberOfThreads) {
     list.build(f.points, f.radii, f.groups, flat, 4);
     EXPECT_EQ(listed(list, f, flat), flat_expected);
     EXPECT_GT(flat_expected.size(), 10u);
+
+    // Enough points for threads to share the measurement of the largest move, whose bound is
+    // made to run out at once (travel = skin): moves below skin / 2 keep the list on any number
+    // of threads, one point moved past it rebuilds it on any number.
+    const PeriodicBox2D wide{60.0, 60.0};
+    Discs many = random_discs(wide, 5000, 19);
+    std::vector<VerletPairList> lists(3, VerletPairList(0.1));
+    for (int t = 0; t < 3; ++t)
+        lists[static_cast<size_t>(t)].build(many.points, many.radii, many.groups, wide, t + 1);
+    SplitMix64 rng(20);
+    for (Vec3& p : many.points)
+        p.x += rng.uniform(-0.045, 0.045);
+    for (int t = 0; t < 3; ++t)
+        EXPECT_FALSE(lists[static_cast<size_t>(t)].update(many.points, many.radii, many.groups,
+                                                          wide, 0.1, t + 1))
+            << t + 1 << " threads";
+    many.points[4321].y += 0.06;
+    for (int t = 0; t < 3; ++t)
+        EXPECT_TRUE(lists[static_cast<size_t>(t)].update(many.points, many.radii, many.groups, wide,
+                                                         0.1, t + 1))
+            << t + 1 << " threads";
 }
 
 // Moves smaller than skin / 2 keep the list, and it still holds every overlapping pair; a
