@@ -151,5 +151,43 @@ TEST(Bands, AStripeOfRodsMovingAlongItIsLongitudinalAndAcrossItTransverse) {
     EXPECT_NEAR(t.rows[0][column(t, "rho_0_1")], expected, 1e-12);
 }
 
+// A stripe of rods along x that moves across itself at 2 mm/s, through the periodic edge: every
+// frame pair gives that velocity along k = (0, 2π/L), the band is there in every frame, and a
+// transverse band in none.
+TEST(Bands, ABandMovingAcrossItselfHasItsDriftVelocity) {
+    const double side = 88.0, w = 20.0, speed = 2.0, interval = 0.1;
+    const int rows = 7, columns = 14, frames = 40;  // 8 mm in all, from y = 80 across y = 88
+    std::vector<AnalysisFrame> trajectory;
+    std::vector<Body> first;
+    for (int f = 0; f < frames; ++f) {
+        const auto bodies = stripe(side, 80.0 + speed * interval * f, w, rows, columns, 0.0);
+        if (f == 0) first = bodies;
+        trajectory.push_back(make_frame(side, bodies, static_cast<std::size_t>(f), interval));
+    }
+    const auto setup = make_setup(side, first, frames, interval);
+    const auto observable = make_observable("bands", setup, resolved(setup));
+    const auto r = run_on(*observable, trajectory, setup);
+    // Positions are exact to rounding (1e-12 mm): the velocity to 1e-9 mm/s.
+    EXPECT_NEAR(scalar(r, "band_longitudinal_drift").estimate.mean, speed, 1e-9);
+    EXPECT_EQ(scalar(r, "band_longitudinal_drift").estimate.samples, std::size_t{frames - 1});
+    EXPECT_EQ(scalar(r, "band_longitudinal_present").estimate.mean, 1.0);
+    EXPECT_EQ(scalar(r, "band_transverse_present").estimate.mean, 0.0);
+    EXPECT_TRUE(std::isnan(scalar(r, "band_transverse_drift").estimate.mean));
+}
+
+// Pairs of frames count only when both hold the band in the same mode.
+TEST(DensityModes, BandVelocitiesSkipFramesWithoutTheBandOrInAnotherMode) {
+    const PeriodicBox2D box{50.0, 50.0};
+    const std::vector<double> time{0.0, 0.1, 0.2, 0.3, 0.4, 0.5};
+    // 49.9 → 0.1 crosses the edge: +0.2 mm in 0.1 s.
+    const std::vector<double> at{49.9, 0.1, 0.3, 0.5, 0.7, 0.9};
+    const std::vector<double> amplitude{0.5, 0.5, 0.5, 0.1, 0.5, 0.5};
+    const std::vector<std::size_t> mode{1, 1, 1, 1, 1, 0};
+    const auto v = band_velocities(box, time, at, amplitude, mode, 0.3);
+    ASSERT_EQ(v.size(), 2u);  // 0→1 and 1→2; frame 3 has no band, frame 5 another mode
+    EXPECT_NEAR(v[0], 2.0, 1e-9);
+    EXPECT_NEAR(v[1], 2.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace rodsea::testing

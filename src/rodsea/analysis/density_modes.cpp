@@ -79,7 +79,26 @@ BandAmplitudes band_amplitudes(const PeriodicBox2D& box, std::span<const Vec3> p
     b.longitudinal = b.modes[most_across];
     b.transverse_at = density_mode_position(box, rho[most_along], kLongestModes[most_along]);
     b.longitudinal_at = density_mode_position(box, rho[most_across], kLongestModes[most_across]);
+    b.transverse_mode = most_along;
+    b.longitudinal_mode = most_across;
     return b;
+}
+
+std::vector<double> band_velocities(const PeriodicBox2D& box, std::span<const double> time,
+                                    std::span<const double> at, std::span<const double> amplitude,
+                                    std::span<const std::size_t> mode, double least) {
+    std::vector<double> velocities;
+    for (std::size_t k = 1; k < time.size(); ++k) {
+        // NaN amplitudes (no axis) fail the comparison and are left out.
+        if (!(amplitude[k - 1] >= least && amplitude[k] >= least) || mode[k] != mode[k - 1])
+            continue;
+        const Vec3 q = wave_vector(box, kLongestModes[mode[k]]);
+        const double wavelength = 2.0 * std::numbers::pi / std::hypot(q.x, q.y);
+        double step = at[k] - at[k - 1];
+        step -= wavelength * std::round(step / wavelength);
+        velocities.push_back(step / (time[k] - time[k - 1]));
+    }
+    return velocities;
 }
 
 }  // namespace rodsea

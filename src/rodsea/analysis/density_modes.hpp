@@ -11,6 +11,7 @@
 #include <array>
 #include <complex>
 #include <span>
+#include <vector>
 
 #include "rodsea/math/periodic_box.hpp"
 #include "rodsea/math/vec3.hpp"
@@ -51,9 +52,20 @@ struct BandAmplitudes {
     double transverse = 0.0, longitudinal = 0.0;
     // Where those two modes peak along their k (density_mode_position), mm; NaN without an axis.
     double transverse_at = 0.0, longitudinal_at = 0.0;
+    // Which of kLongestModes they are.
+    std::size_t transverse_mode = 0, longitudinal_mode = 0;
 };
 
 // The modes of `points` and their split relative to the axis at angle `axis` (rad, mod π).
 BandAmplitudes band_amplitudes(const PeriodicBox2D& box, std::span<const Vec3> points, double axis);
+
+// A band's velocity across itself between consecutive frames, mm/s along the k of its mode: for
+// each pair of frames k − 1, k that both hold it (amplitude[k] >= least) in the same mode of
+// kLongestModes, (at[k] − at[k − 1]) / (time[k] − time[k − 1]) with the displacement taken into
+// (−λ/2, λ/2] (λ = 2π / |k|: the phase is known modulo a wavelength, and a band moves far less
+// than half a box between frames). In time order; none where no two consecutive frames qualify.
+std::vector<double> band_velocities(const PeriodicBox2D& box, std::span<const double> time,
+                                    std::span<const double> at, std::span<const double> amplitude,
+                                    std::span<const std::size_t> mode, double least);
 
 }  // namespace rodsea

@@ -54,8 +54,50 @@ ObservableResults BandObservable::finish() {
                          "mean |ρ_k| of the same number of polar rods at random positions, "
                          "√(π / 4N)",
                          Estimate{random, std::nan(""), 0.5, 0.0, 0}});
+    // CHOICE: a band is there when its mode stands at least kBandFloors times the random mean;
+    // random positions reach that in 1 frame of 1200 (Rayleigh: exp(−9π/4)).
+    const double least = kBandFloors * random;
+    r.parameters.push_back({"band_threshold", least, ""});
+    add_band_motion(
+        r, "transverse", "along the motion (transverse bands)", least,
+        [](const BandAmplitudes& b) { return b.transverse; },
+        [](const BandAmplitudes& b) { return b.transverse_at; },
+        [](const BandAmplitudes& b) { return b.transverse_mode; });
+    add_band_motion(
+        r, "longitudinal", "across the motion (longitudinal bands)", least,
+        [](const BandAmplitudes& b) { return b.longitudinal; },
+        [](const BandAmplitudes& b) { return b.longitudinal_at; },
+        [](const BandAmplitudes& b) { return b.longitudinal_mode; });
     r.tables.push_back(std::move(t));
     return r;
+}
+
+template <class Amplitude, class At, class Mode>
+void BandObservable::add_band_motion(ObservableResults& r, const std::string& kind,
+                                     const std::string& what, double least, Amplitude amplitude,
+                                     At at, Mode mode) const {
+    // The steady window is the run's last frames, so its frames are consecutive in time.
+    std::vector<double> time, position, size, present;
+    std::vector<std::size_t> modes;
+    for (std::size_t k = 0; k < times_.size(); ++k) {
+        if (!steady_[k]) continue;
+        time.push_back(times_[k]);
+        position.push_back(at(amplitudes_[k]));
+        size.push_back(amplitude(amplitudes_[k]));
+        modes.push_back(mode(amplitudes_[k]));
+        present.push_back(size.back() >= least ? 1.0 : 0.0);
+    }
+    r.scalars.push_back(
+        {"band_" + kind + "_present", "",
+         "fraction of the steady frames whose mode " + what + " stands above band_threshold",
+         estimate_mean(present)});
+    const std::vector<double> v = band_velocities(setup_.box, time, position, size, modes, least);
+    r.scalars.push_back(
+        {"band_" + kind + "_drift", "mm/s",
+         "velocity of the band " + what +
+             " across itself, along the k of its mode (+x, +y, (+x+y)/√2 or (+x−y)/√2), mean over "
+             "the steady frame pairs that both hold it above band_threshold",
+         estimate_mean(v)});
 }
 
 }  // namespace rodsea

@@ -3,6 +3,7 @@
 // modes of the polar rods, split into the transverse and the longitudinal band relative to
 // their axis of motion, the director of their headings (either heading: lanes of rods moving
 // both ways along one axis are one longitudinal band).
+#include <string>
 #include <vector>
 
 #include "rodsea/analysis/density_modes.hpp"
@@ -19,6 +20,13 @@ class BandObservable final : public Observable {
     ObservableResults finish() override;
 
   private:
+    static constexpr double kBandFloors = 3.0;
+    // band_<kind>_present and band_<kind>_drift from one kind of band's amplitude, position and
+    // mode in every frame.
+    template <class Amplitude, class At, class Mode>
+    void add_band_motion(ObservableResults& r, const std::string& kind, const std::string& what,
+                         double least, Amplitude amplitude, At at, Mode mode) const;
+
     AnalysisSetup setup_;
     std::vector<double> times_, axis_;
     std::vector<BandAmplitudes> amplitudes_;
