@@ -173,6 +173,13 @@ TEST(Bands, ABandMovingAcrossItselfHasItsDriftVelocity) {
     EXPECT_EQ(scalar(r, "band_longitudinal_present").estimate.mean, 1.0);
     EXPECT_EQ(scalar(r, "band_transverse_present").estimate.mean, 0.0);
     EXPECT_TRUE(std::isnan(scalar(r, "band_transverse_drift").estimate.mean));
+    // bands.threshold = 11: 11 √(π/4·98) = 0.985 lies above the stripe's 0.92, no band counts.
+    AnalysisOptions strict;
+    strict.band_threshold = 11.0;
+    const auto picky = make_observable("bands", setup, resolved(setup, strict));
+    const auto none = run_on(*picky, trajectory, setup);
+    EXPECT_EQ(scalar(none, "band_longitudinal_present").estimate.mean, 0.0);
+    EXPECT_TRUE(std::isnan(scalar(none, "band_longitudinal_drift").estimate.mean));
 }
 
 // Pairs of frames count only when both hold the band in the same mode.

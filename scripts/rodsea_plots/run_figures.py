@@ -568,6 +568,7 @@ def band_jobs(a, log):
     mean_t = a.scalar("bands", "band_transverse")
     mean_l = a.scalar("bands", "band_longitudinal")
     random = (a.scalar("bands", "band_random") or {}).get("value")
+    threshold = a.parameter("bands", "band_threshold")
 
     def draw(plt):
         fig, ax = plt.subplots(figsize=SIZE_CURVE)
@@ -579,6 +580,9 @@ def band_jobs(a, log):
         if finite(random):
             ax.axhline(random, color="0.4", ls=":", lw=1,
                        label=f"random positions √(π/4N) = {random:.3f}")
+        if finite(threshold):
+            ax.axhline(threshold, color="0.4", ls="--", lw=0.8,
+                       label=f"a band above {threshold:.3f} (3 × random)")
         ax.set_ylim(bottom=0.0)
         ax.set_xlabel("t (s)")
         ax.set_ylabel("|ρ_k| of the polar rods (longest modes)")

@@ -37,6 +37,7 @@ const std::vector<Field> kFields{
     &AnalysisOptions::flock_min_samples,
     &AnalysisOptions::segregation_cell,
     &AnalysisOptions::segregation_baseline_samples,
+    &AnalysisOptions::band_threshold,
     &AnalysisOptions::medium_distance,
     &AnalysisOptions::medium_r_max,
     &AnalysisOptions::medium_bin,
@@ -115,6 +116,14 @@ std::vector<KeySpec> make_keys() {
             .def(count(d.segregation_baseline_samples))
             .integers(1, 1'000'000)
             .doc("random-mixing realisations averaged for the Σ baseline"),
+        real("bands", "threshold")
+            .def(d.band_threshold)
+            .range(closed(1.0, 100.0))
+            .choice("the paper gives none")
+            .doc("a band is there where its mode's |ρ_k| is at least this many times the mean "
+                 "for random positions, √(π/4N); random positions reach x times it with "
+                 "probability exp(−π x²/4): 3 in one frame of 1200, 2 in one of 23. With few "
+                 "polar rods no band may reach 3 (|ρ_k| ≤ 1; 18 rods need 0.63)"),
         real("medium_velocity", "d")
             .unit("mm")
             .def(d.medium_distance)

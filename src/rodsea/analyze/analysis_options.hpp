@@ -30,6 +30,7 @@ struct AnalysisOptions {
     int flock_min_samples = 3;               // MODEL.md CHOICE
     double segregation_cell = kAuto;         // mm; auto: 2 ℓ_p (MODEL.md CHOICE)
     int segregation_baseline_samples = 200;
+    double band_threshold = 3.0;     // times the random mean √(π/4N) (CHOICE)
     double medium_distance = 100.0;  // mm, the paper's d
     double medium_r_max = kAuto;     // mm; auto: min(L/2, d)
     double medium_bin = 1.0;         // mm

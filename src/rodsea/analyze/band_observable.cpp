@@ -54,9 +54,9 @@ ObservableResults BandObservable::finish() {
                          "mean |ρ_k| of the same number of polar rods at random positions, "
                          "√(π / 4N)",
                          Estimate{random, std::nan(""), 0.5, 0.0, 0}});
-    // CHOICE: a band is there when its mode stands at least kBandFloors times the random mean;
-    // random positions reach that in 1 frame of 1200 (Rayleigh: exp(−9π/4)).
-    const double least = kBandFloors * random;
+    // bands.threshold (CHOICE): a band is there when its mode stands that many random means.
+    const double least = floors_ * random;
+    r.parameters.push_back({"threshold", floors_, ""});  // in random means
     r.parameters.push_back({"band_threshold", least, ""});
     add_band_motion(
         r, "transverse", "along the motion (transverse bands)", least,

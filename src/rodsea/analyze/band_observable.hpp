@@ -7,20 +7,21 @@
 #include <vector>
 
 #include "rodsea/analysis/density_modes.hpp"
+#include "rodsea/analyze/analysis_options.hpp"
 #include "rodsea/analyze/observable.hpp"
 
 namespace rodsea {
 
 class BandObservable final : public Observable {
   public:
-    explicit BandObservable(const AnalysisSetup& setup) : setup_(setup) {}
+    BandObservable(const AnalysisSetup& setup, const AnalysisOptions& options)
+        : setup_(setup), floors_(options.band_threshold) {}
     std::string name() const override { return "bands"; }
     bool wants_transient() const override { return true; }
     void compute(const FrameContext& frame) override;
     ObservableResults finish() override;
 
   private:
-    static constexpr double kBandFloors = 3.0;
     // band_<kind>_present and band_<kind>_drift from one kind of band's amplitude, position and
     // mode in every frame.
     template <class Amplitude, class At, class Mode>
@@ -28,6 +29,7 @@ class BandObservable final : public Observable {
                          double least, Amplitude amplitude, At at, Mode mode) const;
 
     AnalysisSetup setup_;
+    double floors_;  // bands.threshold: a band stands this many random means
     std::vector<double> times_, axis_;
     std::vector<BandAmplitudes> amplitudes_;
     std::vector<char> steady_;

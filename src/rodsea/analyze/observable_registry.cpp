@@ -128,7 +128,7 @@ std::unique_ptr<Observable> make_observable(const std::string& name, const Analy
         return std::make_unique<AutocorrelationObservable>(setup, options);
     if (name == "flocks") return std::make_unique<FlockObservable>(setup, options);
     if (name == "segregation") return std::make_unique<SegregationObservable>(setup, options);
-    if (name == "bands") return std::make_unique<BandObservable>(setup);
+    if (name == "bands") return std::make_unique<BandObservable>(setup, options);
     if (name == "medium_velocity")
         return std::make_unique<MediumVelocityObservable>(setup, options);
     if (name == "drift") return std::make_unique<DriftObservable>(setup);
