@@ -82,6 +82,10 @@ FIG4A_BLOCK = 5.0
 # The same point at σ = 5.625 in the 88 mm box (98 polar rods): its P(t) and S(t) beside the
 # 38 mm runs', while it is short of FIG4A_WINDOW.
 FIG4A_88MM = f"{DATA}/fig4a-88mm/medium.area_fraction=0.75,medium.aspect_ratio=5.625.series.csv"
+# A second seed of σ = 5.625 in the 38 mm box, run 45 s: its P over FIG4A_SEED2_WINDOW.
+FIG4A_SEED2 = (5.625, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspect_ratio=5.625"
+               ".seed2.series.csv")
+FIG4A_SEED2_WINDOW = (25.0, 45.0)
 
 # Fig. 5b, first look: the medium's velocity around polar rods against distance in the 63 mm box
 # (label, profile table) from `rodsea analyze --observables medium_velocity`.
@@ -374,6 +378,13 @@ def draw_fig4a(plt):
                     label="S of the medium")
     dump["S_medium"] = {"x": xs, "y": ys, "err": errs}
     points.containers[0].set_label("P of the polar rods")  # drawn first
+    seed2 = window_points([FIG4A_SEED2], FIG4A_SEED2_WINDOW, FIG4A_BLOCK)
+    if seed2:
+        x, y, err, _ = seed2[0]
+        points.errorbar([x], [y], yerr=[err], fmt="D", ms=5, capsize=3, color="0.4",
+                        label=f"P, seed 2 ({FIG4A_SEED2_WINDOW[0]:g}–"
+                              f"{FIG4A_SEED2_WINDOW[1]:g} s)")
+        dump["P, seed 2"] = {"x": [x], "y": [y], "err": [err]}
     points.legend(loc="best", fontsize=7)
     points.set_ylabel(f"over {FIG4A_WINDOW[0]:g}–{FIG4A_WINDOW[1]:g} s")
     points.set_xlim(0.8, 6.0)

@@ -133,6 +133,14 @@ for drawn, name in (("P", "P_polar"), ("S_medium", "S_medium")):
                 if os.path.isfile(os.path.join(source, relative))]
     check_points("fig4a", list(zip(fig4a[drawn]["x"], fig4a[drawn]["y"])), expected, 3)
 
+# Fig. 4a's second seed at σ = 5.625: the mean of its 5 s block means over its own window.
+sigma, relative = figures.FIG4A_SEED2
+if os.path.isfile(os.path.join(source, relative)):
+    expected = [(sigma, block_mean(os.path.join(source, relative), "P_polar",
+                                   *figures.FIG4A_SEED2_WINDOW, block=5.0))]
+    check_points("fig4a seed 2", list(zip(fig4a["P, seed 2"]["x"], fig4a["P, seed 2"]["y"])),
+                 expected, 1)
+
 # Fig. 4a's 88 mm run at σ = 5.625, short of the window: its P(t) and S(t) as drawn are its table's.
 path = os.path.join(source, figures.FIG4A_88MM)
 if os.path.isfile(path):
