@@ -430,6 +430,7 @@ def draw_fig4a_bands(ax, dump):
         ax.axhline(np.sqrt(np.pi / (4 * rods)), color="0.5", lw=0.8, ls=":")
     ax.set_xlabel("t (s)")
     ax.set_ylabel("longitudinal band |ρ_k| (1 s bins)")
+    ax.set_xlim(0.0, FIG4A_WINDOW[1])  # as the P(t) beside it (σ = 3.125 runs on to 120 s)
     ax.set_ylim(0.0, 1.0)
     ax.set_title("band along the motion (dotted: random, √(π/4N))", fontsize=10)
     if floors:
