@@ -569,20 +569,21 @@ def band_jobs(a, log):
     mean_l = a.scalar("bands", "band_longitudinal")
     random = (a.scalar("bands", "band_random") or {}).get("value")
     threshold = a.parameter("bands", "band_threshold")
+    floors = a.parameter("bands", "threshold")
 
     def draw(plt):
         fig, ax = plt.subplots(figsize=SIZE_CURVE)
         shade_steady(ax, time, steady)
         ax.plot(time, longitudinal, lw=1.4, marker="o", ms=3,
-                label=f"longitudinal (across the motion): {value_text(mean_l)}")
+                label=f"longitudinal band (mode across the motion): {value_text(mean_l)}")
         ax.plot(time, transverse, lw=1.2, marker="s", ms=3,
-                label=f"transverse (along the motion): {value_text(mean_t)}")
+                label=f"transverse band (mode along the motion): {value_text(mean_t)}")
         if finite(random):
             ax.axhline(random, color="0.4", ls=":", lw=1,
                        label=f"random positions √(π/4N) = {random:.3f}")
         if finite(threshold):
             ax.axhline(threshold, color="0.4", ls="--", lw=0.8,
-                       label=f"a band above {threshold:.3f} (3 × random)")
+                       label=f"a band above {threshold:.3f} ({floors:g} × random)")
         ax.set_ylim(bottom=0.0)
         ax.set_xlabel("t (s)")
         ax.set_ylabel("|ρ_k| of the polar rods (longest modes)")
