@@ -571,6 +571,93 @@ TEST(Campaign, AnEnsembleRunnerRunsOnWhenARunsLogCannotBeWritten) {
     EXPECT_NE(read_file(run_dir / "progress.txt").find("state = done"), std::string::npos);
 }
 
+// A campaign run to 0.1 s and found short is extended to 0.2 s with one command: the runs done
+// continue from their last checkpoints, one process each or as one ensemble, and are bit for bit
+// the runs of a campaign given 0.2 s from the start. What an extension may not change (the scale,
+// a shorter duration) is refused before anything is written.
+TEST(Campaign, AnExtendedCampaignsRunsAreTheRunsGivenTheLongerDurationFromTheStart) {
+    const ScratchDir scratch("campaign-extend");
+    const fs::path file = scratch.path() / "together.toml";
+    std::ofstream(file) << ensemble_campaign("[0.1, 0.3]");
+    const std::string f = file.string();
+    const std::vector<std::string> points{"medium.area_fraction=0.1", "medium.area_fraction=0.3"};
+    const auto campaign = [&](const std::string& sub, const fs::path& dir,
+                              std::vector<std::string> more) {
+        std::vector<std::string> args{"campaign", sub, f, "--out", dir.string()};
+        args.insert(args.end(), more.begin(), more.end());
+        return run_rodsea(args, scratch.path());
+    };
+    const fs::path reference = scratch.path() / "reference", local = scratch.path() / "local",
+                   together = scratch.path() / "together";
+    ASSERT_EQ(campaign("run", reference, {"--duration", "0.2", "--quiet"}).exit_code, 0);
+    ASSERT_EQ(campaign("run", local, {"--duration", "0.1", "--quiet"}).exit_code, 0);
+    ASSERT_EQ(campaign("run", together, {"--duration", "0.1", "--ensemble", "--quiet"}).exit_code,
+              0);
+
+    const std::string scaling = read_file(local / "scaling.txt");
+    const struct {
+        std::vector<std::string> more;
+        std::string message;
+    } refused[] = {
+        {{"--duration", "0.2"}, "add --extend to continue every run to --duration 0.2 s"},
+        {{"--duration", "0.05", "--extend"}, "a campaign is extended, not shortened"},
+        {{"--duration", "0.2", "--scale", "0.5", "--extend"}, "an extension changes the runs'"},
+        {{"--extend"}, "--extend with --duration T"},
+    };
+    for (const auto& c : refused) {
+        const ChildResult r = campaign("run", local, c.more);
+        EXPECT_EQ(r.exit_code, 2) << r.err;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    }
+    const ChildResult nowhere =
+        campaign("run", scratch.path() / "none", {"--duration", "0.2", "--extend"});
+    EXPECT_EQ(nowhere.exit_code, 2) << nowhere.err;
+    EXPECT_NE(nowhere.err.find("holds none yet"), std::string::npos) << nowhere.err;
+    EXPECT_FALSE(fs::exists(scratch.path() / "none"));
+    EXPECT_EQ(read_file(local / "scaling.txt"), scaling);
+    for (const std::string& p : points)
+        EXPECT_NE(read_file(local / "runs" / p / "seed1.toml").find("duration = 0.1\n"),
+                  std::string::npos);
+
+    // A submission (dry: nothing runs) takes the directory to 0.2 s: every run is to continue,
+    // from 0.1 s, and is in the array.
+    const ChildResult submitted =
+        campaign("submit", local, {"--duration", "0.2", "--extend", "--dry-run"});
+    ASSERT_EQ(submitted.exit_code, 0) << submitted.err;
+    EXPECT_NE(submitted.out.find("extended from --duration 0.1 s to 0.2 s"), std::string::npos)
+        << submitted.out;
+    const ChildResult status = campaign("status", local, {"--duration", "0.2"});
+    ASSERT_EQ(status.exit_code, 0) << status.err;
+    EXPECT_EQ(count_of(status.out, "0.1 / 0.2"), 2) << status.out;
+    EXPECT_NE(status.out.find("0 done"), std::string::npos) << status.out;
+    EXPECT_EQ(count_of(read_file(local / "slurm" / "tasks-1.txt"), "seed1"), 2);
+
+    const ChildResult extended = campaign("run", local, {"--duration", "0.2"});
+    ASSERT_EQ(extended.exit_code, 0) << extended.out << extended.err;
+    EXPECT_EQ(count_of(extended.out, "campaign: resume "), 2) << extended.out;
+    const ChildResult in_ensemble =
+        campaign("run", together, {"--duration", "0.2", "--extend", "--ensemble"});
+    ASSERT_EQ(in_ensemble.exit_code, 0) << in_ensemble.out << in_ensemble.err;
+    EXPECT_NE(in_ensemble.out.find("2/2 runs done"), std::string::npos) << in_ensemble.out;
+    for (const std::string& p : points) {
+        expect_same_run(local / "runs" / p / "seed1", reference / "runs" / p / "seed1");
+        expect_same_run(together / "runs" / p / "seed1", reference / "runs" / p / "seed1");
+    }
+    // Done at 0.2 s, and the directory is a 0.2 s campaign's to every command.
+    const ChildResult again = campaign("run", local, {"--duration", "0.2", "--extend"});
+    ASSERT_EQ(again.exit_code, 0) << again.err;
+    EXPECT_EQ(again.out.find("extended from"), std::string::npos) << again.out;
+    EXPECT_NE(again.out.find("2 done, 0 to run"), std::string::npos) << again.out;
+    // scaling.txt is input too.
+    std::ofstream(together / "scaling.txt") << "scale = 1\nduration = soon\n";
+    const ChildResult garbled = campaign("run", together, {"--duration", "0.3", "--extend"});
+    EXPECT_EQ(garbled.exit_code, 74) << garbled.err;
+    EXPECT_NE(
+        garbled.err.find("scaling.txt: is not a campaign's scaling: invalid duration = 'soon'"),
+        std::string::npos)
+        << garbled.err;
+}
+
 struct BadRun {
     std::vector<std::string> args;
     std::string message;

@@ -28,7 +28,7 @@ const CommandSpec& campaign_command_spec() {
     static const CommandSpec spec{
         "campaign",
         "plan|run|status|collect|submit CAMPAIGN [--out DIR] [--scale F] [--duration T] "
-        "[--jobs N | --ensemble] [--threads T] [--backend cpu|gpu] [submit options]",
+        "[--extend] [--jobs N | --ensemble] [--threads T] [--backend cpu|gpu] [submit options]",
         "a figure's grid of runs: plan its cost, run it, follow it, collect its table",
         "CAMPAIGN is a TOML file (docs/campaigns.md: a base config, axes over config keys, "
         "replicates, the analysis): every point is built and checked, packing included, before "
@@ -55,7 +55,12 @@ const CommandSpec& campaign_command_spec() {
          {"--scale", "F",
           "box side times F, in (0, 1], area fractions kept (counts given as counts times F^2): "
           "run a figure small first; fixed for a campaign directory"},
-         {"--duration", "T", "every run's time.duration, s; fixed for a campaign directory"},
+         {"--duration", "T",
+          "every run's time.duration, s; fixed for a campaign directory, unless --extend"},
+         {"--extend", "",
+          "run, submit: take the campaign directory to a longer --duration (the same --scale "
+          "and points): runs done continue from their last checkpoints, bit for bit the runs "
+          "that had been given it from the start"},
          {"--jobs", "N",
           "run, submit: runs at a time (in each array task) (default 1); plan: for the "
           "wall-time estimate"},
@@ -154,6 +159,45 @@ int plan(const Arguments& a, std::ostream& out) {
     return kExitOk;
 }
 
+// With --extend, every run's plan at the scaling the directory was started with, once it is
+// checked that the directory holds a campaign and that only its runs' durations grow.
+std::optional<std::vector<RunPlan>> plans_before_extension(const Arguments& a, const Loaded& l,
+                                                           const std::vector<RunPlan>& plans,
+                                                           bool quiet, std::ostream& out) {
+    if (!a.has("--extend")) return std::nullopt;
+    if (!l.scaling.duration)
+        throw InvalidParameter("--extend", "without --duration",
+                               "--extend with --duration T: every run continues to T s");
+    const std::optional<CampaignScaling> before = read_campaign_scaling(l.paths);
+    if (!before)
+        throw InvalidParameter("--extend", l.paths.dir.string(),
+                               "a campaign directory to extend (this one holds none yet)",
+                               "start the campaign without --extend");
+    if (before->scale != l.scaling.scale)
+        throw InvalidParameter("--scale", exact_number(l.scaling.scale),
+                               "the campaign's --scale " + exact_number(before->scale) +
+                                   ": an extension changes the runs' duration only");
+    const CampaignGrid grid = expand_campaign(l.campaign, *before, calibration_table_lookup());
+    std::vector<RunPlan> before_plans;
+    for (std::size_t i = 0; i < l.grid.runs.size(); ++i) {
+        before_plans.push_back(
+            run_plan(l.campaign, grid, grid.runs[i], *before, calibration_table_lookup()));
+        const double was = before_plans.back().control.duration;
+        if (was > plans[i].control.duration)
+            throw InvalidParameter("--duration", exact_number(*l.scaling.duration),
+                                   "at least every run's duration so far (" + l.grid.runs[i].id +
+                                       ": " + exact_number(was) + " s)",
+                                   "a campaign is extended, not shortened");
+    }
+    if (!quiet && before->duration != l.scaling.duration)
+        out << "campaign " << l.paths.dir.string() << ": extended from "
+            << (before->duration ? "--duration " + exact_number(*before->duration) + " s"
+                                 : std::string("each point's duration"))
+            << " to " << exact_number(*l.scaling.duration)
+            << " s: runs done continue from their last checkpoints" << std::endl;
+    return before_plans;
+}
+
 std::optional<BackendKind> backend_option(const Arguments& a) {
     if (const auto b = a.value("--backend")) return backend_flag("--backend", *b);
     return std::nullopt;
@@ -184,7 +228,9 @@ int run(const Arguments& a, std::ostream& out, std::ostream& err) {
     std::vector<RunPlan> plans;
     for (const CampaignRun& r : l.grid.runs)
         plans.push_back(run_plan(l.campaign, l.grid, r, l.scaling, calibration_table_lookup()));
-    prepare_campaign_dir(l.paths, l.campaign, l.scaling, l.grid, plans);
+    const auto before = plans_before_extension(a, l, plans, o.quiet, out);
+    prepare_campaign_dir(l.paths, l.campaign, l.scaling, l.grid, plans,
+                         before ? &*before : nullptr);
     if (a.has("--ensemble")) return run_campaign_as_ensemble(l.paths, l.grid, o, out, err);
     return run_campaign_locally(l.paths, l.grid, o, out);
 }
@@ -239,7 +285,9 @@ int submit(const Arguments& a, std::ostream& out) {
     std::vector<RunPlan> plans;
     for (const CampaignRun& r : l.grid.runs)
         plans.push_back(run_plan(l.campaign, l.grid, r, l.scaling, calibration_table_lookup()));
-    prepare_campaign_dir(l.paths, l.campaign, l.scaling, l.grid, plans);
+    const auto before = plans_before_extension(a, l, plans, false, out);
+    prepare_campaign_dir(l.paths, l.campaign, l.scaling, l.grid, plans,
+                         before ? &*before : nullptr);
     return submit_campaign_to_slurm(l.paths, l.campaign, l.grid, o, out);
 }
 
@@ -262,8 +310,12 @@ int status(const Arguments& a, std::ostream& out) {
         std::string done = "-", time = "-", rate = "-", eta = "-";
         if (s.progress) {
             const RunProgress& p = *s.progress;
-            done = format_number(std::floor(p.fraction() * 1000) / 10) + " %";
-            time = format_number(p.time) + " / " + format_number(p.duration);
+            // A run of an extended campaign that has not continued yet: its way to the new end.
+            const bool extended = ends_before(p, r.duration);
+            const double fraction = extended ? p.time / r.duration : p.fraction();
+            done = format_number(std::floor(fraction * 1000) / 10) + " %";
+            time =
+                format_number(p.time) + " / " + format_number(extended ? r.duration : p.duration);
             if (s.state == RunState::running) {
                 rate = format_number(std::round(p.steps_per_second));
                 if (p.eta_seconds() >= 0) eta = format_duration(p.eta_seconds());
@@ -318,13 +370,13 @@ void check_options_of(const std::string& sub, const Arguments& a) {
         {"plan", {"--jobs", "--threads", "--ensemble", "--measure-seconds", "--no-measure"}},
         {"run",
          {"--jobs", "--threads", "--retry-failed", "--quiet", "--tasks", "--task", "--ensemble",
-          "--backend"}},
+          "--backend", "--extend"}},
         {"status", {}},
         {"collect", {"--quiet", "--reanalyse"}},
         {"submit",
          {"--jobs", "--partition", "--account", "--time", "--signal-seconds", "--cpus-per-task",
           "--gpus-per-task", "--throttle", "--pack", "--resubmit", "--retry-failed", "--dry-run",
-          "--ensemble", "--backend"}}};
+          "--ensemble", "--backend", "--extend"}}};
     const auto own =
         std::find_if(options.begin(), options.end(), [&](const auto& o) { return o.first == sub; });
     if (own == options.end()) return;  // an unknown subcommand is named below

@@ -108,7 +108,8 @@ CampaignGrid expand_campaign(const Campaign& c, const CampaignScaling& scaling,
     for (std::size_t i = 0; i < grid.points.size(); ++i)
         for (int r = 0; r < c.replicates; ++r) {
             const std::uint64_t seed = c.first_seed + static_cast<std::uint64_t>(r);
-            grid.runs.push_back({i, seed, grid.points[i].name + "/seed" + std::to_string(seed)});
+            grid.runs.push_back({i, seed, grid.points[i].name + "/seed" + std::to_string(seed),
+                                 grid.points[i].plan.control.duration});
         }
     return grid;
 }

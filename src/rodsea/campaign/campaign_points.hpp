@@ -24,6 +24,9 @@ struct CampaignRun {
     std::size_t point = 0;
     std::uint64_t seed = 0;
     std::string id;  // "<point name>/seed<seed>"
+    // Its time.duration in this campaign (its point's, or --duration), s: a run that ended
+    // shorter (a campaign extended since) is not done.
+    double duration = 0.0;
 };
 
 struct CampaignGrid {

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "rodsea/cli/arguments.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
 #include "rodsea/number_text.hpp"
@@ -41,10 +42,16 @@ void check_scaling(const CampaignPaths& paths, const CampaignScaling& scaling) {
         std::istringstream lines(*stored);
         for (std::string line; std::getline(lines, line);)
             if (!line.empty() && line[0] != '#') said += (said.empty() ? "" : ", ") + line;
+        const std::optional<CampaignScaling> started = read_campaign_scaling(paths);
+        const bool longer = started && started->scale == scaling.scale && scaling.duration &&
+                            (!started->duration || *started->duration < *scaling.duration);
         throw InvalidParameter(
             "--scale/--duration", given,
             "what the campaign in " + paths.dir.string() + " was started with (" + said + ")",
-            "give the same options, or another --out");
+            longer ? "give the same options, or add --extend to continue every run to "
+                     "--duration " +
+                         exact_number(*scaling.duration) + " s"
+                   : "give the same options, or another --out");
     }
 }
 
@@ -56,8 +63,47 @@ void write_unless_same(const fs::path& path, const std::string& text) {
 
 }  // namespace
 
+bool ends_before(const RunProgress& progress, double duration) {
+    // Both are the same decimal number read back, or the shorter is shorter by a step at least.
+    return progress.duration < duration * (1.0 - 1e-12);
+}
+
 fs::path default_campaign_dir(const Campaign& campaign) {
     return fs::path("out") / campaign.name;
+}
+
+std::optional<CampaignScaling> read_campaign_scaling(const CampaignPaths& paths) {
+    const fs::path file = paths.dir / "scaling.txt";
+    const auto text = read_text(file);
+    if (!text) return std::nullopt;
+    CampaignScaling scaling;
+    bool scale_read = false, duration_read = false;
+    std::istringstream lines(*text);
+    for (std::string line; std::getline(lines, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        const std::size_t eq = line.find(" = ");
+        const std::string key = line.substr(0, eq),
+                          value = eq == std::string::npos ? "" : line.substr(eq + 3);
+        try {
+            if (key == "scale") {
+                scaling.scale = parse_number("scale", value, 1e-3, 1.0);
+                scale_read = true;
+                continue;
+            }
+            if (key == "duration") {
+                if (value != "none")
+                    scaling.duration = parse_number("duration", value, 1e-6, 1e6, "s");
+                duration_read = true;
+                continue;
+            }
+        } catch (const InvalidParameter& e) {
+            throw FileError(file.string(), std::string("is not a campaign's scaling: ") + e.what());
+        }
+        throw FileError(file.string(), "is not a campaign's scaling: its line '" + line + "'");
+    }
+    if (!scale_read || !duration_read)
+        throw FileError(file.string(), "is not a campaign's scaling: it lacks scale or duration");
+    return scaling;
 }
 
 void check_campaign_dir(const CampaignPaths& paths, const CampaignScaling& scaling) {
@@ -71,7 +117,8 @@ void check_campaign_dir(const CampaignPaths& paths, const CampaignScaling& scali
 
 void prepare_campaign_dir(const CampaignPaths& paths, const Campaign& campaign,
                           const CampaignScaling& scaling, const CampaignGrid& grid,
-                          const std::vector<RunPlan>& plans) {
+                          const std::vector<RunPlan>& plans,
+                          const std::vector<RunPlan>* plans_before) {
     std::error_code ec;
     if (fs::exists(paths.dir, ec) && !fs::is_directory(paths.dir, ec))
         throw FileError(paths.dir.string(), "is a file, not a campaign directory");
@@ -79,11 +126,13 @@ void prepare_campaign_dir(const CampaignPaths& paths, const Campaign& campaign,
     if (fresh && fs::exists(paths.dir, ec) && !fs::is_empty(paths.dir, ec))
         throw FileError(paths.dir.string(),
                         "exists, is not empty and holds no campaign: give another --out");
-    check_scaling(paths, scaling);
-    // Every existing config is compared before anything is written.
+    if (!plans_before) check_scaling(paths, scaling);
+    // Every existing config is compared before anything is written. Extended, a run's config
+    // may be the one it started with or (an extension cut short) the one it is extended to.
     for (std::size_t i = 0; i < grid.runs.size(); ++i) {
         const auto stored = read_text(paths.config(grid.runs[i]));
-        if (stored && *stored != plans[i].config_toml)
+        if (stored && *stored != plans[i].config_toml &&
+            (!plans_before || *stored != (*plans_before)[i].config_toml))
             throw InvalidParameter(
                 "campaign", grid.runs[i].id,
                 "the config it was started with (" + paths.config(grid.runs[i]).string() + ")",
@@ -98,15 +147,17 @@ void prepare_campaign_dir(const CampaignPaths& paths, const Campaign& campaign,
     }
     if (!fs::exists(paths.dir / "campaign.toml", ec))
         write_file_atomically(paths.dir / "campaign.toml", "# (given as a string)\n");
-    write_unless_same(paths.dir / "scaling.txt", scaling_text(scaling));
     for (std::size_t i = 0; i < grid.runs.size(); ++i) {
         const fs::path config = paths.config(grid.runs[i]);
-        if (fs::exists(config, ec)) continue;
+        if (fs::exists(config, ec) && !plans_before) continue;
         fs::create_directories(config.parent_path(), ec);
         if (ec)
             throw FileError(config.parent_path().string(), "cannot be created: " + ec.message());
         write_unless_same(config, plans[i].config_toml);
     }
+    // Last: an extension cut short leaves the old scaling beside configs of both durations, which
+    // the same `--extend` accepts and completes.
+    write_unless_same(paths.dir / "scaling.txt", scaling_text(scaling));
 }
 
 const char* to_string(RunState state) {
@@ -140,8 +191,11 @@ RunStatus run_status(const CampaignPaths& paths, const CampaignRun& run, int max
     }
     std::error_code ec;
     const bool has_checkpoint = fs::exists(dir / kCheckpointFile, ec);
+    // A run that ran to a shorter duration than the campaign's now (extended since) is not;
+    // one that stopped at a steady state is (it would stop there again).
     const bool finished =
-        s.progress && (s.progress->state == "done" || s.progress->state == "steady");
+        s.progress && (s.progress->state == "steady" ||
+                       (s.progress->state == "done" && !ends_before(*s.progress, run.duration)));
     const int fd = ::open(paths.lock(run).c_str(), O_RDONLY | O_CLOEXEC);
     bool locked = false;
     if (fd >= 0) {

@@ -41,9 +41,17 @@ std::filesystem::path default_campaign_dir(const Campaign& campaign);
 // Makes `dir` this campaign's directory, or checks that it already is: the same scaling, and for
 // every run already written the same config. A changed point is refused by name (nothing is
 // written); new points (values added to an axis) are added. Throws InvalidParameter/FileError.
+// Extending (`plans_before`: every run's plan at the scaling the directory holds, which the
+// caller has checked may be extended to `scaling`), a run's config may instead be its plan
+// before, and is rewritten; scaling.txt is written last.
 void prepare_campaign_dir(const CampaignPaths& paths, const Campaign& campaign,
                           const CampaignScaling& scaling, const CampaignGrid& grid,
-                          const std::vector<RunPlan>& plans);
+                          const std::vector<RunPlan>& plans,
+                          const std::vector<RunPlan>* plans_before = nullptr);
+
+// The --scale and --duration `dir` was started with (scaling.txt); none for a directory that
+// holds no campaign yet. Throws FileError for a scaling.txt that is not one.
+std::optional<CampaignScaling> read_campaign_scaling(const CampaignPaths& paths);
 
 // Checks, without writing, that `dir` holds this campaign at this scaling (status, collect).
 void check_campaign_dir(const CampaignPaths& paths, const CampaignScaling& scaling);
@@ -58,8 +66,14 @@ struct RunStatus {
     std::string last_failure;  // the last line of the last failure's message
 };
 
-// A run's state from its files: done once its progress says done or steady (written after its
-// final checkpoint), running while a runner holds its lock, failed after `max_failures`.
+// Whether a run's progress says it runs, or ran, to less than `duration` (s): a run of a campaign
+// extended since it ended.
+bool ends_before(const RunProgress& progress, double duration);
+
+// A run's state from its files: done once its progress says steady, or done at run.duration or
+// longer (written after its final checkpoint), running while a runner holds its lock, failed
+// after `max_failures`; a run done at a shorter duration (its campaign since extended) is
+// interrupted.
 RunStatus run_status(const CampaignPaths& paths, const CampaignRun& run, int max_failures = 2);
 
 // An fcntl lock (open-file-description lock, so that no other open of the file in this process

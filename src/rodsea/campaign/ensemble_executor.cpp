@@ -131,6 +131,7 @@ int run_campaign_as_ensemble(const CampaignPaths& paths, const CampaignGrid& gri
         std::vector<NewRun> fresh;
         std::vector<std::size_t> fresh_runs, stepped_runs;
         std::vector<fs::path> dirs;
+        RunOptions round = options;
         for (const std::size_t i : taken) {
             const CampaignRun& run = grid.runs[i];
             std::error_code ec;
@@ -138,6 +139,10 @@ int run_campaign_as_ensemble(const CampaignPaths& paths, const CampaignGrid& gri
             if (resumes) {
                 dirs.push_back(paths.run_dir(run));
                 stepped_runs.push_back(i);
+                // A campaign extended since the run ended or stopped: on to the campaign's
+                // duration, which an extension (--extend takes --duration) gives every run.
+                const std::optional<RunProgress> progress = read_progress_file(dirs.back());
+                if (progress && ends_before(*progress, run.duration)) round.duration = run.duration;
             } else {
                 fresh.push_back(new_run(paths, run, o));
                 fresh_runs.push_back(i);
@@ -169,7 +174,7 @@ int run_campaign_as_ensemble(const CampaignPaths& paths, const CampaignGrid& gri
         }
         if (!dirs.empty()) {
             const auto round_started = Clock::now();
-            const std::vector<int> codes = resume_each(dirs, options, out, messages);
+            const std::vector<int> codes = resume_each(dirs, round, out, messages);
             for (std::size_t k = 0; k < dirs.size(); ++k)
                 code_of[stepped_runs[k]] = codes[k];
             if (!o.quiet)

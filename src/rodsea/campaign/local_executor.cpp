@@ -19,6 +19,7 @@
 #include "rodsea/cli/progress.hpp"
 #include "rodsea/cli/stop_signal.hpp"
 #include "rodsea/error.hpp"
+#include "rodsea/number_text.hpp"
 #include "rodsea/run/run_driver.hpp"
 
 namespace rodsea {
@@ -48,6 +49,10 @@ std::vector<std::string> run_words(const CampaignPaths& paths, const CampaignRun
         // never the trajectory.
         words = {"run",    "--resume", dir.string(), "--threads", std::to_string(o.threads),
                  "--quiet"};
+        // A campaign extended since the run ended or stopped: on to the campaign's duration.
+        const std::optional<RunProgress> progress = read_progress_file(dir);
+        if (progress && ends_before(*progress, run.duration))
+            words.insert(words.end(), {"--duration", exact_number(run.duration)});
     } else {
         // Killed before its first checkpoint (or never started): from the start.
         what = fs::exists(dir, ec) ? "restart (no checkpoint yet)" : "start";
