@@ -79,9 +79,10 @@ FIG4A = [(sigma, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspect_rat
           ".series.csv") for sigma in (1.25, 3.125, 5.625)]
 FIG4A_WINDOW = (30.0, 60.0)
 FIG4A_BLOCK = 5.0
-# The same point at σ = 5.625 in the 88 mm box (98 polar rods): its P(t) and S(t) beside the
-# 38 mm runs', while it is short of FIG4A_WINDOW.
-FIG4A_88MM = f"{DATA}/fig4a-88mm/medium.area_fraction=0.75,medium.aspect_ratio=5.625.series.csv"
+# The same points in the 88 mm box (98 polar rods): (σ, series table, window of its P): their
+# P(t) and S(t) beside the 38 mm runs', and P over each one's own window.
+FIG4A_88MM = [(sigma, f"{DATA}/fig4a-88mm/medium.area_fraction=0.75,medium.aspect_ratio={sigma:g}"
+               ".series.csv", window) for sigma, window in ((5.625, (40.0, 60.0)),)]
 # A second seed of σ = 5.625 in the 38 mm box, run 45 s: its P over FIG4A_SEED2_WINDOW.
 FIG4A_SEED2 = (5.625, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspect_ratio=5.625"
                ".seed2.series.csv")
@@ -370,7 +371,8 @@ def draw_fig4a(plt):
     FIG4A_WINDOW, errors from blocks), and P(t) of each run."""
     fig, points, dump = draw_points_and_series(
         plt, FIG4A, FIG4A_WINDOW, "σ (medium rods' aspect ratio)", "σ", "",
-        "Fig. 4a inset, 38 mm box (18 polar rods), φ_p = 0.05, φ_a = 0.75, D_r = 0.23 rad²/s",
+        "Fig. 4a inset, 38 mm box (18 polar rods; dashed and open: 88 mm, 98), φ_p = 0.05, "
+        "φ_a = 0.75, D_r = 0.23 rad²/s",
         block=FIG4A_BLOCK, panels=3)
     nematic = window_points(FIG4A, FIG4A_WINDOW, FIG4A_BLOCK, "S_medium")
     xs, ys, errs = ([m[i] for m in nematic] for i in range(3))
@@ -385,23 +387,34 @@ def draw_fig4a(plt):
                         label=f"P, seed 2 ({FIG4A_SEED2_WINDOW[0]:g}–"
                               f"{FIG4A_SEED2_WINDOW[1]:g} s)")
         dump["P, seed 2"] = {"x": [x], "y": [y], "err": [err]}
-    points.legend(loc="best", fontsize=7)
     points.set_ylabel(f"over {FIG4A_WINDOW[0]:g}–{FIG4A_WINDOW[1]:g} s")
     points.set_xlim(0.8, 6.0)
     points.set_ylim(0.0, 1.0)
     points.set_title("P and the medium's S against σ", fontsize=10)
-    if os.path.isfile(os.path.join(ROOT, FIG4A_88MM)):
-        t = read_csv(FIG4A_88MM)
-        middle = 0.5 * (column(t, "t_from", FIG4A_88MM) + column(t, "t_to", FIG4A_88MM))
-        p, nematic = column(t, "P_polar", FIG4A_88MM), column(t, "S_medium", FIG4A_88MM)
-        series = fig.axes[1]
-        k = [sigma for sigma, _ in FIG4A].index(5.625)
-        series.plot(middle, p, color=f"C{k}", lw=1.2, ls="--", label="σ = 5.625, 88 mm box")
+    k_of = {sigma: k for k, (sigma, _) in enumerate(FIG4A)}
+    series = fig.axes[1]
+    for sigma, relative, window in FIG4A_88MM:
+        if not os.path.isfile(os.path.join(ROOT, relative)):
+            continue  # not run yet
+        t = read_csv(relative)
+        middle = 0.5 * (column(t, "t_from", relative) + column(t, "t_to", relative))
+        p, nematic = column(t, "P_polar", relative), column(t, "S_medium", relative)
+        series.plot(middle, p, color=f"C{k_of[sigma]}", lw=1.2, ls="--",
+                    label=f"σ = {sigma:g}, 88 mm box")
         series.plot(middle, nematic, color="0.3", lw=1.0, ls=":",
-                    label="S of the medium, σ = 5.625, 88 mm")
-        series.legend(loc="best", fontsize=7)
-        dump["P(t): σ = 5.625, 88 mm"] = {"x": middle.tolist(), "y": p.tolist()}
-        dump["S(t): σ = 5.625, 88 mm"] = {"x": middle.tolist(), "y": nematic.tolist()}
+                    label=f"S of the medium, σ = {sigma:g}, 88 mm")
+        dump[f"P(t): σ = {sigma:g}, 88 mm"] = {"x": middle.tolist(), "y": p.tolist()}
+        dump[f"S(t): σ = {sigma:g}, 88 mm"] = {"x": middle.tolist(), "y": nematic.tolist()}
+        _, y, err, _ = window_points([(sigma, relative)], window, FIG4A_BLOCK)[0]
+        points.errorbar([sigma], [y], yerr=[err], fmt="o", ms=7, mfc="none", capsize=3,
+                        color="C3", label="P, 88 mm box" if "P, 88 mm" not in dump else None)
+        points.annotate(f"{window[0]:g}–{window[1]:g} s", (sigma, y), xytext=(-8, 6),
+                        textcoords="offset points", ha="right", fontsize=7, color="C3")
+        dump.setdefault("P, 88 mm", {"x": [], "y": [], "err": []})
+        for key, value in (("x", sigma), ("y", y), ("err", err)):
+            dump["P, 88 mm"][key].append(value)
+    points.legend(loc="best", fontsize=7)
+    series.legend(loc="best", fontsize=7)
     draw_fig4a_bands(fig.axes[2], dump)
     return fig, dump
 
@@ -413,7 +426,8 @@ def draw_fig4a_bands(ax, dump):
     k_of = {sigma: k for k, (sigma, _) in enumerate(FIG4A)}
     runs = [(f"σ = {sigma:g}, 38 mm", relative, f"C{k_of[sigma]}", "-", 18)
             for sigma, relative in FIG4A]
-    runs.append(("σ = 5.625, 88 mm", FIG4A_88MM, f"C{k_of[5.625]}", "--", 98))
+    runs += [(f"σ = {sigma:g}, 88 mm", relative, f"C{k_of[sigma]}", "--", 98)
+             for sigma, relative, _ in FIG4A_88MM]
     floors = set()
     for label, relative, colour, style, rods in runs:
         if not os.path.isfile(os.path.join(ROOT, relative)):

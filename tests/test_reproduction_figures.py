@@ -141,22 +141,31 @@ if os.path.isfile(os.path.join(source, relative)):
     check_points("fig4a seed 2", list(zip(fig4a["P, seed 2"]["x"], fig4a["P, seed 2"]["y"])),
                  expected, 1)
 
-# Fig. 4a's 88 mm run at σ = 5.625, short of the window: its P(t) and S(t) as drawn are its table's.
-path = os.path.join(source, figures.FIG4A_88MM)
-if os.path.isfile(path):
+# Fig. 4a's 88 mm runs: each one's P(t) and S(t) as drawn are its table's, and its P point the
+# mean of its 5 s block means over its own window.
+expected_88mm = []
+for sigma, relative, window in figures.FIG4A_88MM:
+    path = os.path.join(source, relative)
+    if not os.path.isfile(path):
+        continue
     with open(path, encoding="utf-8") as f:
         rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
     col = {name: i for i, name in enumerate(rows[0])}
-    for drawn, name in (("P(t): σ = 5.625, 88 mm", "P_polar"),
-                        ("S(t): σ = 5.625, 88 mm", "S_medium")):
+    for drawn, name in ((f"P(t): σ = {sigma:g}, 88 mm", "P_polar"),
+                        (f"S(t): σ = {sigma:g}, 88 mm", "S_medium")):
         assert same(fig4a[drawn]["y"], [float(r[col[name]]) for r in rows[1:]]), drawn
-    print(f"checked the 88 mm run's P(t) and S(t) ({len(rows) - 1} bins) against its table")
+    expected_88mm.append((sigma, block_mean(path, "P_polar", *window, block=5.0)))
+    print(f"checked the 88 mm run at σ = {sigma:g}: P(t) and S(t) ({len(rows) - 1} bins)")
+if expected_88mm:
+    check_points("fig4a 88 mm", list(zip(fig4a["P, 88 mm"]["x"], fig4a["P, 88 mm"]["y"])),
+                 expected_88mm, 1)
 
 # Fig. 4a's third panel: every longitudinal band drawn is its table's column, read here with the
 # csv module, and a run whose table has the column is drawn.
 bands_checked = 0
 band_runs = [(f"σ = {sigma:g}, 38 mm", relative) for sigma, relative in figures.FIG4A]
-for label, relative in band_runs + [("σ = 5.625, 88 mm", figures.FIG4A_88MM)]:
+band_runs += [(f"σ = {sigma:g}, 88 mm", relative) for sigma, relative, _ in figures.FIG4A_88MM]
+for label, relative in band_runs:
     path = os.path.join(source, relative)
     if not os.path.isfile(path):
         continue
