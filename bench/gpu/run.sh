@@ -1,57 +1,104 @@
 #!/usr/bin/env bash
-# The GPU backend on a GPU machine, in one command: build, checks, timings.
+# The GPU backend on a GPU machine, in one command: checks and timings.
 #
 #   bench/gpu/run.sh              on the device machine, from the repository root
 #
-# The machine needs CUDA, CMake, ninja and a C++ compiler, nothing of Debian: the engine and the
-# builder build alone (RODSEA_ENGINE_ONLY). The tests need GoogleTest: fetch its .deb here first
-# (bench/gpu/fetch-debs.sh puts it in .gpu-debs/, which git ignores) and carry that folder to the
-# device (the device tool's `carry`); without it the tests are skipped, saying so.
+# Binaries: those of .gpu-prebuilt/ where it holds them (bench/gpu/prebuild.sh makes them on a
+# machine with nvcc and GoogleTest; carry the folder with the device tool's `carry`), else built
+# here from source: the machine needs CUDA, CMake, ninja and a C++ compiler, nothing of Debian
+# (RODSEA_ENGINE_ONLY); the tests then need GoogleTest's .deb, fetched by bench/gpu/fetch-debs.sh
+# into .gpu-debs/ (carried likewise), and are skipped without it.
+#
+# Each part has a time limit, so that one slow part cannot eat the lease:
+#   TESTS=0|1 (1)  VALIDATE=0|quick|full (quick)  BENCH_SECONDS (3)  BENCH_ONLY (all systems)
+#   PROFILE=0|1 (1: per-kernel times of a few steps of the paper's largest rod system, with ncu)
 #
 # Writes to $OUT (the device tool's folder) or bench/gpu/out: device.txt (nvidia-smi),
 # tests.txt (the physics tests on the GPU, the device's per-element physics), validate.md (the
-# GPU against the CPU on the validation tier's measurements, rodsea_gpu_validate), bench.csv
-# (steps/s and stage times, GPU beside all the CPU's cores), bench.log (determinism, the device).
+# GPU against the CPU on the validation tier's measurements), bench.csv (steps/s and stage times,
+# GPU beside all the CPU's cores), bench.log (determinism, the device), kernels.csv (ncu).
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 out=${OUT:-bench/gpu/out}
 mkdir -p "$out"
-: >"$out/tests.txt"
-build=build-gpu
 status=0
-
-prefix=()
-if compgen -G ".gpu-debs/*.deb" >/dev/null; then
-  mkdir -p .gpu-debs/root
-  for f in .gpu-debs/*.deb; do dpkg -x "$f" .gpu-debs/root; done
-  prefix=(-DCMAKE_PREFIX_PATH="$PWD/.gpu-debs/root/usr;$PWD/.gpu-debs/root/usr/lib/x86_64-linux-gnu/cmake")
-  tests=ON
-else
-  echo "no .gpu-debs/*.deb (GoogleTest): the tests are skipped, only the benchmark runs" | tee "$out/tests.txt"
-  tests=OFF
-fi
+started=$SECONDS
+stamp() { echo "--- $1 ($((SECONDS - started)) s)"; }
 
 (nvidia-smi || true) >"$out/device.txt" 2>&1
-cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRODSEA_ENGINE_ONLY=ON \
-  -DRODSEA_CUDA=ON -DRODSEA_BUILD_TESTS="$tests" -DRODSEA_BUILD_BENCHMARKS=ON "${prefix[@]}" \
-  >"$out/configure.log" 2>&1 || { cat "$out/configure.log"; exit 1; }
-targets=(rodsea_gpu_bench rodsea_gpu_validate)
-[ "$tests" = ON ] && targets+=(rodsea_engine_tests rodsea_cuda_tests)
-cmake --build "$build" --target "${targets[@]}" 2>&1 | tail -5
+head -12 "$out/device.txt"
 
-if [ "$tests" = ON ]; then
-  {
-    "$build/tests/rodsea_cuda_tests" || status=1
-    # Every physics test with an analytic answer on the GPU backend, and its equivalence with
-    # the CPU (the contact list to the bit, the trajectory, ensembles).
-    "$build/tests/rodsea_engine_tests" --gtest_filter='Backends/*/gpu' || status=1
-  } 2>&1 | tee -a "$out/tests.txt"
+if [ -x .gpu-prebuilt/rodsea_gpu_bench ]; then
+  bin=.gpu-prebuilt
+  export LD_LIBRARY_PATH="$PWD/.gpu-prebuilt${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+  echo "prebuilt binaries of $(tr '\n' ' ' <.gpu-prebuilt/commit)"
+  tests_built=$([ -x "$bin/rodsea_engine_tests" ] && echo ON || echo OFF)
+else
+  build=build-gpu
+  prefix=()
+  tests_built=OFF
+  if compgen -G ".gpu-debs/*.deb" >/dev/null; then
+    mkdir -p .gpu-debs/root
+    for f in .gpu-debs/*.deb; do dpkg -x "$f" .gpu-debs/root; done
+    prefix=(-DCMAKE_PREFIX_PATH="$PWD/.gpu-debs/root/usr;$PWD/.gpu-debs/root/usr/lib/x86_64-linux-gnu/cmake")
+    tests_built=ON
+  fi
+  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRODSEA_ENGINE_ONLY=ON \
+    -DRODSEA_CUDA=ON -DRODSEA_BUILD_TESTS="$tests_built" -DRODSEA_BUILD_BENCHMARKS=ON "${prefix[@]}" \
+    >"$out/configure.log" 2>&1 || { cat "$out/configure.log"; exit 1; }
+  targets=(rodsea_gpu_bench rodsea_gpu_validate)
+  [ "$tests_built" = ON ] && targets+=(rodsea_engine_tests rodsea_cuda_tests)
+  cmake --build "$build" --target "${targets[@]}" 2>&1 | tail -3
+  mkdir -p "$build/all"
+  for t in bench/gpu/rodsea_gpu_bench bench/gpu/rodsea_gpu_validate tests/rodsea_engine_tests \
+    tests/rodsea_cuda_tests; do [ -x "$build/$t" ] && cp "$build/$t" "$build/all/"; done
+  bin=$build/all
+  stamp built
 fi
 
-"$build/bench/gpu/rodsea_gpu_validate" >"$out/validate.md" 2>&1 || status=1
-cat "$out/validate.md"
+if [ "${TESTS:-1}" = 1 ] && [ "$tests_built" = ON ]; then
+  stamp tests
+  {
+    timeout 60 "$bin/rodsea_cuda_tests" || status=1
+    # Every physics test with an analytic answer on the GPU backend, and its equivalence with
+    # the CPU (the contact list to the bit, the trajectory, ensembles).
+    timeout 180 "$bin/rodsea_engine_tests" --gtest_filter='Backends/*/gpu:GpuBackend.*' || status=1
+  } >"$out/tests.txt" 2>&1
+  grep -E "^\[  (PASSED|FAILED) |^\[  FAILED  \]|measured|Timeout|rror" "$out/tests.txt" | head -40
+elif [ "${TESTS:-1}" = 1 ]; then
+  echo "no GoogleTest (.gpu-prebuilt or .gpu-debs): the tests are skipped" | tee "$out/tests.txt"
+fi
 
-"$build/bench/gpu/rodsea_gpu_bench" --seconds "${BENCH_SECONDS:-5}" \
+case "${VALIDATE:-quick}" in
+  0) ;;
+  quick | full)
+    stamp validate
+    flag=$([ "${VALIDATE:-quick}" = quick ] && echo --quick)
+    timeout 240 "$bin/rodsea_gpu_validate" $flag >"$out/validate.md" 2>&1 || status=1
+    cat "$out/validate.md"
+    ;;
+esac
+
+stamp bench
+only=()
+[ -n "${BENCH_ONLY:-}" ] && only=(--only "$BENCH_ONLY")
+timeout 300 "$bin/rodsea_gpu_bench" --seconds "${BENCH_SECONDS:-3}" "${only[@]}" \
   >"$out/bench.csv" 2>"$out/bench.log" || status=1
 cat "$out/bench.csv" "$out/bench.log"
+
+if [ "${PROFILE:-1}" = 1 ]; then
+  stamp profile
+  ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+  if [ -n "$ncu" ]; then
+    # A few steps of the largest rod system after its warm-up: each kernel's duration.
+    timeout 120 "$ncu" --clock-control none --metrics gpu__time_duration.sum --csv \
+      --launch-skip "${PROFILE_SKIP:-12000}" --launch-count "${PROFILE_COUNT:-200}" \
+      "$bin/rodsea_gpu_bench" --only paper-rods --skip-cpu --seconds 0.5 \
+      >"$out/kernels.csv" 2>"$out/ncu.log" || echo "ncu failed: $(tail -3 "$out/ncu.log")"
+    wc -l "$out/kernels.csv"
+  else
+    echo "no ncu on this machine"
+  fi
+fi
+stamp done
 exit $status
