@@ -17,7 +17,7 @@
 #include "each_backend.hpp"
 #include "rodsea/engine/ensemble.hpp"
 #include "rodsea/engine/parallel/host_executor.hpp"
-#include "rodsea/engine/parallel/kernels.hpp"
+#include "rodsea/engine/parallel/island_kernels.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/engine/state_check.hpp"
 #include "rodsea/error.hpp"
@@ -342,7 +342,7 @@ TEST(CpuEnsemble, ABlowUpSideBySideNamesItsSystem) {
 
 // The islands on a random contact graph much denser than a monolayer's, hooked by two threads:
 // every contact is labelled with the smallest body of its connected component (found here by a
-// plain search), whatever order the hooks ran in.
+// plain search), whatever order the hooks ran in, and gathered into its island's place.
 TEST(Islands, EveryContactIsLabelledWithTheSmallestBodyOfItsComponent) {
     using Exec = parallel::HostExecutor;
     Exec exec(2);
@@ -365,17 +365,27 @@ TEST(Islands, EveryContactIsLabelledWithTheSmallestBodyOfItsComponent) {
     }
     const auto count = static_cast<std::uint32_t>(list.size());
     Exec::Array<Contact> contacts;
-    Exec::Array<std::uint32_t> parent, key, order;
+    Exec::Array<std::uint32_t> parent, island_count, island_start, key, rank, order;
     exec.upload(contacts, list);
-    parent.resize(bodies);
-    key.resize(count);
-    order.resize(count);
-    exec.launch(bodies, parallel::InitIslands{parent.data()});
+    std::vector<std::uint32_t> itself(bodies);
+    std::iota(itself.begin(), itself.end(), 0u);
+    exec.upload(parent, itself);  // free flight's start: every body its own island
+    island_count.resize(bodies);
+    island_start.resize(bodies);
+    exec.fill(island_count, bodies, 0u);
+    for (auto* a : {&key, &rank, &order})
+        a->resize(count);
     exec.launch(body_contacts, parallel::HookIslands{contacts.data(), parent.data()});
-    exec.launch(count, parallel::KeyContactsByIsland{contacts.data(), parent.data(), key.data(),
-                                                     order.data()});
-    std::vector<std::uint32_t> label;
+    exec.launch(count, parallel::KeyContactsByIsland{contacts.data(), parent.data(),
+                                                     island_count.data(), key.data(), rank.data()});
+    exec.exclusive_scan(island_count, island_start, bodies);
+    exec.launch(count, parallel::GatherIslands{key.data(), rank.data(), island_start.data(),
+                                               order.data()});
+    std::vector<std::uint32_t> label, counted, island_at, gathered;
     exec.download(key, count, label);
+    exec.download(island_count, bodies, counted);
+    exec.download(island_start, bodies, island_at);
+    exec.download(order, count, gathered);
 
     // The components by a breadth-first search over the body–body contacts.
     std::vector<std::vector<std::uint32_t>> around(bodies);
@@ -401,6 +411,14 @@ TEST(Islands, EveryContactIsLabelledWithTheSmallestBodyOfItsComponent) {
         if (label[k] != list[k].a) ++joined;
     }
     EXPECT_GT(joined, count / 2);  // the graph does join most contacts into larger islands
+    // Each root's place holds exactly its island's contacts, every contact once.
+    std::vector<int> seen(count, 0);
+    for (std::uint32_t root = 0; root < bodies; ++root)
+        for (std::uint32_t i = island_at[root]; i < island_at[root] + counted[root]; ++i) {
+            ASSERT_EQ(label[gathered[i]], root);
+            ++seen[gathered[i]];
+        }
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<std::ptrdiff_t>(count));
 }
 
 // Asking for the GPU where this build or machine has none is refused before any work, naming

@@ -77,21 +77,27 @@ std::unique_ptr<parallel::EnsembleStepper> make_ensemble_stepper(
     std::vector<parallel::EnsembleMember> members;
     for (const auto& [species, bodies] : systems)
         members.push_back({species, bodies, initial_spheres(*species, bodies)});
+    std::unique_ptr<parallel::EnsembleStepper> stepper;
     switch (options.backend) {
         case BackendKind::gpu_on_host:
-            return std::make_unique<parallel::ParallelEnsemble<parallel::HostExecutor>>(
+            stepper = std::make_unique<parallel::ParallelEnsemble<parallel::HostExecutor>>(
                 std::move(members), kGrossOverlapFraction, parallel::HostExecutor(options.threads));
+            break;
         case BackendKind::gpu: {
             const GpuAvailability gpu = gpu_availability();
             if (!gpu.usable)
                 throw InvalidParameter("backend", "\"gpu\"", "\"cpu\" here", gpu.description);
 #if defined(RODSEA_HAVE_CUDA)
-            return cuda::make_gpu_ensemble(std::move(members), kGrossOverlapFraction);
+            stepper = cuda::make_gpu_ensemble(std::move(members), kGrossOverlapFraction);
 #endif
             break;
         }
         case BackendKind::cpu:
             break;
+    }
+    if (stepper) {
+        stepper->set_stage_timing(options.time_stages);
+        return stepper;
     }
     throw InvalidParameter("backend", to_string(options.backend), "\"gpu\"",
                            "the data-parallel step runs the GPU backend's algorithm");

@@ -45,6 +45,7 @@ Ensemble::Ensemble(std::vector<Simulation> systems, BackendOptions options) : op
     }
     last_.resize(systems.size());
     totals_.resize(systems.size());
+    last_run_.resize(systems.size());
     blown_.resize(systems.size());
     if (options_.backend == BackendKind::cpu) {
         // Each on the ensemble's options (threads, blow-up stop): resumed, so to the last bit.
@@ -91,6 +92,7 @@ void Ensemble::retire(const std::vector<std::size_t>& systems) {
         bounds_[next] = bounds_[m];
         last_[next] = last_[m];
         totals_[next] = totals_[m];
+        last_run_[next] = last_run_[m];
         blown_[next] = std::move(blown_[m]);
         if (!cpu_systems_.empty()) cpu_systems_[next] = std::move(cpu_systems_[m]);
         if (!step_cost_.empty()) step_cost_[next] = step_cost_[m];
@@ -102,6 +104,7 @@ void Ensemble::retire(const std::vector<std::size_t>& systems) {
     bounds_.resize(next);
     last_.resize(next);
     totals_.resize(next);
+    last_run_.resize(next);
     blown_.resize(next);
     if (!step_cost_.empty()) step_cost_.resize(next);
     if (!cpu_systems_.empty()) {
@@ -134,27 +137,49 @@ const char* Ensemble::backend_name() const {
 }
 
 void Ensemble::step() {
+    run(1);
+}
+
+void Ensemble::run(std::uint64_t steps) {
+    for (StepTally& t : last_run_)
+        t = {};
     if (size() == 0) return;
-    if (!cpu_systems_.empty()) {
-        step_cpu_systems();
+    if (cpu_systems_.empty()) {
+        run_on_stepper(steps);
         return;
     }
+    for (std::uint64_t i = 0; i < steps; ++i)
+        step_cpu_systems();
+}
+
+void Ensemble::run_on_stepper(std::uint64_t steps) {
     std::vector<StepContext> contexts;
-    for (std::size_t m = 0; m < size(); ++m)
-        contexts.push_back(step_context(params_[m], step_count_[m] + 1));
-    stepper_->step(contexts, last_, profile_);
-    for (std::size_t m = 0; m < size(); ++m) {
-        ++step_count_[m];
-        totals_[m].add(last_[m]);
+    std::vector<StepsDone> done;
+    while (steps > 0) {
+        const std::uint64_t length = std::min(steps, Simulation::kStepsPerRun);
+        contexts.clear();
+        for (std::uint64_t k = 1; k <= length; ++k)
+            for (std::size_t m = 0; m < size(); ++m)
+                contexts.push_back(step_context(params_[m], step_count_[m] + k));
+        stepper_->run(contexts, length, options_.stop_on_blow_up ? &bounds_ : nullptr, done,
+                      profile_);
+        std::optional<std::size_t> first_blown;
+        for (std::size_t m = 0; m < size(); ++m) {
+            step_count_[m] += done[m].steps;
+            last_[m] = done[m].last;
+            totals_[m].add(done[m].tally);
+            last_run_[m].add(done[m].tally);
+            blown_[m].reset();
+            if (done[m].blew_up) {
+                blown_[m] = detect_blow_up(bounds_[m], last_[m]);
+                if (!first_blown) first_blown = m;
+            }
+        }
+        if (first_blown)
+            throw BlowUpError(naming_system(*first_blown, *blown_[*first_blown]),
+                              step_count_[*first_blown], time(*first_blown));
+        steps -= length;
     }
-    std::optional<std::size_t> first_blown;
-    for (std::size_t m = 0; m < size(); ++m) {
-        check_blow_up(m);
-        if (blown_[m] && !first_blown) first_blown = m;
-    }
-    if (first_blown)
-        throw BlowUpError(naming_system(*first_blown, *blown_[*first_blown]),
-                          step_count_[*first_blown], time(*first_blown));
 }
 
 void Ensemble::step_cpu_systems() {
@@ -182,12 +207,14 @@ void Ensemble::step_cpu_systems() {
         const Simulation& s = cpu_systems_[m];
         step_count_[m] = s.step_count();
         last_[m] = s.last_step();
+        last_run_[m].add(last_[m]);
         totals_[m] = s.totals();
         profile_.free_flight += s.profile().free_flight;
         profile_.sphere_update += s.profile().sphere_update;
         profile_.contact_search += s.profile().contact_search;
         profile_.resolution += s.profile().resolution;
         profile_.noise += s.profile().noise;
+        profile_.whole_steps += s.profile().whole_steps;
     }
     if (shares_.size() > 1 && ++steps_since_look_ >= kStepsBetweenLooks) reshare_by_measured_cost();
     for (const std::exception_ptr& e : failed)  // every system has stepped and been counted
@@ -233,16 +260,6 @@ void Ensemble::reshare_by_measured_cost() {
     steps_since_look_ = 0;
     if (std::optional<WorkShares> dealt = better_deal(shares_, step_cost_, kWorthMoving))
         shares_ = std::move(*dealt);
-}
-
-void Ensemble::check_blow_up(std::size_t m) {
-    blown_[m].reset();
-    if (options_.stop_on_blow_up) blown_[m] = detect_blow_up(bounds_[m], last_[m]);
-}
-
-void Ensemble::run(std::uint64_t steps) {
-    for (std::uint64_t i = 0; i < steps; ++i)
-        step();
 }
 
 const BodyState& Ensemble::bodies(std::size_t m) const {

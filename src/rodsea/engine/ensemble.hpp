@@ -49,6 +49,10 @@ class Ensemble {
     // in which one crossed a blow-up bound, as Simulation::step does; every system has stepped,
     // and blow_up(m) says which ones crossed (the others go on as if nothing had happened).
     void step();
+    // Every system by `steps` steps, the same bits as as many calls of step(). On the CPU a
+    // blow-up stops every system after that step; a device takes the steps in runs of up to
+    // Simulation::kStepsPerRun and stops a system that blows up after that step while the
+    // others finish the run (each one's step_count() says where it is), then throws.
     void run(std::uint64_t steps);
     // Why system m blew up in the last step, if it did; its state is then meaningless.
     const std::optional<BlowUp>& blow_up(std::size_t m) const { return blown_[m]; }
@@ -66,13 +70,15 @@ class Ensemble {
     const BodyState& bodies(std::size_t m) const;
     const StepStatistics& last_step(std::size_t m) const { return last_[m]; }
     const RunTotals& totals(std::size_t m) const { return totals_[m]; }
+    // The steps of system m in the last call of step() or run(), together.
+    const StepTally& last_run(std::size_t m) const { return last_run_[m]; }
     std::uint64_t state_hash(std::size_t m) const;
     // The time of each stage over every system together.
     const StageProfile& profile() const { return profile_; }
 
   private:
-    void check_blow_up(std::size_t m);
     void step_cpu_systems();
+    void run_on_stepper(std::uint64_t steps);
     int systems_side_by_side() const;
     int threads_per_system() const;
     void share_threads();
@@ -85,6 +91,7 @@ class Ensemble {
     std::vector<BlowUpBounds> bounds_;
     std::vector<StepStatistics> last_;
     std::vector<RunTotals> totals_;
+    std::vector<StepTally> last_run_;
     std::vector<std::optional<BlowUp>> blown_;
     StageProfile profile_;
     // The CPU steps each Simulation; the data-parallel backends one stepper for all.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <string>
 
 #include "rodsea/engine/backend_factory.hpp"
@@ -92,17 +93,27 @@ StepContext step_context(const EngineParameters& params, std::uint64_t step) {
 }
 
 void Simulation::step() {
-    const StepContext context = step_context(params_, step_count_ + 1);
-    backend_->step(context, last_, profile_);
-    step_count_ = context.step;
-    totals_.add(last_);
-    if (!options_.stop_on_blow_up) return;
-    if (auto blown = detect_blow_up(bounds_, last_)) throw BlowUpError(*blown, step_count_, time());
+    run(1);
 }
 
 void Simulation::run(std::uint64_t steps) {
-    for (std::uint64_t i = 0; i < steps; ++i)
-        step();
+    std::vector<StepContext> contexts;
+    while (steps > 0) {
+        const std::uint64_t length = std::min(steps, kStepsPerRun);
+        contexts.clear();
+        for (std::uint64_t k = 1; k <= length; ++k)
+            contexts.push_back(step_context(params_, step_count_ + k));
+        const StepsDone done = backend_->run_steps(
+            contexts, options_.stop_on_blow_up ? &bounds_ : nullptr, profile_);
+        step_count_ += done.steps;
+        steps -= done.steps;
+        last_ = done.last;
+        totals_.add(done.tally);
+        if (done.blew_up) {
+            const std::optional<BlowUp> blown = detect_blow_up(bounds_, last_);
+            throw BlowUpError(*blown, step_count_, time());
+        }
+    }
 }
 
 double Simulation::kinetic_energy() const {
@@ -138,14 +149,6 @@ Vec3 Simulation::angular_momentum(const Vec3& about) const {
              shape.mass * cross(state.position[b] - about, state.velocity[b]);
     }
     return l;
-}
-
-void RunTotals::add(const StepStatistics& step) {
-    impulses += step.impulses;
-    unresolved += step.unresolved;
-    noise_kicks += step.noise_kicks;
-    max_sweeps = std::max(max_sweeps, step.sweeps);
-    max_overlap_fraction = std::max(max_overlap_fraction, step.max_overlap_fraction);
 }
 
 std::uint64_t Simulation::state_hash() const {

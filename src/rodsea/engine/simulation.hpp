@@ -25,16 +25,8 @@ namespace rodsea {
 // The context of step number `step` (counted from 1): the plates where that step ends.
 StepContext step_context(const EngineParameters& params, std::uint64_t step);
 
-// Accumulated over every step since construction.
-struct RunTotals {
-    std::uint64_t impulses = 0;
-    std::uint64_t unresolved = 0;
-    std::uint64_t noise_kicks = 0;
-    int max_sweeps = 0;
-    double max_overlap_fraction = 0.0;
-
-    void add(const StepStatistics& step);
-};
+// Every step since construction.
+using RunTotals = StepTally;
 
 // FNV-1a over the step count and every bit of the state: equal hashes, equal trajectories.
 std::uint64_t state_hash(const BodyState& state, std::uint64_t step_count);
@@ -62,7 +54,10 @@ class Simulation {
     // the time step cannot resolve, a gross overlap, or too many unresolved contacts. The state
     // is then meaningless; keep a copy of the last one you trust.
     void step();
+    // `steps` steps; a device takes them in runs of up to kStepsPerRun, reading its statistics
+    // once per run. The same bits as as many calls of step().
     void run(std::uint64_t steps);
+    static constexpr std::uint64_t kStepsPerRun = 1024;
 
     const BackendOptions& options() const { return options_; }
     // Between steps: the trajectory is the same bit for bit on any number of threads, so a run

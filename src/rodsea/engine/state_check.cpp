@@ -169,6 +169,7 @@ double planar_speed_bound(const EngineParameters& params) {
 BlowUpBounds BlowUpBounds::of(const EngineParameters& params, std::size_t bodies) {
     BlowUpBounds b;
     b.planar_speed = planar_speed_bound(params);
+    b.overlap_fraction = kGrossOverlapFraction;
     b.unresolved = std::max<std::size_t>(10, bodies / 100);
     return b;
 }

@@ -60,15 +60,6 @@ std::optional<StateProblem> find_gross_overlap(const EngineParameters& params,
 // sphere radius per step. ~80 m/s at the defaults, 1500× the plates' peak speed.
 double planar_speed_bound(const EngineParameters& params);
 
-// What one step may show before the run counts as blown up.
-struct BlowUpBounds {
-    double planar_speed = 0.0;                        // mm/s, planar_speed_bound()
-    double overlap_fraction = kGrossOverlapFraction;  // of the smaller radius
-    std::size_t unresolved = 0;  // 1 % of the bodies, at least 10 (a healthy run leaves none)
-
-    static BlowUpBounds of(const EngineParameters& params, std::size_t bodies);
-};
-
 // A step that blew up: what crossed its bound, by how much, and what to change.
 struct BlowUp {
     std::string what;  // "the largest in-plane speed", "the largest overlap", ...
@@ -77,7 +68,8 @@ struct BlowUp {
     std::string advice;
 };
 
-// Checks one step's statistics against the bounds (values that are not finite cross them).
+// Checks one step's statistics against the bounds (values that are not finite cross them), as
+// BlowUpBounds::crossed_by does, and says which crossed.
 // O(1): the statistics come from the step itself.
 std::optional<BlowUp> detect_blow_up(const BlowUpBounds& bounds, const StepStatistics& step);
 

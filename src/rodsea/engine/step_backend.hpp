@@ -16,8 +16,11 @@
 #include "rodsea/engine/body_state.hpp"
 #include "rodsea/engine/physics/contact.hpp"
 #include "rodsea/engine/physics/step_context.hpp"
+#include "rodsea/math/hostdevice.hpp"
 
 namespace rodsea {
+
+struct EngineParameters;
 
 struct StepStatistics {
     std::size_t body_contacts = 0;
@@ -34,6 +37,57 @@ struct StepStatistics {
     double max_planar_speed = 0.0;      // mm/s, a bound on every sphere's in-plane speed
 };
 
+// Several steps together (a run of them, or every step since the start): the counts summed, the
+// extremes at their largest.
+struct StepTally {
+    std::uint64_t steps = 0;
+    std::uint64_t impulses = 0;
+    std::uint64_t body_collisions = 0;
+    std::uint64_t plate_collisions = 0;
+    std::uint64_t unresolved = 0;
+    std::uint64_t noise_kicks = 0;
+    int max_sweeps = 0;
+    double max_overlap_fraction = 0.0;
+
+    // Written out rather than with std::max: a device runs it too.
+    RODSEA_HD void add(const StepStatistics& step) {
+        ++steps;
+        impulses += step.impulses;
+        body_collisions += step.body_collisions;
+        plate_collisions += step.plate_collisions;
+        unresolved += step.unresolved;
+        noise_kicks += step.noise_kicks;
+        if (step.sweeps > max_sweeps) max_sweeps = step.sweeps;
+        if (step.max_overlap_fraction > max_overlap_fraction)
+            max_overlap_fraction = step.max_overlap_fraction;
+    }
+    void add(const StepTally& other);
+};
+
+// What one step may show before the run counts as blown up (state_check.hpp says why these and
+// describes a crossing; BlowUpBounds::of makes them). Here so that a device can test them.
+struct BlowUpBounds {
+    double planar_speed = 0.0;    // mm/s, planar_speed_bound()
+    double overlap_fraction = 0;  // of the smaller radius (kGrossOverlapFraction)
+    std::size_t unresolved = 0;   // 1 % of the bodies, at least 10 (a healthy run leaves none)
+
+    static BlowUpBounds of(const EngineParameters& params, std::size_t bodies);
+
+    // Values that are not finite cross them.
+    RODSEA_HD bool crossed_by(const StepStatistics& step) const {
+        return !(step.max_planar_speed <= planar_speed) ||
+               !(step.max_overlap_fraction <= overlap_fraction) || step.unresolved > unresolved;
+    }
+};
+
+// What a run of steps came to.
+struct StepsDone {
+    std::uint64_t steps = 0;  // taken: all asked for, or up to and including one that blew up
+    bool blew_up = false;     // the last step taken crossed the bounds
+    StepStatistics last;      // of the last step taken
+    StepTally tally;          // of every step taken
+};
+
 // Wall-clock seconds spent in each stage.
 struct StageProfile {
     double free_flight = 0.0;
@@ -41,8 +95,11 @@ struct StageProfile {
     double contact_search = 0.0;
     double resolution = 0.0;  // impulses and the projection out of the plates
     double noise = 0.0;
+    // Steps timed as a whole: a device's runs of steps, whose stages are queued together and
+    // overlap (BackendOptions::time_stages times them one by one, more slowly).
+    double whole_steps = 0.0;
     double total() const {
-        return free_flight + sphere_update + contact_search + resolution + noise;
+        return free_flight + sphere_update + contact_search + resolution + noise + whole_steps;
     }
 };
 
@@ -65,6 +122,9 @@ struct BackendOptions {
     // (state_check.hpp). Off only for tests that start from deliberately impossible states.
     bool stop_on_blow_up = true;
     BackendKind backend = BackendKind::cpu;
+    // The data-parallel backends wait for each stage to end so as to time it (StageProfile), and
+    // queue no run of steps as one graph: slower, for profiles. The CPU always times its stages.
+    bool time_stages = false;
 };
 
 // Every sphere of every body in body order: body b owns spheres first_of[b] .. first_of[b+1]−1,
@@ -85,6 +145,12 @@ class StepBackend {
 
     // Moves the state by one step. Overwrites `stats`, adds each stage's time to `profile`.
     virtual void step(const StepContext& context, StepStatistics& stats, StageProfile& profile) = 0;
+
+    // One step for each context, in order, stopping after a step that crosses `bounds` (none:
+    // never). The CPU steps them one by one; a device queues them together and reads its
+    // statistics once at the end.
+    virtual StepsDone run_steps(std::span<const StepContext> contexts, const BlowUpBounds* bounds,
+                                StageProfile& profile);
 
     // The state on the host. A backend whose state lives elsewhere copies it here first.
     virtual const BodyState& bodies() const = 0;

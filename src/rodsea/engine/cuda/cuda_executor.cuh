@@ -1,17 +1,16 @@
 #pragma once
 // Runs the data-parallel step's kernels on a CUDA device: HostExecutor's interface
 // (engine/parallel/host_executor.hpp) over device memory, one kernel launch per launch(), CUB's
-// radix sort, scan and reductions (deterministic: no floating-point atomics). Every call is
-// ordered on the default stream; the few values the host needs (sums, flags, the colour ranges)
-// are copied back synchronously.
+// scans (deterministic: no floating-point atomics). Everything is queued on the executor's own
+// stream, which a run of steps can be recorded from as a CUDA graph and replayed; the host waits
+// only where it reads memory back (download, read).
 #include <cuda_runtime.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <cub/device/device_radix_sort.cuh>
-#include <cub/device/device_reduce.cuh>
+#include <cub/block/block_scan.cuh>
 #include <cub/device/device_scan.cuh>
-#include <cub/device/device_segmented_reduce.cuh>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -31,10 +30,50 @@ __global__ void run_kernel(Kernel kernel, std::uint32_t n) {
     if (i < n) kernel(i);
 }
 
+// kernel(i) for i < *count, a number an earlier kernel wrote: a grid sized for the most there
+// can be, each thread taking every stride-th element.
+template <class Kernel>
+__global__ void run_counted_kernel(Kernel kernel, const std::uint32_t* count) {
+    const std::uint32_t n = *count;
+    const std::uint32_t stride = gridDim.x * blockDim.x;
+    for (std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x; i < n; i += stride)
+        kernel(i);
+}
+
 template <class T>
 __global__ void fill_kernel(T* data, std::uint32_t n, T value) {
     const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i < n) data[i] = value;
+}
+
+// One block scans the cells' counts when the neighbour list is rebuilt (every few hundred
+// steps): a block-wide scan per tile of kScanThreads × kScanItems counts, carried from tile to
+// tile. When it is not rebuilt the block reads the flag and ends.
+constexpr int kScanThreads = 1024;
+constexpr int kScanItems = 4;
+__global__ void __launch_bounds__(kScanThreads)
+    flagged_scan_kernel(const std::uint32_t* flag, std::uint32_t* count, std::uint32_t* start,
+                        std::uint32_t n) {
+    if (*flag == 0) return;
+    using Scan = cub::BlockScan<std::uint32_t, kScanThreads>;
+    __shared__ typename Scan::TempStorage temp;
+    std::uint32_t carried = 0;
+    for (std::uint32_t tile = 0; tile < n; tile += kScanThreads * kScanItems) {
+        std::uint32_t items[kScanItems];
+        const std::uint32_t first = tile + threadIdx.x * kScanItems;
+        for (int j = 0; j < kScanItems; ++j)
+            items[j] = first + j < n ? count[first + j] : 0u;
+        std::uint32_t tile_total = 0;
+        Scan(temp).ExclusiveSum(items, items, tile_total);
+        __syncthreads();  // the temporary storage is reused by the next tile
+        for (int j = 0; j < kScanItems; ++j)
+            if (first + j < n) {
+                start[first + j] = carried + items[j];
+                count[first + j] = 0;
+            }
+        carried += tile_total;
+    }
+    if (threadIdx.x == 0) start[n] = carried;
 }
 
 class CudaExecutor {
@@ -78,18 +117,43 @@ class CudaExecutor {
         std::size_t size_ = 0, capacity_ = 0;
     };
 
-    CudaExecutor() = default;
+    // A recorded run of launches (a CUDA graph, instantiated), replayed as one launch.
+    class Graph {
+      public:
+        Graph() = default;
+        Graph(const Graph&) = delete;
+        Graph& operator=(const Graph&) = delete;
+        Graph(Graph&& o) noexcept : exec_(std::exchange(o.exec_, nullptr)) {}
+        Graph& operator=(Graph&& o) noexcept {
+            std::swap(exec_, o.exec_);
+            return *this;
+        }
+        ~Graph() {
+            if (exec_ != nullptr) cudaGraphExecDestroy(exec_);
+        }
+
+      private:
+        friend class CudaExecutor;
+        cudaGraphExec_t exec_ = nullptr;
+    };
+
+    CudaExecutor() {
+        check(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking), "stream");
+        int device = 0;
+        check(cudaGetDevice(&device), "device");
+        check(cudaDeviceGetAttribute(&multiprocessors_, cudaDevAttrMultiProcessorCount, device),
+              "device attributes");
+    }
     CudaExecutor(CudaExecutor&& o) noexcept
-        : scratch_(std::exchange(o.scratch_, nullptr)),
-          scratch_bytes_(std::exchange(o.scratch_bytes_, 0)),
-          sorted_keys_(std::move(o.sorted_keys_)),
-          sorted_values_(std::move(o.sorted_values_)),
-          segment_offsets_(std::move(o.segment_offsets_)),
-          uploaded_offsets_(std::move(o.uploaded_offsets_)),
-          segment_max_(std::move(o.segment_max_)),
-          segment_sum_(std::move(o.segment_sum_)) {}
+        : stream_(std::exchange(o.stream_, nullptr)),
+          multiprocessors_(o.multiprocessors_),
+          scratch_(std::exchange(o.scratch_, nullptr)),
+          scratch_bytes_(std::exchange(o.scratch_bytes_, 0)) {}
     CudaExecutor& operator=(CudaExecutor&&) = delete;
-    ~CudaExecutor() { cudaFree(scratch_); }
+    ~CudaExecutor() {
+        cudaFree(scratch_);
+        if (stream_ != nullptr) cudaStreamDestroy(stream_);
+    }
 
     void set_threads(int) {}  // the device's threads are not the host's
 
@@ -97,86 +161,97 @@ class CudaExecutor {
     void launch(std::size_t n, const Kernel& kernel) const {
         if (n == 0) return;
         const auto count = static_cast<std::uint32_t>(n);
-        run_kernel<<<(count + kBlock - 1) / kBlock, kBlock>>>(kernel, count);
+        run_kernel<<<(count + kBlock - 1) / kBlock, kBlock, 0, stream_>>>(kernel, count);
+        check(cudaGetLastError(), "kernel launch");
+    }
+    template <class Kernel>
+    void launch_counted(std::size_t max_n, const std::uint32_t* count,
+                        const Kernel& kernel) const {
+        if (max_n == 0) return;
+        // Enough blocks to fill the device several times over; more would mostly find no work.
+        const std::size_t blocks =
+            std::min<std::size_t>((max_n + kBlock - 1) / kBlock, 4 * std::size_t(multiprocessors_));
+        run_counted_kernel<<<static_cast<unsigned>(blocks), kBlock, 0, stream_>>>(kernel, count);
         check(cudaGetLastError(), "kernel launch");
     }
 
-    void finish() const { check(cudaDeviceSynchronize(), "kernel"); }
+    void finish() const { check(cudaStreamSynchronize(stream_), "kernel"); }
 
     template <class T>
     void fill(Array<T>& a, std::size_t n, const T& value) const {
         if (n == 0) return;
         const auto count = static_cast<std::uint32_t>(n);
-        fill_kernel<<<(count + kBlock - 1) / kBlock, kBlock>>>(a.data(), count, value);
+        fill_kernel<<<(count + kBlock - 1) / kBlock, kBlock, 0, stream_>>>(a.data(), count, value);
         check(cudaGetLastError(), "fill");
     }
-
-    std::uint64_t exclusive_scan(const Array<std::uint32_t>& in, Array<std::uint32_t>& out,
-                                 std::size_t n) {
-        if (n == 0) return 0;
-        std::size_t bytes = 0;
-        check(cub::DeviceScan::ExclusiveSum(nullptr, bytes, in.data(), out.data(),
-                                            static_cast<int>(n)),
-              "scan");
-        check(cub::DeviceScan::ExclusiveSum(scratch(bytes), bytes, in.data(), out.data(),
-                                            static_cast<int>(n)),
-              "scan");
-        return std::uint64_t{read(out, n - 1)} + read(in, n - 1);
+    template <class T>
+    void copy(Array<T>& to, const Array<T>& from, std::size_t n) const {
+        if (n == 0) return;
+        check(cudaMemcpyAsync(to.data(), from.data(), n * sizeof(T), cudaMemcpyDeviceToDevice,
+                              stream_),
+              "copy");
     }
 
-    // LSD radix sort: stable, so equal keys keep their order.
-    void sort_by_key(Array<std::uint32_t>& keys, Array<std::uint32_t>& values, std::size_t n,
-                     int bits) {
+    // Its scratch is sized by the first call with a given n: a recorded graph's calls allocate
+    // nothing (ParallelEnsemble takes a step before it records one).
+    template <class T>
+    void exclusive_scan(const Array<T>& in, Array<T>& out, std::size_t n) {
         if (n == 0) return;
-        sorted_keys_.resize(n);
-        sorted_values_.resize(n);
         std::size_t bytes = 0;
         const auto count = static_cast<int>(n);
-        check(cub::DeviceRadixSort::SortPairs(nullptr, bytes, keys.data(), sorted_keys_.data(),
-                                              values.data(), sorted_values_.data(), count, 0, bits),
-              "sort");
-        check(
-            cub::DeviceRadixSort::SortPairs(scratch(bytes), bytes, keys.data(), sorted_keys_.data(),
-                                            values.data(), sorted_values_.data(), count, 0, bits),
-            "sort");
-        check(cudaMemcpy(keys.data(), sorted_keys_.data(), n * sizeof(std::uint32_t),
-                         cudaMemcpyDeviceToDevice),
-              "sort copy");
-        check(cudaMemcpy(values.data(), sorted_values_.data(), n * sizeof(std::uint32_t),
-                         cudaMemcpyDeviceToDevice),
-              "sort copy");
+        check(cub::DeviceScan::ExclusiveSum(nullptr, bytes, in.data(), out.data(), count, stream_),
+              "scan");
+        check(cub::DeviceScan::ExclusiveSum(scratch(bytes), bytes, in.data(), out.data(), count,
+                                            stream_),
+              "scan");
+    }
+    void flagged_scan_and_clear(const std::uint32_t* flag, Array<std::uint32_t>& count,
+                                Array<std::uint32_t>& start, std::size_t n) const {
+        flagged_scan_kernel<<<1, kScanThreads, 0, stream_>>>(flag, count.data(), start.data(),
+                                                             static_cast<std::uint32_t>(n));
+        check(cudaGetLastError(), "scan");
     }
 
-    // out[s] = the largest of a[offsets[s] .. offsets[s + 1]), 0 for none (the values are >= 0).
-    void segmented_max(const Array<double>& a, const std::vector<std::uint32_t>& offsets,
-                       std::vector<double>& out) {
-        segmented(a, offsets, out, segment_max_, [&](void* scratch, std::size_t& bytes) {
-            return cub::DeviceSegmentedReduce::Max(scratch, bytes, a.data(), segment_max_.data(),
-                                                   segments(offsets), segment_offsets_.data(),
-                                                   segment_offsets_.data() + 1);
-        });
-        for (double& m : out)
-            if (m < 0.0) m = 0.0;  // an empty segment's maximum is the lowest double
+    // Records the launches from here to end_capture() instead of running them; false (and
+    // nothing recorded) where the device cannot.
+    bool begin_capture() const {
+        if (cudaStreamBeginCapture(stream_, cudaStreamCaptureModeThreadLocal) == cudaSuccess)
+            return true;
+        cudaGetLastError();
+        return false;
     }
-    // out[s] = the sum of a[offsets[s] .. offsets[s + 1]); integers, exact in any order.
-    void segmented_sum(const Array<std::uint32_t>& a, const std::vector<std::uint32_t>& offsets,
-                       std::vector<std::uint64_t>& out) {
-        std::vector<unsigned long long> sums;
-        segmented(a, offsets, sums, segment_sum_, [&](void* scratch, std::size_t& bytes) {
-            return cub::DeviceSegmentedReduce::Sum(scratch, bytes, a.data(), segment_sum_.data(),
-                                                   segments(offsets), segment_offsets_.data(),
-                                                   segment_offsets_.data() + 1);
-        });
-        out.assign(sums.begin(), sums.end());
+    bool end_capture(Graph& graph) const {
+        cudaGraph_t recorded = nullptr;
+        if (cudaStreamEndCapture(stream_, &recorded) != cudaSuccess || recorded == nullptr) {
+            cudaGetLastError();
+            return false;
+        }
+        Graph made;
+        const cudaError_t status = cudaGraphInstantiate(&made.exec_, recorded, 0);
+        cudaGraphDestroy(recorded);
+        if (status != cudaSuccess) {
+            cudaGetLastError();
+            return false;
+        }
+        graph = std::move(made);
+        return true;
+    }
+    void replay(const Graph& graph) const {
+        check(cudaGraphLaunch(graph.exec_, stream_), "graph launch");
     }
 
     template <class T>
     void upload(Array<T>& a, const std::vector<T>& from) const {
         a.resize(from.size());
-        if (!from.empty())
-            check(
-                cudaMemcpy(a.data(), from.data(), from.size() * sizeof(T), cudaMemcpyHostToDevice),
-                "upload");
+        upload_into(a, from);
+    }
+    template <class T>
+    void upload_into(Array<T>& a, const std::vector<T>& from) const {
+        if (from.empty()) return;
+        check(cudaMemcpyAsync(a.data(), from.data(), from.size() * sizeof(T),
+                              cudaMemcpyHostToDevice, stream_),
+              "upload");
+        finish();  // `from` may go before the copy would otherwise have read it
     }
     template <class T>
     void download(const Array<T>& a, std::size_t n, std::vector<T>& to) const {
@@ -185,14 +260,18 @@ class CudaExecutor {
     template <class T>
     void download(const Array<T>& a, std::size_t first, std::size_t n, std::vector<T>& to) const {
         to.resize(n);
-        if (n > 0)
-            check(cudaMemcpy(to.data(), a.data() + first, n * sizeof(T), cudaMemcpyDeviceToHost),
-                  "download");
+        if (n == 0) return;
+        check(cudaMemcpyAsync(to.data(), a.data() + first, n * sizeof(T), cudaMemcpyDeviceToHost,
+                              stream_),
+              "download");
+        finish();
     }
     template <class T>
     T read(const Array<T>& a, std::size_t i) const {
         T value;
-        check(cudaMemcpy(&value, a.data() + i, sizeof(T), cudaMemcpyDeviceToHost), "read");
+        check(cudaMemcpyAsync(&value, a.data() + i, sizeof(T), cudaMemcpyDeviceToHost, stream_),
+              "read");
+        finish();
         return value;
     }
 
@@ -203,6 +282,7 @@ class CudaExecutor {
     void* scratch(std::size_t bytes) {
         bytes = bytes > 0 ? bytes : 1;
         if (bytes > scratch_bytes_) {
+            finish();  // a scan queued earlier may still use the old storage
             cudaFree(scratch_);
             scratch_ = nullptr;
             check(cudaMalloc(&scratch_, bytes), "cudaMalloc");
@@ -211,34 +291,10 @@ class CudaExecutor {
         return scratch_;
     }
 
-    int segments(const std::vector<std::uint32_t>& offsets) {
-        return static_cast<int>(offsets.size() - 1);
-    }
-    // Uploads the offsets, runs `reduce` (CUB's two calls: size, then work) into `result` and
-    // copies the per-segment values back.
-    template <class In, class T, class Reduce>
-    void segmented(const Array<In>&, const std::vector<std::uint32_t>& offsets, std::vector<T>& out,
-                   Array<T>& result, Reduce reduce) {
-        out.clear();
-        if (offsets.size() < 2) return;
-        if (offsets != uploaded_offsets_) {  // a step's reductions share their segments
-            upload(segment_offsets_, offsets);
-            uploaded_offsets_ = offsets;
-        }
-        result.resize(offsets.size() - 1);
-        std::size_t bytes = 0;
-        check(reduce(nullptr, bytes), "segmented reduce");
-        check(reduce(scratch(bytes), bytes), "segmented reduce");
-        download(result, offsets.size() - 1, out);
-    }
-
+    cudaStream_t stream_ = nullptr;
+    int multiprocessors_ = 1;
     void* scratch_ = nullptr;
     std::size_t scratch_bytes_ = 0;
-    Array<std::uint32_t> sorted_keys_, sorted_values_;
-    Array<std::uint32_t> segment_offsets_;
-    std::vector<std::uint32_t> uploaded_offsets_;  // what segment_offsets_ holds
-    Array<double> segment_max_;
-    Array<unsigned long long> segment_sum_;
 };
 
 }  // namespace rodsea::cuda

@@ -6,6 +6,7 @@
 
 #include "rodsea/engine/physics/contact.hpp"
 #include "rodsea/engine/physics/rigid_rotation.hpp"
+#include "rodsea/engine/parallel/system_run.hpp"
 #include "rodsea/engine/physics/step_context.hpp"
 #include "rodsea/math/hostdevice.hpp"
 #include "rodsea/math/mat3.hpp"
@@ -56,9 +57,9 @@ struct SphereArrays {
     std::uint32_t count = 0;
 };
 
-// The cell list: the box cut into nx × ny cells no narrower than the widest contact reach, so
-// that a sphere's partners lie in its own and the eight surrounding cells. Cell (cx, cy) holds
-// sorted_sphere[start[c] .. end[c]), c = cy nx + cx, in sphere order.
+// The cell grid: the box cut into nx × ny cells no narrower than the widest reach of the
+// neighbour list (two of the largest radii and the skin), so that a sphere's neighbours lie in its
+// own and the eight surrounding cells.
 struct CellGrid {
     std::uint32_t nx = 1, ny = 1;
     double width_x = 0.0, width_y = 0.0;  // mm
@@ -80,45 +81,48 @@ struct SystemGrid {
     std::uint32_t first_cell = 0;
 };
 
+// The cell list, built with the neighbour list: each sphere's cell and its rank among the
+// spheres binned there (in no particular order), the cells' counts and starts, and the spheres
+// by cell: cell c holds sphere[start[c] .. start[c + 1]).
 struct CellList {
-    const std::uint32_t* sorted_sphere = nullptr;
-    const std::uint32_t* start = nullptr;
-    const std::uint32_t* end = nullptr;
+    std::uint32_t* cell_of = nullptr;
+    std::uint32_t* rank = nullptr;
+    std::uint32_t* count = nullptr;
+    std::uint32_t* start = nullptr;  // cells + 1 entries
+    std::uint32_t* sphere = nullptr;
 };
 
-// Where one system's contacts are in the step's list: its body contacts, then (after every
-// system's body contacts) its plate contacts.
-struct ContactRange {
-    std::uint32_t body_first = 0, body_count = 0, plate_first = 0;
+// The Verlet list of the GPU backend: for each sphere i, the spheres j > i of other bodies of its
+// system whose discs (spheres seen from above) were closer than r_i + r_j + skin when it was
+// built, ascending: j = slot[k * stride + i] for k < count[i] (slot-major, so that a warp's
+// spheres read one row together). A sphere with more than `capacity` such partners keeps its
+// first `capacity` and reports how many it has (RunStatus::needed_slots): the run is taken again
+// with more room.
+struct NeighbourList {
+    std::uint32_t* slot = nullptr;
+    std::uint32_t* count = nullptr;
+    std::uint32_t capacity = 0;
+    std::uint32_t stride = 0;  // the number of spheres
+    double skin = 0.0;         // mm
 };
 
 // The independent systems stepped together (an ensemble; a lone run is one system): each body's
-// system, and each system's step, first body and grid. Bodies, spheres and contacts of a system
-// are contiguous, in system order.
+// system, and each system's step, first body, grid, state of its run and the counts of its step.
+// Bodies, spheres and contacts of a system are contiguous, in system order.
 struct Systems {
-    const StepContext* context = nullptr;
+    const StepContext* context = nullptr;  // the step being taken, per system
     const std::uint32_t* of_body = nullptr;
     const std::uint32_t* first_body = nullptr;
     const SystemGrid* grid = nullptr;
+    const SystemRun* run = nullptr;
+    StepCounts* counts = nullptr;
     std::uint32_t count = 0;
 
     RODSEA_HD std::uint32_t of_sphere(const SphereArrays& spheres, std::uint32_t s) const {
         return of_body[spheres.body[s]];
     }
-};
-
-// Which contacts touch each body: the contacts adjacent[start[b] .. end[b]), in contact order.
-struct Incidence {
-    const std::uint32_t* contact = nullptr;
-    const std::uint32_t* start = nullptr;
-    const std::uint32_t* end = nullptr;
-};
-
-// What the sweeps count per contact, summed after the step.
-struct ContactTallies {
-    std::uint32_t* impulses = nullptr;
-    std::uint32_t* collisions = nullptr;  // impulses approaching faster than kCollisionSpeed
-    double* hit_speed = nullptr;          // plate contacts: the fastest approach given an impulse
+    // A system that blew up earlier in this run takes no more steps in it.
+    RODSEA_HD bool halted(std::uint32_t system) const { return run[system].halted != 0; }
 };
 
 }  // namespace rodsea::parallel

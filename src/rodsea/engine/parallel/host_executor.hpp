@@ -1,8 +1,8 @@
 #pragma once
 // Runs the data-parallel step's kernels on the host: each launch a loop over the elements (an
-// OpenMP loop on several threads), sorts and scans from the standard library. It is the GPU
-// backend's algorithm without a device: what tests run everywhere, and what a device's results
-// are checked against. The CUDA executor (engine/cuda/) has the same interface.
+// OpenMP loop on several threads), scans from the standard library. It is the GPU backend's
+// algorithm without a device: what tests run everywhere, and what a device's results are
+// checked against. The CUDA executor (engine/cuda/) has the same interface.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -27,9 +27,11 @@ class HostExecutor {
         std::vector<T> data_;
     };
 
+    // A recorded run of launches to replay: the host records none (begin_capture says no).
+    struct Graph {};
+
     explicit HostExecutor(int threads = 1) : threads_(threads) {}
     void set_threads(int threads) { threads_ = threads; }
-    const char* device_name() const { return "host"; }
 
     template <class Kernel>
     void launch(std::size_t n, const Kernel& kernel) const {
@@ -41,6 +43,13 @@ class HostExecutor {
         for (std::ptrdiff_t i = 0; i < count; ++i)
             kernel(static_cast<std::uint32_t>(i));
     }
+    // kernel(i) for i below *count, a number in this executor's memory that earlier launches
+    // wrote (at most max_n).
+    template <class Kernel>
+    void launch_counted(std::size_t /*max_n*/, const std::uint32_t* count,
+                        const Kernel& kernel) const {
+        launch(*count, kernel);
+    }
 
     // Waits for the launches so far: they are done when launch() returns.
     void finish() const {}
@@ -49,48 +58,43 @@ class HostExecutor {
     void fill(Array<T>& a, std::size_t n, const T& value) const {
         std::fill_n(a.data_.begin(), n, value);
     }
+    template <class T>
+    void copy(Array<T>& to, const Array<T>& from, std::size_t n) const {
+        std::copy_n(from.data_.begin(), n, to.data_.begin());
+    }
 
-    // out[i] = in[0] + ... + in[i − 1]; returns the sum of all n.
-    std::uint64_t exclusive_scan(const Array<std::uint32_t>& in, Array<std::uint32_t>& out,
-                                 std::size_t n) const {
+    // out[i] = in[0] + ... + in[i − 1], for i < n.
+    template <class T>
+    void exclusive_scan(const Array<T>& in, Array<T>& out, std::size_t n) const {
         std::exclusive_scan(in.data_.begin(), in.data_.begin() + static_cast<std::ptrdiff_t>(n),
-                            out.data_.begin(), std::uint32_t{0});
-        return n == 0 ? 0 : std::uint64_t{out.data_[n - 1]} + in.data_[n - 1];
+                            out.data_.begin(), T{0});
+    }
+    // When *flag is not 0: start[i] = count[0] + ... + count[i − 1] for i <= n, and the counts
+    // cleared for the next time.
+    void flagged_scan_and_clear(const std::uint32_t* flag, Array<std::uint32_t>& count,
+                                Array<std::uint32_t>& start, std::size_t n) const {
+        if (*flag == 0) return;
+        std::uint32_t sum = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            start.data_[i] = sum;
+            sum += count.data_[i];
+            count.data_[i] = 0;
+        }
+        start.data_[n] = sum;
     }
 
-    // Sorts the first n (key, value) pairs by key, keeping the order of equal keys; keys are
-    // below 2^bits (the device's radix sort reads no more).
-    void sort_by_key(Array<std::uint32_t>& keys, Array<std::uint32_t>& values, std::size_t n,
-                     int /*bits*/) {
-        order_.resize(n);
-        std::iota(order_.begin(), order_.end(), std::uint32_t{0});
-        const std::vector<std::uint32_t>& k = keys.data_;
-        std::stable_sort(order_.begin(), order_.end(),
-                         [&k](std::uint32_t x, std::uint32_t y) { return k[x] < k[y]; });
-        gather(keys.data_, n);
-        gather(values.data_, n);
-    }
-
-    // out[s] = the largest of a[offsets[s] .. offsets[s + 1]), 0 for none (the values are >= 0).
-    void segmented_max(const Array<double>& a, const std::vector<std::uint32_t>& offsets,
-                       std::vector<double>& out) const {
-        out.assign(offsets.size() - 1, 0.0);
-        for (std::size_t s = 0; s + 1 < offsets.size(); ++s)
-            for (std::uint32_t i = offsets[s]; i < offsets[s + 1]; ++i)
-                out[s] = std::max(out[s], a.data_[i]);
-    }
-    // out[s] = the sum of a[offsets[s] .. offsets[s + 1]).
-    void segmented_sum(const Array<std::uint32_t>& a, const std::vector<std::uint32_t>& offsets,
-                       std::vector<std::uint64_t>& out) const {
-        out.assign(offsets.size() - 1, 0);
-        for (std::size_t s = 0; s + 1 < offsets.size(); ++s)
-            for (std::uint32_t i = offsets[s]; i < offsets[s + 1]; ++i)
-                out[s] += a.data_[i];
-    }
+    bool begin_capture() const { return false; }
+    bool end_capture(Graph&) const { return false; }
+    void replay(const Graph&) const {}
 
     template <class T>
     void upload(Array<T>& a, const std::vector<T>& from) const {
         a.data_ = from;
+    }
+    // Into the first from.size() elements of a, which holds at least that many.
+    template <class T>
+    void upload_into(Array<T>& a, const std::vector<T>& from) const {
+        std::copy(from.begin(), from.end(), a.data_.begin());
     }
     template <class T>
     void download(const Array<T>& a, std::size_t n, std::vector<T>& to) const {
@@ -100,20 +104,17 @@ class HostExecutor {
     void download(const Array<T>& a, std::size_t first, std::size_t n, std::vector<T>& to) const {
         to.assign(a.data_.begin() + to_end(first), a.data_.begin() + to_end(first + n));
     }
+    template <class T>
+    T read(const Array<T>& a, std::size_t i) const {
+        return a.data_[i];
+    }
 
   private:
     static std::ptrdiff_t to_end(std::size_t n) {
         return static_cast<std::ptrdiff_t>(n);
     }
-    void gather(std::vector<std::uint32_t>& v, std::size_t n) {
-        scratch_.resize(n);
-        for (std::size_t i = 0; i < n; ++i)
-            scratch_[i] = v[order_[i]];
-        std::copy(scratch_.begin(), scratch_.end(), v.begin());
-    }
 
     int threads_;
-    std::vector<std::uint32_t> order_, scratch_;
 };
 
 }  // namespace rodsea::parallel

@@ -1,20 +1,29 @@
 #pragma once
-// The data-parallel step (kernels.hpp) of many independent systems at once, run by an executor:
-// the GPU backend with the CUDA executor, its host twin with HostExecutor. A phase diagram's
-// dozens of small systems fill one device together; a lone run is an ensemble of one
-// (parallel_backend.hpp). The state lives in the executor's memory; the host sees each system
-// through bodies(), spheres() and contacts(), which copy it over when it changed.
+// The data-parallel step (kernels.hpp, contact_kernels.hpp, island_kernels.hpp) of many
+// independent systems at once, run by an executor: the GPU backend with the CUDA executor, its
+// host twin with HostExecutor. A phase diagram's dozens of small systems fill one device
+// together; a lone run is an ensemble of one (parallel_backend.hpp). The state lives in the
+// executor's memory; the host sees each system through bodies(), spheres() and contacts(), which
+// copy it over when it changed.
 //
-// A step, with the executor's launches, scans, sorts and reductions:
-//   1 free flight per body;  2 sphere centres per body;
-//   3 contact search: spheres sorted by cell (each system's grid a block of one cell list,
-//     rebuilt every step), contacts counted per sphere, placed by an exclusive scan and written:
-//     the list is a function of the state;
-//   4 resolution: contacts joined into islands (bodies linked by body–body contacts; union–find
-//     with atomic hooks, whose result does not depend on their order), sorted by island, and
-//     each island swept by one thread with the CPU's own sweep (physics/island_sweep.hpp) in
-//     list order; the projection out of the plates per body;
-//   5 noise per polar body, from its plate contacts' fastest approach.
+// Steps come in runs: the host plans a run's contexts (the plates' motion, the step numbers),
+// hands them over with the run, and reads back once at its end what each system's steps came to
+// (system_run.hpp); in between a device takes step after step without waiting for the host. A
+// step, in launches:
+//   1 free flight per body; whether to rebuild the neighbour list (one thread);
+//   2 sphere centres per sphere, and when rebuilding the cell list (bin, scan, scatter);
+//   3 contacts: per sphere, its Verlet list rebuilt when due, its touching partners and plates
+//     counted; an exclusive scan places them; per sphere, written;
+//   4 islands: hooked per body contact (union–find), keyed and counted per contact, the counts
+//     scanned, gathered, and each island swept by one thread in list order;
+//   5 per body: out of the plates, and polar bodies' noise kicks;
+//   6 per system: the step's counts become its statistics; a system past its blow-up bounds
+//     stops there for the rest of the run.
+// Where a device can, the launches of kGraphSteps steps are recorded once as a CUDA graph and
+// replayed. Lists that outgrow their room (a sphere's partners, a step's contacts) say how much
+// they needed: the state is put back as it was at the run's start and the run taken again with
+// more room, so the room never shows in a trajectory.
+//
 // The contact list is the CPU's, contact for contact, and each island gets the CPU's impulses in
 // the CPU's order: run by the host executor the step is the CPU backend's to the last bit. On a
 // device only the rounding of the device's arithmetic can differ (nvcc may fuse a multiply and
@@ -23,24 +32,20 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "rodsea/engine/body_state.hpp"
+#include "rodsea/engine/parallel/contact_kernels.hpp"
+#include "rodsea/engine/parallel/island_kernels.hpp"
 #include "rodsea/engine/parallel/kernels.hpp"
 #include "rodsea/engine/species_table.hpp"
 #include "rodsea/engine/stage_timer.hpp"
 #include "rodsea/engine/step_backend.hpp"
 
 namespace rodsea::parallel {
-
-// How many bits a radix sort reads for keys below `distinct`.
-inline int key_bits(std::uint64_t distinct) {
-    int bits = 1;
-    while (bits < 32 && (std::uint64_t{1} << bits) < distinct)
-        ++bits;
-    return bits;
-}
 
 // The spheres as the step starts from them (cpu::SphereTable's arrays).
 struct InitialSpheres {
@@ -62,16 +67,26 @@ class EnsembleStepper {
   public:
     virtual ~EnsembleStepper() = default;
     virtual std::size_t size() const = 0;
-    // Steps system m with contexts[m]; overwrites stats[m]; adds each stage's time to `profile`.
-    virtual void step(const std::vector<StepContext>& contexts, std::vector<StepStatistics>& stats,
-                      StageProfile& profile) = 0;
+    // Steps every system `steps` times: system m's k-th step has contexts[k * size() + m]. A
+    // system whose step crosses (*bounds)[m] stops after it (none: never) while the others go
+    // on. done[m] says what system m's steps came to; each stage's time joins `profile`.
+    virtual void run(const std::vector<StepContext>& contexts, std::uint64_t steps,
+                     const std::vector<BlowUpBounds>* bounds, std::vector<StepsDone>& done,
+                     StageProfile& profile) = 0;
     virtual const BodyState& bodies(std::size_t m) const = 0;
     virtual SphereView spheres(std::size_t m) const = 0;
     // The last step's contacts of system m, with its own body indices.
     virtual const std::vector<Contact>& contacts(std::size_t m) const = 0;
     virtual void set_threads(int threads) = 0;
-    virtual std::uint64_t steps() const = 0;
+    // Wait for each stage to time it (BackendOptions::time_stages).
+    virtual void set_stage_timing(bool on) = 0;
+    // How often the neighbour list was built.
+    virtual std::uint64_t builds() const = 0;
 };
+
+// The Verlet list's skin (mm): the CPU's (cpu/contact_search.hpp says why 0.05 mm). The
+// trajectory does not depend on it.
+inline constexpr double kNeighbourSkin = 0.05;
 
 // `gross_overlap_fraction`: the depth over the smaller radius beyond which a contact counts as
 // unresolvable (state_check.hpp's kGrossOverlapFraction, passed in: this header is compiled for
@@ -79,6 +94,9 @@ class EnsembleStepper {
 template <class Executor>
 class ParallelEnsemble final : public EnsembleStepper {
   public:
+    // Steps recorded in one graph; a run replays it as often as it fits, then steps singly.
+    static constexpr std::uint64_t kGraphSteps = 16;
+
     ParallelEnsemble(std::vector<EnsembleMember> members, double gross_overlap_fraction,
                      Executor executor)
         : gross_overlap_fraction_(gross_overlap_fraction),
@@ -89,30 +107,48 @@ class ParallelEnsemble final : public EnsembleStepper {
             if (m.bodies.size() == 0 || m.spheres.body.empty() || m.species->size() == 0)
                 throw std::invalid_argument("rodsea: a system of an ensemble without bodies");
         concatenate();
-        const std::size_t n = host_body_count(), spheres = host_sphere_count();
-        drift2_.resize(n);
-        turn2_.resize(n);
+        const std::size_t n = body_count(), spheres = sphere_count(), systems = members_.size();
+        for (auto* a : {&parent_, &island_count_, &island_start_})
+            a->resize(n);
+        last_changed_.resize(n);
         inv_mass_.resize(n);
         inv_inertia_.resize(n);
-        last_changed_.resize(n);
-        kicks_.resize(n);
-        for (auto* a : {&parent_, &island_start_, &island_end_})
+        for (auto* a : {&snapshot_position_, &snapshot_velocity_, &snapshot_spin_})
             a->resize(n);
-        for (auto* a : {&cell_key_, &cell_sphere_, &body_count_, &plate_count_, &body_offset_,
-                        &plate_offset_})
+        snapshot_orientation_.resize(n);
+        for (auto* a : {&cell_of_, &sphere_rank_, &by_cell_, &neighbour_count_})
             a->resize(spheres);
-        boundary_values_.resize(members_.size());
-        host_grids_.resize(members_.size());
-        bodies_stale_.assign(members_.size(), 0);
-        spheres_stale_.assign(members_.size(), 0);
-        contacts_stale_.assign(members_.size(), 0);
-        host_contacts_.resize(members_.size());
-        ranges_.resize(members_.size());
+        contact_counts_.resize(spheres);
+        contact_offsets_.resize(spheres);
+        exec_.fill(neighbour_count_, spheres, 0u);
+        current_.resize(systems);
+        runs_.resize(systems);
+        step_counts_.resize(systems);
+        exec_.fill(step_counts_, systems, StepCounts{});
+        halt_.resize(systems);
+        travel_.resize(systems);
+        snapshot_travel_.resize(systems);
+        exec_.fill(travel_, systems, 0.0);
+        status_.resize(1);
+        RunStatus first;
+        first.force_rebuild = 1;
+        exec_.upload(status_, std::vector<RunStatus>{first});
+        planned_.resize(kPlannedSteps * systems);
+        grow_neighbours(16);
+        grow_contacts(spheres / 8 + 256);
+        host_grids_.resize(systems);
+        bodies_stale_.assign(systems, 0);
+        spheres_stale_.assign(systems, 0);
+        contacts_stale_.assign(systems, 0);
+        host_contacts_.resize(systems);
+        const char* graphs = std::getenv("RODSEA_GPU_GRAPHS");
+        graphs_wanted_ = graphs == nullptr || std::string(graphs) != "0";
     }
 
     std::size_t size() const override { return members_.size(); }
     void set_threads(int threads) override { exec_.set_threads(threads); }
-    std::uint64_t steps() const override { return steps_; }
+    void set_stage_timing(bool on) override { time_stages_ = on; }
+    std::uint64_t builds() const override { return host_status_.builds; }
 
     const BodyState& bodies(std::size_t m) const override {
         BodyState& b = members_[m].bodies;
@@ -138,11 +174,20 @@ class ParallelEnsemble final : public EnsembleStepper {
         std::vector<Contact>& out = host_contacts_[m];
         if (contacts_stale_[m]) {
             out.clear();
-            if (contact_count_ > 0) {
-                const ContactRange& r = ranges_[m];
+            if (host_status_.contacts > 0) {
+                // System m's body contacts, then its plate contacts (after every system's body
+                // contacts), where the scan of its spheres' counts put them.
+                const auto at = [this](std::size_t system) -> std::uint64_t {
+                    if (system == members_.size())
+                        return (std::uint64_t{host_status_.body_contacts} << 32) |
+                               (host_status_.contacts - host_status_.body_contacts);
+                    return exec_.read(contact_offsets_, first_sphere_[system]);
+                };
+                const std::uint64_t from = at(m), to = at(m + 1);
                 std::vector<Contact> part;
-                exec_.download(contacts_, r.body_first, r.body_count, out);
-                exec_.download(contacts_, r.plate_first, plate_count_of(m), part);
+                exec_.download(contacts_, from >> 32, (to >> 32) - (from >> 32), out);
+                exec_.download(contacts_, host_status_.body_contacts + (from & 0xffffffffu),
+                               (to & 0xffffffffu) - (from & 0xffffffffu), part);
                 out.insert(out.end(), part.begin(), part.end());
                 const auto own = static_cast<std::uint32_t>(first_body_[m]);
                 for (Contact& c : out) {
@@ -155,77 +200,226 @@ class ParallelEnsemble final : public EnsembleStepper {
         return out;
     }
 
-    void step(const std::vector<StepContext>& contexts, std::vector<StepStatistics>& stats,
-              StageProfile& profile) override {
+    void run(const std::vector<StepContext>& contexts, std::uint64_t steps,
+             const std::vector<BlowUpBounds>* bounds, std::vector<StepsDone>& done,
+             StageProfile& profile) override {
         const std::size_t systems = members_.size();
-        if (contexts.size() != systems)
-            throw std::invalid_argument("rodsea: one step context per system of the ensemble");
-        stats.assign(systems, StepStatistics{});
+        if (contexts.size() != steps * systems)
+            throw std::invalid_argument("rodsea: one step context per step and system");
+        done.assign(systems, StepsDone{});
+        if (steps == 0) return;
+        if (steps > 0xffffffffULL) throw std::invalid_argument("rodsea: a run of 2^32 steps");
+        set_halt_bounds(bounds);
+        size_grids(contexts);
+        if (planned_.size() < contexts.size()) {
+            planned_.resize(contexts.size());
+            ++layout_;
+        }
+        exec_.upload_into(planned_, contexts);
+        std::vector<SystemRun> runs;
+        {
+            StageTimer whole(time_stages_ ? unused_ : profile.whole_steps);
+            bool force = false;
+            for (;;) {
+                exec_.copy(snapshot_position_, position_, body_count());
+                exec_.copy(snapshot_orientation_, orientation_, body_count());
+                exec_.copy(snapshot_velocity_, velocity_, body_count());
+                exec_.copy(snapshot_spin_, spin_, body_count());
+                exec_.copy(snapshot_travel_, travel_, systems);
+                exec_.launch(systems, BeginRun{current_.data(), planned_.data(), runs_.data(),
+                                               step_counts_.data(), status_.data(),
+                                               static_cast<std::uint32_t>(steps), force});
+                take_steps(steps, profile);
+                exec_.download(runs_, systems, runs);
+                host_status_ = exec_.read(status_, 0);
+                if (host_status_.needed_slots <= slot_capacity_ &&
+                    host_status_.needed_contacts <= contact_capacity_)
+                    break;
+                // Something did not fit: the run again from its start, with room for it.
+                if (host_status_.needed_slots > slot_capacity_)
+                    grow_neighbours(host_status_.needed_slots + host_status_.needed_slots / 4 + 2);
+                if (host_status_.needed_contacts > contact_capacity_)
+                    grow_contacts(host_status_.needed_contacts +
+                                  host_status_.needed_contacts / 4 + 256);
+                exec_.copy(position_, snapshot_position_, body_count());
+                exec_.copy(orientation_, snapshot_orientation_, body_count());
+                exec_.copy(velocity_, snapshot_velocity_, body_count());
+                exec_.copy(spin_, snapshot_spin_, body_count());
+                exec_.copy(travel_, snapshot_travel_, systems);
+                force = true;
+            }
+        }
+        ++runs_taken_;
+        for (std::size_t m = 0; m < systems; ++m) {
+            done[m].steps = runs[m].steps;
+            done[m].blew_up = runs[m].halted != 0;
+            done[m].last = runs[m].last;
+            done[m].tally = runs[m].tally;
+        }
         std::fill(bodies_stale_.begin(), bodies_stale_.end(), 1);
         std::fill(spheres_stale_.begin(), spheres_stale_.end(), 1);
         std::fill(contacts_stale_.begin(), contacts_stale_.end(), 1);
-        ++steps_;
-        exec_.upload(contexts_, contexts);
-        size_grids(contexts);
-        const BodyArrays bodies = body_arrays();
-        const SpeciesArrays species = species_arrays();
-        const auto n = static_cast<std::uint32_t>(host_body_count());
-        {
-            StageTimer t(profile.free_flight);
-            exec_.launch(
-                n, FlyBodies{bodies, species, system_arrays(), drift2_.data(), turn2_.data()});
-            std::vector<double> drift2, turn2;
-            exec_.segmented_max(drift2_, first_body_, drift2);
-            exec_.segmented_max(turn2_, first_body_, turn2);
-            for (std::size_t m = 0; m < systems; ++m)
-                stats[m].max_planar_speed = std::sqrt(drift2[m]) + std::sqrt(turn2[m]);
-            exec_.finish();
-        }
-        {
-            StageTimer t(profile.sphere_update);
-            exec_.launch(n, PlaceSpheres{bodies, species, sphere_arrays()});
-            exec_.finish();
-        }
-        {
-            StageTimer t(profile.contact_search);
-            find_contacts(stats);
-            exec_.finish();
-        }
-        {
-            StageTimer t(profile.resolution);
-            resolve(stats);
-            exec_.launch(n, ProjectOutOfPlates{bodies, sphere_arrays(), system_arrays()});
-            exec_.finish();
-        }
-        {
-            StageTimer t(profile.noise);
-            const bool noisy =
-                std::any_of(contexts.begin(), contexts.end(),
-                            [](const StepContext& c) { return c.noise_epsilon != 0.0; });
-            if (noisy && contact_count_ > 0) {
-                exec_.launch(
-                    n, KickPolarBodies{bodies, species, sphere_arrays(), contacts_.data(),
-                                       plate_offset_.data(), body_contact_count_, contact_count_,
-                                       hit_speed_.data(), system_arrays(), kicks_.data()});
-                std::vector<std::uint64_t> kicks;
-                exec_.segmented_sum(kicks_, first_body_, kicks);
-                for (std::size_t m = 0; m < systems; ++m)
-                    stats[m].noise_kicks = kicks[m];
-            }
-            exec_.finish();
-        }
     }
 
   private:
     template <class T>
     using Array = typename Executor::template Array<T>;
 
-    std::size_t host_body_count() const { return first_body_.back(); }
-    std::size_t host_sphere_count() const { return first_sphere_.back(); }
-    std::uint32_t plate_count_of(std::size_t m) const {
-        const std::uint32_t end =
-            m + 1 < ranges_.size() ? ranges_[m + 1].plate_first : contact_count_;
-        return end - ranges_[m].plate_first;
+    // Before a run, per system: its first step's context, its run and counts cleared; and the
+    // run's shared words.
+    struct BeginRun {
+        StepContext* current;
+        const StepContext* planned;
+        SystemRun* run;
+        StepCounts* counts;
+        RunStatus* status;
+        std::uint32_t steps;
+        bool force_rebuild;
+
+        RODSEA_HD void operator()(std::uint32_t m) const {
+            current[m] = planned[m];
+            run[m] = SystemRun{};
+            counts[m] = StepCounts{};
+            if (m != 0) return;
+            status->step = 0;
+            status->steps = steps;
+            status->needed_slots = 0;
+            status->needed_contacts = 0;
+            if (force_rebuild) status->force_rebuild = 1;
+        }
+    };
+
+    // Simulation::kStepsPerRun (the engine's runs): the contexts of that many steps have their
+    // place from the start, so that a graph recorded once keeps its pointers.
+    static constexpr std::size_t kPlannedSteps = 1024;
+
+    std::size_t body_count() const { return first_body_.back(); }
+    std::size_t sphere_count() const { return first_sphere_.back(); }
+
+    void grow_neighbours(std::uint64_t capacity) {
+        slot_capacity_ = static_cast<std::uint32_t>(capacity);
+        neighbour_slots_.resize(std::size_t{slot_capacity_} * sphere_count());
+        ++layout_;
+    }
+    void grow_contacts(std::uint64_t capacity) {
+        contact_capacity_ = static_cast<std::uint32_t>(std::min<std::uint64_t>(capacity, 0x7fffffffULL));
+        for (auto* a : {&island_key_, &island_rank_, &island_order_})
+            a->resize(contact_capacity_);
+        contacts_.resize(contact_capacity_);
+        hit_speed_.resize(contact_capacity_);
+        ++layout_;
+    }
+
+    void set_halt_bounds(const std::vector<BlowUpBounds>* bounds) {
+        std::vector<HaltBounds> halt(members_.size());
+        if (bounds != nullptr) {
+            if (bounds->size() != members_.size())
+                throw std::invalid_argument("rodsea: one set of blow-up bounds per system");
+            for (std::size_t m = 0; m < halt.size(); ++m)
+                halt[m] = {(*bounds)[m], 1u};
+        }
+        const auto same = [](const HaltBounds& a, const HaltBounds& b) {
+            return a.active == b.active && a.bounds.planar_speed == b.bounds.planar_speed &&
+                   a.bounds.overlap_fraction == b.bounds.overlap_fraction &&
+                   a.bounds.unresolved == b.bounds.unresolved;
+        };
+        if (host_halt_.size() == halt.size() &&
+            std::equal(halt.begin(), halt.end(), host_halt_.begin(), same))
+            return;
+        exec_.upload_into(halt_, halt);
+        host_halt_ = halt;
+    }
+
+    // Steps the run's `steps` steps: replays of the recorded graph, then single steps.
+    void take_steps(std::uint64_t steps, StageProfile& profile) {
+        std::uint64_t taken = 0;
+        if (!time_stages_ && graphs_wanted_ && runs_taken_ > 0 && steps >= kGraphSteps) {
+            if (graph_layout_ != layout_) record_graph(profile);
+            if (graph_layout_ == layout_)
+                for (; taken + kGraphSteps <= steps; taken += kGraphSteps)
+                    exec_.replay(graph_);
+        }
+        for (; taken < steps; ++taken)
+            step_once(profile);
+    }
+
+    void record_graph(StageProfile& profile) {
+        if (!exec_.begin_capture()) {
+            graphs_wanted_ = false;
+            return;
+        }
+        for (std::uint64_t k = 0; k < kGraphSteps; ++k)
+            step_once(profile);
+        if (exec_.end_capture(graph_))
+            graph_layout_ = layout_;
+        else
+            graphs_wanted_ = false;  // the device cannot: every step is launched singly
+    }
+
+    // One step's launches. With time_stages_ each stage is waited for and timed.
+    void step_once(StageProfile& profile) {
+        const auto n = static_cast<std::uint32_t>(body_count());
+        const auto s = static_cast<std::uint32_t>(sphere_count());
+        const auto systems = static_cast<std::uint32_t>(members_.size());
+        const BodyArrays bodies = body_arrays();
+        const SpeciesArrays species = species_arrays();
+        const Systems sys = system_arrays();
+        const CellList cells = cell_list();
+        const NeighbourList neighbours{neighbour_slots_.data(), neighbour_count_.data(),
+                                       slot_capacity_, s, kNeighbourSkin};
+        RunStatus* status = status_.data();
+        const auto stage = [this](double& sink, auto&& launches) {
+            if (!time_stages_) {
+                launches();
+                return;
+            }
+            StageTimer t(sink);
+            launches();
+            exec_.finish();
+        };
+        stage(profile.free_flight, [&] {
+            exec_.launch(n, FlyBodies{bodies, species, sys,
+                                      {parent_.data(), island_count_.data(), last_changed_.data(),
+                                       inv_mass_.data(), inv_inertia_.data()}});
+            exec_.launch(1, DecideRebuild{sys, travel_.data(), status, 0.5 * kNeighbourSkin});
+        });
+        stage(profile.sphere_update, [&] {
+            exec_.launch(s, PlaceSpheres{bodies, species, sphere_arrays(), sys, cells, status});
+            exec_.flagged_scan_and_clear(&status->rebuild, cell_count_, cell_start_, cells_);
+            exec_.launch(s, ScatterSpheres{cells, status});
+        });
+        stage(profile.contact_search, [&] {
+            exec_.launch(s, ListAndCountContacts{sphere_arrays(), sys, cells, neighbours,
+                                                 contact_counts_.data(), status});
+            exec_.exclusive_scan(contact_counts_, contact_offsets_, s);
+            exec_.launch(s, WriteContacts{sphere_arrays(), bodies, species, sys, neighbours,
+                                          contact_counts_.data(), contact_offsets_.data(),
+                                          contacts_.data(), hit_speed_.data(), contact_capacity_,
+                                          gross_overlap_fraction_, status});
+        });
+        stage(profile.resolution, [&] {
+            exec_.launch_counted(contact_capacity_, &status->body_contacts,
+                                 HookIslands{contacts_.data(), parent_.data()});
+            exec_.launch_counted(
+                contact_capacity_, &status->contacts,
+                KeyContactsByIsland{contacts_.data(), parent_.data(), island_count_.data(),
+                                    island_key_.data(), island_rank_.data()});
+            exec_.exclusive_scan(island_count_, island_start_, n);
+            exec_.launch_counted(contact_capacity_, &status->contacts,
+                                 GatherIslands{island_key_.data(), island_rank_.data(),
+                                               island_start_.data(), island_order_.data()});
+            exec_.launch(n, SweepIslands{contacts_.data(), island_count_.data(),
+                                         island_start_.data(), island_order_.data(),
+                                         IslandBodies{bodies, inv_mass_.data(),
+                                                      inv_inertia_.data()},
+                                         sys, last_changed_.data(), hit_speed_.data()});
+            exec_.launch(n, ProjectAndKick{bodies, species, sphere_arrays(), sys, contacts_.data(),
+                                           contact_offsets_.data(), hit_speed_.data(), status});
+        });
+        stage(profile.noise, [&] {
+            exec_.launch(systems, EndStep{runs_.data(), step_counts_.data(), halt_.data(),
+                                          current_.data(), planned_.data(), status, systems});
+        });
     }
 
     // One state of all systems: bodies, spheres and species one after another, each system's
@@ -287,7 +481,8 @@ class ParallelEnsemble final : public EnsembleStepper {
             first_body_.push_back(static_cast<std::uint32_t>(all.size()));
             first_sphere_.push_back(static_cast<std::uint32_t>(spheres.body.size()));
             widest_reach_.push_back(
-                2.0 * *std::max_element(t.sphere_radius.begin(), t.sphere_radius.end()));
+                2.0 * *std::max_element(t.sphere_radius.begin(), t.sphere_radius.end()) +
+                kNeighbourSkin);
         }
         species.first_sphere.push_back(static_cast<std::uint32_t>(species.sphere_offset.size()));
         species.first_outline.push_back(static_cast<std::uint32_t>(species.outline_along.size()));
@@ -317,14 +512,12 @@ class ParallelEnsemble final : public EnsembleStepper {
         exec_.upload(first_of_, spheres.first_of);
         exec_.upload(system_of_body_, system_of_body);
         exec_.upload(first_body_of_system_, first_body_of_system);
-        std::vector<std::uint32_t> boundary(first_sphere_.begin(), first_sphere_.end() - 1);
-        exec_.upload(system_first_sphere_, boundary);
     }
 
     BodyArrays body_arrays() {
         return {body_species_.data(), position_.data(),
                 orientation_.data(),  velocity_.data(),
-                spin_.data(),         static_cast<std::uint32_t>(host_body_count())};
+                spin_.data(),         static_cast<std::uint32_t>(body_count())};
     }
     SpeciesArrays species_arrays() const {
         return {inverse_mass_.data(),  inverse_inertia_.data(),    rotor_.data(),
@@ -335,16 +528,22 @@ class ParallelEnsemble final : public EnsembleStepper {
     }
     SphereArrays sphere_arrays() {
         return {sphere_body_.data(), sphere_radius_.data(), sphere_position_.data(),
-                first_of_.data(), static_cast<std::uint32_t>(host_sphere_count())};
+                first_of_.data(), static_cast<std::uint32_t>(sphere_count())};
     }
-    Systems system_arrays() const {
-        return {contexts_.data(), system_of_body_.data(), first_body_of_system_.data(),
-                grids_.data(), static_cast<std::uint32_t>(size())};
+    Systems system_arrays() {
+        return {current_.data(), system_of_body_.data(), first_body_of_system_.data(),
+                grids_.data(),   runs_.data(),           step_counts_.data(),
+                static_cast<std::uint32_t>(size())};
+    }
+    CellList cell_list() {
+        return {cell_of_.data(), sphere_rank_.data(), cell_count_.data(), cell_start_.data(),
+                by_cell_.data()};
     }
 
-    // Each system's cells no narrower than its widest contact reach and no more than a few per
-    // sphere (a huge box of few spheres would otherwise sweep an empty grid every step); the
-    // systems' grids one after another.
+    // Each system's cells no narrower than the neighbour list's widest reach and no more than a
+    // few per sphere (a huge box of few spheres would otherwise sweep an empty grid at each
+    // rebuild); the systems' grids one after another. From the run's first contexts (a
+    // system's box does not change).
     void size_grids(const std::vector<StepContext>& contexts) {
         bool changed = false;
         std::uint32_t first_cell = 0;
@@ -375,135 +574,16 @@ class ParallelEnsemble final : public EnsembleStepper {
         if (!changed) return;
         cells_ = first_cell;
         exec_.upload(grids_, host_grids_);
-        cell_start_.resize(cells_);
-        cell_end_.resize(cells_);
-        cell_key_bits_ = key_bits(cells_);
+        cell_count_.resize(cells_);
+        cell_start_.resize(cells_ + 1);
+        exec_.fill(cell_count_, cells_, 0u);
+        exec_.upload_into(status_, std::vector<RunStatus>{with_forced_rebuild()});
+        ++layout_;
     }
-
-    // The values of an exclusive scan where each system's spheres begin, plus its total.
-    std::vector<std::uint32_t> at_system_starts(const Array<std::uint32_t>& scanned,
-                                                std::uint64_t total) {
-        exec_.launch(members_.size(), GatherAt{scanned.data(), system_first_sphere_.data(),
-                                               boundary_values_.data()});
-        std::vector<std::uint32_t> values;
-        exec_.download(boundary_values_, members_.size(), values);
-        values.push_back(static_cast<std::uint32_t>(total));
-        return values;
-    }
-
-    void find_contacts(std::vector<StepStatistics>& stats) {
-        const auto spheres = static_cast<std::uint32_t>(host_sphere_count());
-        const std::size_t systems = members_.size();
-        exec_.launch(spheres, KeySpheresByCell{sphere_arrays(), system_arrays(), cell_key_.data(),
-                                               cell_sphere_.data()});
-        exec_.sort_by_key(cell_key_, cell_sphere_, spheres, cell_key_bits_);
-        exec_.fill(cell_start_, cells_, 0u);
-        exec_.fill(cell_end_, cells_, 0u);
-        exec_.launch(spheres,
-                     MarkRuns{cell_key_.data(), spheres, cell_start_.data(), cell_end_.data()});
-        const CellList cells{cell_sphere_.data(), cell_start_.data(), cell_end_.data()};
-        exec_.launch(spheres, CountContacts{sphere_arrays(), body_arrays(), cells, system_arrays(),
-                                            body_count_.data(), plate_count_.data()});
-        const std::uint64_t body_contacts =
-            exec_.exclusive_scan(body_count_, body_offset_, spheres);
-        const std::uint64_t plate_contacts =
-            exec_.exclusive_scan(plate_count_, plate_offset_, spheres);
-        const std::uint64_t total = body_contacts + plate_contacts;
-        if (total > 0x7fffffffULL)
-            throw std::length_error("rodsea: more than 2^31 contacts in one step");
-        contact_count_ = static_cast<std::uint32_t>(total);
-        body_contact_count_ = static_cast<std::uint32_t>(body_contacts);
-        // Where each system's contacts are: segment m of `segments_` its body contacts, segment
-        // systems + m its plate contacts (contiguous: body contacts of every system come first).
-        const std::vector<std::uint32_t> body_at = at_system_starts(body_offset_, body_contacts);
-        const std::vector<std::uint32_t> plate_at = at_system_starts(plate_offset_, plate_contacts);
-        segments_.assign(body_at.begin(), body_at.end());
-        for (std::size_t m = 1; m <= systems; ++m)
-            segments_.push_back(body_contact_count_ + plate_at[m]);
-        for (std::size_t m = 0; m < systems; ++m)
-            ranges_[m] = {body_at[m], body_at[m + 1] - body_at[m],
-                          body_contact_count_ + plate_at[m]};
-        if (contacts_.size() < contact_count_) {
-            const std::size_t room = contact_count_ + contact_count_ / 4 + 64;
-            contacts_.resize(room);
-            depth_.resize(room);
-            for (auto* a : {&impulses_, &body_collisions_, &plate_collisions_, &unresolved_,
-                            &island_key_, &island_order_, &partner_})
-                a->resize(room);
-            hit_speed_.resize(room);
-            island_sweeps_.resize(room);
-        }
-        exec_.launch(spheres, WriteContacts{sphere_arrays(), body_arrays(), species_arrays(), cells,
-                                            system_arrays(), body_offset_.data(),
-                                            plate_offset_.data(), body_contact_count_,
-                                            contacts_.data(), depth_.data(), partner_.data()});
-        std::vector<double> deepest;
-        exec_.segmented_max(depth_, segments_, deepest);
-        gross_.assign(systems, 0);
-        for (std::size_t m = 0; m < systems; ++m) {
-            stats[m].body_contacts = ranges_[m].body_count;
-            stats[m].plate_contacts = plate_count_of(m);
-            stats[m].max_overlap_fraction = std::max(deepest[m], deepest[systems + m]);
-            if (stats[m].max_overlap_fraction > gross_overlap_fraction_) count_gross(m);
-        }
-    }
-
-    // Rare (a blow-up): counted on the host.
-    void count_gross(std::size_t m) {
-        std::vector<double> depth, plate;
-        exec_.download(depth_, ranges_[m].body_first, ranges_[m].body_count, depth);
-        exec_.download(depth_, ranges_[m].plate_first, plate_count_of(m), plate);
-        depth.insert(depth.end(), plate.begin(), plate.end());
-        gross_[m] = static_cast<std::size_t>(std::count_if(
-            depth.begin(), depth.end(), [this](double d) { return d > gross_overlap_fraction_; }));
-    }
-
-    void resolve(std::vector<StepStatistics>& stats) {
-        const std::size_t systems = members_.size();
-        for (std::size_t m = 0; m < systems; ++m)
-            stats[m].unresolved = gross_[m];
-        const std::uint32_t c = contact_count_;
-        const auto n = static_cast<std::uint32_t>(host_body_count());
-        if (c == 0) return;
-        const BodyArrays bodies = body_arrays();
-        exec_.launch(n, WorldInverseInertia{bodies, species_arrays(), inv_mass_.data(),
-                                            inv_inertia_.data()});
-        exec_.launch(n, InitIslands{parent_.data()});
-        exec_.launch(body_contact_count_, HookIslands{contacts_.data(), parent_.data()});
-        exec_.launch(n, CompressIslands{parent_.data()});
-        exec_.launch(c, KeyContactsByIsland{contacts_.data(), parent_.data(), island_key_.data(),
-                                            island_order_.data()});
-        exec_.sort_by_key(island_key_, island_order_, c, key_bits(n));
-        exec_.fill(island_start_, n, 0u);
-        exec_.fill(island_end_, n, 0u);
-        exec_.launch(c, MarkRuns{island_key_.data(), c, island_start_.data(), island_end_.data()});
-        exec_.fill(last_changed_, n, 0);
-        exec_.fill(island_sweeps_, c, 0.0);
-        for (auto* a : {&impulses_, &body_collisions_, &plate_collisions_, &unresolved_})
-            exec_.fill(*a, c, 0u);
-        exec_.fill(hit_speed_, c, 0.0);
-        const IslandTallies tallies{island_sweeps_.data(),   impulses_.data(),
-                                    body_collisions_.data(), plate_collisions_.data(),
-                                    unresolved_.data(),      hit_speed_.data()};
-        exec_.launch(c, SweepIslands{contacts_.data(), island_key_.data(), island_order_.data(),
-                                     island_end_.data(),
-                                     IslandBodies{bodies, inv_mass_.data(), inv_inertia_.data()},
-                                     system_arrays(), last_changed_.data(), tallies});
-        std::vector<double> sweeps;
-        std::vector<std::uint64_t> impulses, body_collisions, plate_collisions, unresolved;
-        exec_.segmented_max(island_sweeps_, segments_, sweeps);
-        exec_.segmented_sum(impulses_, segments_, impulses);
-        exec_.segmented_sum(body_collisions_, segments_, body_collisions);
-        exec_.segmented_sum(plate_collisions_, segments_, plate_collisions);
-        exec_.segmented_sum(unresolved_, segments_, unresolved);
-        for (std::size_t m = 0; m < systems; ++m) {
-            const std::size_t p = systems + m;  // the system's plate-contact segment
-            stats[m].sweeps = static_cast<int>(std::max(sweeps[m], sweeps[p]));
-            stats[m].impulses = impulses[m] + impulses[p];
-            stats[m].body_collisions = body_collisions[m] + body_collisions[p];
-            stats[m].plate_collisions = plate_collisions[m] + plate_collisions[p];
-            stats[m].unresolved += unresolved[m] + unresolved[p];
-        }
+    RunStatus with_forced_rebuild() const {
+        RunStatus s = host_status_;
+        s.force_rebuild = 1;
+        return s;
     }
 
     double gross_overlap_fraction_;
@@ -531,36 +611,51 @@ class ParallelEnsemble final : public EnsembleStepper {
     Array<double> sphere_radius_;
     Array<Vec3> sphere_position_;
 
-    // The systems.
-    Array<StepContext> contexts_;
-    Array<std::uint32_t> system_of_body_, first_body_of_system_, system_first_sphere_;
+    // The systems and the run.
+    Array<StepContext> planned_, current_;
+    Array<std::uint32_t> system_of_body_, first_body_of_system_;
     Array<SystemGrid> grids_;
     std::vector<SystemGrid> host_grids_;
-    std::vector<ContactRange> ranges_;
-    std::vector<std::uint32_t> segments_;  // body then plate contact ranges, 2 × systems
-    std::vector<std::size_t> gross_;
+    Array<SystemRun> runs_;
+    Array<StepCounts> step_counts_;
+    Array<HaltBounds> halt_;
+    std::vector<HaltBounds> host_halt_;
+    Array<double> travel_;
+    Array<RunStatus> status_;
+    RunStatus host_status_;
 
-    // Scratch of the stages, reused every step.
-    Array<double> drift2_, turn2_;
+    // What a run that needs more room starts again from.
+    Array<Vec3> snapshot_position_, snapshot_velocity_, snapshot_spin_;
+    Array<Quat> snapshot_orientation_;
+    Array<double> snapshot_travel_;
+
+    // The cell list and the neighbour list.
     std::uint32_t cells_ = 0;
-    int cell_key_bits_ = 1;
-    Array<std::uint32_t> cell_key_, cell_sphere_, cell_start_, cell_end_;
-    Array<std::uint32_t> body_count_, plate_count_, body_offset_, plate_offset_;
-    Array<std::uint32_t> boundary_values_;
+    Array<std::uint32_t> cell_of_, sphere_rank_, cell_count_, cell_start_, by_cell_;
+    Array<std::uint32_t> neighbour_slots_, neighbour_count_;
+    std::uint32_t slot_capacity_ = 0;
+
+    // The contacts and the islands.
+    Array<std::uint64_t> contact_counts_, contact_offsets_;
     Array<Contact> contacts_;
-    Array<double> depth_;
-    std::uint32_t contact_count_ = 0, body_contact_count_ = 0;
-    Array<std::uint32_t> partner_;
+    Array<double> hit_speed_;
+    std::uint32_t contact_capacity_ = 0;
+    Array<std::uint32_t> island_key_, island_rank_, island_order_;
+    Array<std::uint32_t> parent_, island_count_, island_start_;
+    Array<int> last_changed_;
     Array<double> inv_mass_;
     Array<Mat3> inv_inertia_;
-    Array<std::uint32_t> parent_, island_key_, island_order_, island_start_, island_end_;
-    Array<int> last_changed_;
-    Array<double> island_sweeps_;
-    Array<std::uint32_t> impulses_, body_collisions_, plate_collisions_, unresolved_, kicks_;
-    Array<double> hit_speed_;
-    std::uint64_t steps_ = 0;
 
-    // The host's copies are refreshed when read after a step.
+    // Timing and graphs.
+    bool time_stages_ = false;
+    double unused_ = 0.0;
+    bool graphs_wanted_ = true;
+    std::uint64_t runs_taken_ = 0;
+    std::uint64_t layout_ = 0;  // counts changes of any array a recorded graph points into
+    std::uint64_t graph_layout_ = ~std::uint64_t{0};
+    typename Executor::Graph graph_;
+
+    // The host's copies are refreshed when read after a run.
     mutable std::vector<std::vector<Contact>> host_contacts_;
     mutable std::vector<char> bodies_stale_, spheres_stale_, contacts_stale_;
 };
