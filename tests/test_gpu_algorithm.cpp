@@ -15,9 +15,11 @@
 #include <vector>
 
 #include "each_backend.hpp"
+#include "rodsea/engine/backend_factory.hpp"
 #include "rodsea/engine/ensemble.hpp"
 #include "rodsea/engine/parallel/host_executor.hpp"
 #include "rodsea/engine/parallel/island_kernels.hpp"
+#include "rodsea/engine/parallel/parallel_ensemble.hpp"
 #include "rodsea/engine/simulation.hpp"
 #include "rodsea/engine/state_check.hpp"
 #include "rodsea/error.hpp"
@@ -114,12 +116,18 @@ TEST_P(GpuAlgorithm, RepeatsBitForBit) {
     const Scene scene = noisy_dense_mixture(3);
     Simulation a(scene.params, scene.bodies, options(1));
     Simulation b(scene.params, scene.bodies, options(2));
+    Simulation c(scene.params, scene.bodies, options(1));
     a.run(1500);
     b.run(500);
     b.run(1000);
+    for (int k = 0; k < 1500; ++k)  // a device's runs of one step each
+        c.step();
     EXPECT_GT(a.totals().noise_kicks, 0u);
     EXPECT_GT(a.totals().impulses, 1000u);
     EXPECT_EQ(a.state_hash(), b.state_hash());
+    EXPECT_EQ(a.state_hash(), c.state_hash());
+    EXPECT_EQ(a.totals().impulses, c.totals().impulses);
+    EXPECT_EQ(a.totals().steps, 1500u);
 }
 
 // The GPU's algorithm is the CPU's: the same contact list, the same islands, each swept in list
@@ -258,7 +266,76 @@ TEST_P(GpuAlgorithm, AnEnsembleWithoutARetiredSystemStepsTheOthersOn) {
     ensemble.step();  // nothing left to step: nothing happens
 }
 
+// A system that blows up within a run of steps stops after that step, the others' steps go on:
+// on a device to the run's end (the same run for all), on the CPU they stop with it. Either way
+// the ensemble names it, and without it the healthy system steps on to the bits it reaches alone.
+TEST_P(GpuAlgorithm, ABlowUpWithinARunStopsThatSystemThere) {
+    const Scene healthy = noisy_dense_mixture(33);
+    std::vector<Simulation> systems;
+    systems.push_back(Simulation(healthy.params, healthy.bodies));
+    systems.push_back(doomed_beads());
+    Ensemble ensemble(std::move(systems), options());
+    EXPECT_THROW(ensemble.run(40), BlowUpError);
+    const std::uint64_t others = GetParam() == BackendKind::cpu ? 1u : 40u;
+    EXPECT_EQ(ensemble.step_count(0), others);
+    EXPECT_EQ(ensemble.step_count(1), 1u);
+    EXPECT_EQ(ensemble.last_run(0).steps, others);
+    EXPECT_FALSE(ensemble.blow_up(0));
+    ASSERT_TRUE(ensemble.blow_up(1));
+    ensemble.retire({1});
+    ensemble.run(60 - others);
+    Simulation alone(healthy.params, healthy.bodies, options());
+    alone.run(60);
+    EXPECT_EQ(ensemble.state_hash(0), alone.state_hash());
+    EXPECT_EQ(ensemble.totals(0).impulses, alone.totals().impulses);
+}
+
+// The neighbour list is rebuilt when the spheres may have moved half its skin, not every step:
+// a shaken dense mixture (in-plane speeds up to 100 mm/s, 0.125 µm per step) needs one every
+// ~200 steps at most by that bound. The CPU's list measures the actual moves and so lasts longer.
+TEST_P(GpuAlgorithm, TheNeighbourListLastsManySteps) {
+    const Scene scene = noisy_dense_mixture(17);
+    Simulation sim(scene.params, scene.bodies, options());
+    sim.run(2000);
+    std::printf("[ measured ] %s: %llu builds in 2000 steps\n", to_string(GetParam()),
+                static_cast<unsigned long long>(sim.pair_list_builds()));
+    EXPECT_GE(sim.pair_list_builds(), 1u);
+    EXPECT_LE(sim.pair_list_builds(), 100u);
+}
+
 RODSEA_ON_EACH_BACKEND(GpuAlgorithm);
+
+// A run whose lists outgrow their room (here one partner per sphere and one contact per step to
+// start with) is taken again from its start with more room: the bits are those of a stepper that
+// had the room from the start, run by run.
+TEST(DataParallelRuns, ARunThatOutgrowsItsRoomIsTakenAgainToTheSameBits) {
+    const Scene scene = noisy_dense_mixture(9);
+    const SpeciesTable species = SpeciesTable::from(scene.params);
+    const auto stepper = [&](parallel::Room room) {
+        std::vector<parallel::EnsembleMember> members;
+        members.push_back(ensemble_member(species, scene.bodies));
+        return parallel::ParallelEnsemble<parallel::HostExecutor>(
+            std::move(members), kGrossOverlapFraction, parallel::HostExecutor(1), room);
+    };
+    auto roomy = stepper({});
+    auto cramped = stepper({1, 1});
+    std::vector<StepsDone> roomy_done, cramped_done;
+    StageProfile profile;
+    std::uint64_t step = 0;
+    for (int run = 0; run < 3; ++run) {
+        std::vector<StepContext> contexts;
+        for (int k = 0; k < 200; ++k)
+            contexts.push_back(step_context(scene.params, ++step));
+        roomy.run(contexts, 200, nullptr, roomy_done, profile);
+        cramped.run(contexts, 200, nullptr, cramped_done, profile);
+        SCOPED_TRACE("run " + std::to_string(run));
+        EXPECT_EQ(cramped_done[0].tally.impulses, roomy_done[0].tally.impulses);
+        EXPECT_EQ(cramped_done[0].last.body_contacts, roomy_done[0].last.body_contacts);
+        EXPECT_EQ(state_hash(cramped.bodies(0), step), state_hash(roomy.bodies(0), step));
+    }
+    EXPECT_GT(roomy_done[0].tally.impulses, 100u);
+    EXPECT_EQ(cramped.contacts(0).size(), roomy.contacts(0).size());
+}
 
 // On the CPU an ensemble steps its systems side by side, min(threads, systems) at a time on one
 // thread each, or, with two threads or more per system, in turn on all of them. Three unlike
@@ -379,8 +456,8 @@ TEST(Islands, EveryContactIsLabelledWithTheSmallestBodyOfItsComponent) {
     exec.launch(count, parallel::KeyContactsByIsland{contacts.data(), parent.data(),
                                                      island_count.data(), key.data(), rank.data()});
     exec.exclusive_scan(island_count, island_start, bodies);
-    exec.launch(count, parallel::GatherIslands{key.data(), rank.data(), island_start.data(),
-                                               order.data()});
+    exec.launch(
+        count, parallel::GatherIslands{key.data(), rank.data(), island_start.data(), order.data()});
     std::vector<std::uint32_t> label, counted, island_at, gathered;
     exec.download(key, count, label);
     exec.download(island_count, bodies, counted);

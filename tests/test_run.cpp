@@ -401,8 +401,8 @@ TEST(RunWorkflow, BadConfigStopsBeforeAnyOutput) {
     EXPECT_FALSE(std::filesystem::exists(out));
 }
 
-// Batch jobs get a line every 5 %: 0.01 s of 2000 steps logs at 5, 10, ..., 100 %, and the
-// redraw only happens on steps that are multiples of 64, so each threshold prints at most once.
+// Batch jobs get a line every 5 %: 0.01 s of 8000 steps logs at 5, 10, ..., 100 %. The loop
+// steps in runs of at most 1 % of the steps, so each threshold prints once, near its step.
 TEST(RunProgress, LogLinesEveryFivePercentAndNothingWhenQuiet) {
     const ScratchDir dir("run-progress");
     const RunPlan plan = load_config_string(small_config(0.01, 0.005), "test");
@@ -414,7 +414,7 @@ TEST(RunProgress, LogLinesEveryFivePercentAndNothingWhenQuiet) {
     int progress_lines = 0;
     for (std::string l; std::getline(lines, l);)
         if (l.rfind("rodsea: ", 0) == 0 && l.find("%  t = ") != std::string::npos) ++progress_lines;
-    EXPECT_GE(progress_lines, 18);  // 19 thresholds below 100 %, one may share a 64-step block
+    EXPECT_GE(progress_lines, 18);  // 19 thresholds below 100 %, one may share a run
     EXPECT_LE(progress_lines, 20);  // plus the final line
     EXPECT_EQ(out.str().find('\r'), std::string::npos);
 

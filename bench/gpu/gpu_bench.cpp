@@ -7,8 +7,12 @@
 //
 //   rodsea_gpu_bench [--seconds S] [--cpu-threads T] [--only NAME] [--skip-cpu]
 //
-// Prints one CSV row per system and backend: spheres, steps/s, sphere-steps/s, the seconds per
-// step of each stage, the contacts and sweeps of the last step.
+// Prints one CSV row per system and backend: spheres, steps/s, sphere-steps/s, simulated seconds
+// per wall hour, the microseconds per step of each stage (or of whole steps, `whole_us`, where a
+// device queues a run's steps together), the contacts and sweeps of the last step and the
+// neighbour-list builds per 1000 steps. The GPU has three rows: `gpu` (runs of steps replayed as
+// CUDA graphs), `gpu-launches` (each kernel launched singly: RODSEA_GPU_GRAPHS=0) and
+// `gpu-stages` (each stage waited for and timed: BackendOptions::time_stages).
 #include <omp.h>
 
 #include <algorithm>
@@ -17,6 +21,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rodsea/engine/backend_factory.hpp"
@@ -58,13 +63,18 @@ struct Timing {
     rodsea::StageProfile per_step;
     std::size_t contacts = 0;
     int sweeps = 0;
+    double builds_per_kilostep = 0.0;
 };
 
-// Steps a Simulation or an Ensemble for `seconds` of wall time, in chunks of `chunk` steps,
-// after 200 steps that let the start spread out: steps/s and seconds per step of each stage.
+// Steps before timing: 2.5 ms, half a drive period, so that the bodies are off the lattice's
+// heights and colliding with the plates and each other as they will for the rest of the run.
+constexpr std::uint64_t kWarmUpSteps = 2000;
+
+// Steps a Simulation or an Ensemble for `seconds` of wall time, in runs of `chunk` steps, after
+// the warm-up: steps/s and seconds per step of each stage.
 template <class Stepper>
 Timing time_stepping(Stepper& stepper, double seconds, std::uint64_t chunk) {
-    stepper.run(200);
+    stepper.run(kWarmUpSteps);
     const rodsea::StageProfile before = stepper.profile();
     const auto start = std::chrono::steady_clock::now();
     std::uint64_t steps = 0;
@@ -81,16 +91,20 @@ Timing time_stepping(Stepper& stepper, double seconds, std::uint64_t chunk) {
     t.per_step = {(p.free_flight - before.free_flight) / n,
                   (p.sphere_update - before.sphere_update) / n,
                   (p.contact_search - before.contact_search) / n,
-                  (p.resolution - before.resolution) / n, (p.noise - before.noise) / n};
+                  (p.resolution - before.resolution) / n,
+                  (p.noise - before.noise) / n,
+                  (p.whole_steps - before.whole_steps) / n};
     return t;
 }
 
 Timing time_steps(const rodsea::Scene& scene, const rodsea::BackendOptions& options,
                   double seconds) {
     rodsea::Simulation sim(scene.params, scene.bodies, options);
-    Timing t = time_stepping(sim, seconds, 50);
+    Timing t = time_stepping(sim, seconds, rodsea::Simulation::kStepsPerRun);
     t.contacts = sim.last_step().body_contacts + sim.last_step().plate_contacts;
     t.sweeps = sim.last_step().sweeps;
+    t.builds_per_kilostep = 1000.0 * static_cast<double>(sim.pair_list_builds()) /
+                            static_cast<double>(sim.step_count());
     return t;
 }
 
@@ -105,7 +119,7 @@ Timing time_ensemble(int count, const rodsea::BackendOptions& options, double se
         systems.emplace_back(s.params, s.bodies);
     }
     rodsea::Ensemble ensemble(std::move(systems), options);
-    Timing t = time_stepping(ensemble, seconds, 20);
+    Timing t = time_stepping(ensemble, seconds, rodsea::Simulation::kStepsPerRun);
     for (std::size_t m = 0; m < ensemble.size(); ++m) {
         t.contacts += ensemble.last_step(m).body_contacts + ensemble.last_step(m).plate_contacts;
         t.sweeps = std::max(t.sweeps, ensemble.last_step(m).sweeps);
@@ -116,11 +130,28 @@ Timing time_ensemble(int count, const rodsea::BackendOptions& options, double se
 void print_row(const std::string& system, const char* backend, int threads, double spheres,
                const Timing& t) {
     const rodsea::StageProfile& s = t.per_step;
-    std::printf("%s,%s,%d,%.0f,%.1f,%.4g,%.3g,%.3g,%.3g,%.3g,%.3g,%zu,%d\n", system.c_str(),
-                backend, threads, spheres, t.steps_per_second, t.steps_per_second * spheres,
-                s.free_flight * 1e6, s.sphere_update * 1e6, s.contact_search * 1e6,
-                s.resolution * 1e6, s.noise * 1e6, t.contacts, t.sweeps);
+    const double simulated_per_hour = t.steps_per_second * rodsea::EngineParameters{}.dt * 3600.0;
+    std::printf("%s,%s,%d,%.0f,%.1f,%.4g,%.3g,%.3g,%.3g,%.3g,%.3g,%.3g,%.3g,%zu,%d,%.3g\n",
+                system.c_str(), backend, threads, spheres, t.steps_per_second,
+                t.steps_per_second * spheres, simulated_per_hour, s.free_flight * 1e6,
+                s.sphere_update * 1e6, s.contact_search * 1e6, s.resolution * 1e6, s.noise * 1e6,
+                s.whole_steps * 1e6, t.contacts, t.sweeps, t.builds_per_kilostep);
     std::fflush(stdout);
+}
+
+// The GPU's three ways of running (the file's header): graphs, single launches, timed stages.
+template <class Time>
+void gpu_rows(const std::string& system, double spheres, Time&& time) {
+    const std::pair<const char*, bool> ways[] = {
+        {"gpu", false}, {"gpu-launches", false}, {"gpu-stages", true}};
+    for (const auto& [name, stages] : ways) {
+        setenv("RODSEA_GPU_GRAPHS", std::string(name) == "gpu-launches" ? "0" : "1", 1);
+        rodsea::BackendOptions o;
+        o.backend = rodsea::BackendKind::gpu;
+        o.time_stages = stages;
+        print_row(system, name, 0, spheres, time(o));
+    }
+    unsetenv("RODSEA_GPU_GRAPHS");
 }
 
 }  // namespace
@@ -159,16 +190,16 @@ int main(int argc, char** argv) {
     if (want("paper-beads")) systems.push_back({"paper-beads", paper_beads()});
 
     std::printf(
-        "system,backend,threads,spheres,steps_per_s,sphere_steps_per_s,free_flight_us,"
-        "spheres_us,search_us,resolution_us,noise_us,contacts,sweeps\n");
+        "system,backend,threads,spheres,steps_per_s,sphere_steps_per_s,simulated_s_per_hour,"
+        "free_flight_us,spheres_us,search_us,resolution_us,noise_us,whole_us,contacts,sweeps,"
+        "builds_per_1000_steps\n");
     for (const System& s : systems) {
         rodsea::Simulation probe(s.scene.params, s.scene.bodies);
         const auto spheres = static_cast<double>(probe.spheres().size());
-        if (gpu.usable) {
-            rodsea::BackendOptions o;
-            o.backend = rodsea::BackendKind::gpu;
-            print_row(s.name, "gpu", 0, spheres, time_steps(s.scene, o, seconds));
-        }
+        if (gpu.usable)
+            gpu_rows(s.name, spheres, [&](const rodsea::BackendOptions& o) {
+                return time_steps(s.scene, o, seconds);
+            });
         if (!skip_cpu) {
             rodsea::BackendOptions o;
             o.threads = cpu_threads;
@@ -178,11 +209,10 @@ int main(int argc, char** argv) {
 
     if (want("ensemble-64x1e4")) {
         const double spheres = 64 * 1e4;  // about: each mixture holds ~10⁴
-        if (gpu.usable) {
-            rodsea::BackendOptions o;
-            o.backend = rodsea::BackendKind::gpu;
-            print_row("ensemble-64x1e4", "gpu", 0, spheres, time_ensemble(64, o, seconds));
-        }
+        if (gpu.usable)
+            gpu_rows("ensemble-64x1e4", spheres, [&](const rodsea::BackendOptions& o) {
+                return time_ensemble(64, o, seconds);
+            });
         if (!skip_cpu) {
             rodsea::BackendOptions o;
             o.threads = cpu_threads;
@@ -198,9 +228,9 @@ int main(int argc, char** argv) {
         rodsea::BackendOptions o;
         o.backend = rodsea::BackendKind::gpu;
         rodsea::Simulation a(scene.params, scene.bodies, o), b(scene.params, scene.bodies, o);
-        a.run(2000);
-        b.run(2000);
-        std::fprintf(stderr, "determinism: two GPU runs of 2000 steps: %s (%016llx, %016llx)\n",
+        a.run(3000);
+        b.run(3000);
+        std::fprintf(stderr, "determinism: two GPU runs of 3000 steps: %s (%016llx, %016llx)\n",
                      a.state_hash() == b.state_hash() ? "same bits" : "DIFFERENT",
                      static_cast<unsigned long long>(a.state_hash()),
                      static_cast<unsigned long long>(b.state_hash()));

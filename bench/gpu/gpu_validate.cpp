@@ -156,6 +156,7 @@ void compare(const char* what, const char* unit, const Estimate& cpu, const Esti
 }  // namespace
 
 int main(int argc, char** argv) {
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);  // each row as it comes, should a time limit cut it
     const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
     const rodsea::GpuAvailability gpu = rodsea::gpu_availability();
     BackendOptions on_cpu, on_gpu;

@@ -10,7 +10,8 @@
 # into .gpu-debs/ (carried likewise), and are skipped without it.
 #
 # Each part has a time limit, so that one slow part cannot eat the lease:
-#   TESTS=0|1 (1)  VALIDATE=0|quick|full (quick)  BENCH_SECONDS (3)  BENCH_ONLY (all systems)
+#   TESTS=0|1 (1)  VALIDATE=0|quick|full (full), VALIDATE_LIMIT (240 s)
+#   BENCH_SECONDS (3), BENCH_ONLY (all systems), BENCH_LIMIT (300 s)
 #   PROFILE=0|1 (1: per-kernel times of a few steps of the paper's largest rod system, with ncu)
 #
 # Writes to $OUT (the device tool's folder) or bench/gpu/out: device.txt (nvidia-smi),
@@ -69,20 +70,10 @@ elif [ "${TESTS:-1}" = 1 ]; then
   echo "no GoogleTest (.gpu-prebuilt or .gpu-debs): the tests are skipped" | tee "$out/tests.txt"
 fi
 
-case "${VALIDATE:-quick}" in
-  0) ;;
-  quick | full)
-    stamp validate
-    flag=$([ "${VALIDATE:-quick}" = quick ] && echo --quick)
-    timeout 240 "$bin/rodsea_gpu_validate" $flag >"$out/validate.md" 2>&1 || status=1
-    cat "$out/validate.md"
-    ;;
-esac
-
 stamp bench
 only=()
 [ -n "${BENCH_ONLY:-}" ] && only=(--only "$BENCH_ONLY")
-timeout 300 "$bin/rodsea_gpu_bench" --seconds "${BENCH_SECONDS:-3}" "${only[@]}" \
+timeout "${BENCH_LIMIT:-300}" "$bin/rodsea_gpu_bench" --seconds "${BENCH_SECONDS:-3}" "${only[@]}" \
   >"$out/bench.csv" 2>"$out/bench.log" || status=1
 cat "$out/bench.csv" "$out/bench.log"
 
@@ -90,9 +81,10 @@ if [ "${PROFILE:-1}" = 1 ]; then
   stamp profile
   ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
   if [ -n "$ncu" ]; then
-    # A few steps of the largest rod system after its warm-up: each kernel's duration.
-    timeout 120 "$ncu" --clock-control none --metrics gpu__time_duration.sum --csv \
-      --launch-skip "${PROFILE_SKIP:-12000}" --launch-count "${PROFILE_COUNT:-200}" \
+    # Ten steps of the largest rod system after its warm-up (2000 steps of 17 launches each),
+    # launched singly: each kernel's duration.
+    RODSEA_GPU_GRAPHS=0 timeout 120 "$ncu" --clock-control none --metrics gpu__time_duration.sum \
+      --csv --launch-skip "${PROFILE_SKIP:-40000}" --launch-count "${PROFILE_COUNT:-170}" \
       "$bin/rodsea_gpu_bench" --only paper-rods --skip-cpu --seconds 0.5 \
       >"$out/kernels.csv" 2>"$out/ncu.log" || echo "ncu failed: $(tail -3 "$out/ncu.log")"
     wc -l "$out/kernels.csv"
@@ -100,5 +92,17 @@ if [ "${PROFILE:-1}" = 1 ]; then
     echo "no ncu on this machine"
   fi
 fi
+
+# Last: the longest part, whose table prints row by row.
+case "${VALIDATE:-full}" in
+  0) ;;
+  quick | full)
+    stamp validate
+    flag=$([ "${VALIDATE:-full}" = quick ] && echo --quick)
+    timeout "${VALIDATE_LIMIT:-240}" "$bin/rodsea_gpu_validate" $flag >"$out/validate.md" 2>&1 ||
+      status=1
+    cat "$out/validate.md"
+    ;;
+esac
 stamp done
 exit $status

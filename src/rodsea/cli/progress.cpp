@@ -59,7 +59,7 @@ double ProgressReporter::steps_per_second() const {
 void ProgressReporter::update(std::uint64_t step, double polar_order) {
     last_step_ = step;  // the rate is wanted in the time series even when quiet
     // The last step is finish()'s to report, once.
-    if (style_ == ProgressStyle::quiet || (step & 63u) != 0 || step >= total_steps_) return;
+    if (style_ == ProgressStyle::quiet || step >= total_steps_) return;
     const double percent = 100.0 * static_cast<double>(step) /
                            static_cast<double>(std::max<std::uint64_t>(total_steps_, 1));
     if (style_ == ProgressStyle::log_lines) {

@@ -59,24 +59,22 @@ void require_usable_backend(BackendKind backend, const std::string& key) {
     if (!gpu.usable) throw InvalidParameter(key, "gpu", "cpu on this machine", gpu.description);
 }
 
-namespace {
-
-parallel::InitialSpheres initial_spheres(const SpeciesTable& species, BodyState bodies) {
+parallel::EnsembleMember ensemble_member(const SpeciesTable& species, BodyState bodies) {
     cpu::SphereTable table;
     table.assign(bodies.species, species);
     table.update_positions(bodies.view(), species, 1);
-    return {std::move(table.body), std::move(table.radius), std::move(table.position),
-            std::move(table.first_of)};
+    return {&species,
+            std::move(bodies),
+            {std::move(table.body), std::move(table.radius), std::move(table.position),
+             std::move(table.first_of)}};
 }
-
-}  // namespace
 
 std::unique_ptr<parallel::EnsembleStepper> make_ensemble_stepper(
     const std::vector<std::pair<const SpeciesTable*, BodyState>>& systems,
     const BackendOptions& options) {
     std::vector<parallel::EnsembleMember> members;
     for (const auto& [species, bodies] : systems)
-        members.push_back({species, bodies, initial_spheres(*species, bodies)});
+        members.push_back(ensemble_member(*species, bodies));
     std::unique_ptr<parallel::EnsembleStepper> stepper;
     switch (options.backend) {
         case BackendKind::gpu_on_host:

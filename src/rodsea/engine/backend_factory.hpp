@@ -15,7 +15,8 @@ namespace rodsea {
 
 namespace parallel {
 class EnsembleStepper;
-}
+struct EnsembleMember;
+}  // namespace parallel
 
 struct GpuAvailability {
     bool usable = false;
@@ -38,6 +39,10 @@ BackendKind backend_flag(const std::string& flag, const std::string& text);
 // asked for and gpu_availability() says it cannot be used.
 std::unique_ptr<StepBackend> make_backend(const SpeciesTable& species, BodyState bodies,
                                           const BackendOptions& options);
+
+// A system as the data-parallel step takes it: its species (which must outlive it), state and
+// sphere centres.
+parallel::EnsembleMember ensemble_member(const SpeciesTable& species, BodyState bodies);
 
 // The data-parallel step of many systems (gpu or gpu_on_host), each given as its species (which
 // must outlive the stepper) and state. Throws InvalidParameter as make_backend does.

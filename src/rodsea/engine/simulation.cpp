@@ -103,8 +103,8 @@ void Simulation::run(std::uint64_t steps) {
         contexts.clear();
         for (std::uint64_t k = 1; k <= length; ++k)
             contexts.push_back(step_context(params_, step_count_ + k));
-        const StepsDone done = backend_->run_steps(
-            contexts, options_.stop_on_blow_up ? &bounds_ : nullptr, profile_);
+        const StepsDone done =
+            backend_->run_steps(contexts, options_.stop_on_blow_up ? &bounds_ : nullptr, profile_);
         step_count_ += done.steps;
         steps -= done.steps;
         last_ = done.last;

@@ -150,13 +150,15 @@ class EnsembleLoop {
         // Read only when a frame, an end or a progress file needs it: it reads the clock.
         const std::function<double()> rate = [this] { return progress_->steps_per_second(); };
         const RunSession::BeforePrinting settle = [this] { settle_progress(); };
-        std::uint64_t iteration = 0;
         while (!active_.empty()) {
+            const std::uint64_t steps = steps_this_time();
+            const auto started = std::chrono::steady_clock::now();
             try {
-                ensemble_.step();
+                ensemble_.run(steps);
             } catch (const BlowUpError&) {
                 // Each system's blow-up is read below; the others stepped as usual.
             }
+            pace(steps, seconds_since(started));
             std::vector<std::size_t> ended;
             for (std::size_t m = 0; m < active_.size(); ++m) {
                 RunSession& s = *active_[m];
@@ -177,16 +179,14 @@ class EnsembleLoop {
                 retire(ended);
                 return stop_all(signal, codes);
             }
-            if ((++iteration & 63u) == 0) {
-                for (std::size_t m = 0; m < active_.size(); ++m) {
-                    if (std::find(ended.begin(), ended.end(), m) != ended.end()) continue;
-                    if (const auto code = active_[m]->between_steps(rate(), err_, settle)) {
-                        codes[order_[m]] = *code;
-                        ended.push_back(m);
-                    }
+            for (std::size_t m = 0; m < active_.size(); ++m) {
+                if (std::find(ended.begin(), ended.end(), m) != ended.end()) continue;
+                if (const auto code = active_[m]->between_steps(rate(), err_, settle)) {
+                    codes[order_[m]] = *code;
+                    ended.push_back(m);
                 }
-                if (seconds_since(last_threads_check_) >= kThreadsCheckSeconds) adapt_threads();
             }
+            if (seconds_since(last_threads_check_) >= kThreadsCheckSeconds) adapt_threads();
             if (!ended.empty()) retire(ended);
         }
         return codes;
@@ -195,6 +195,26 @@ class EnsembleLoop {
   private:
     static double seconds_since(std::chrono::steady_clock::time_point t) {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+    }
+
+    // The ensemble steps in runs (a device reads its statistics once per run): up to the next
+    // step at which some session has a frame to write or ends, no more than 1 % of the lead
+    // run's steps (the progress moves by at most that), and short enough in wall time that a
+    // signal, a checkpoint or the progress waits at most about kRunSeconds.
+    std::uint64_t steps_this_time() const {
+        std::uint64_t steps =
+            std::min(steps_per_run_, std::max<std::uint64_t>(1, lead_->plan().total_steps() / 100));
+        for (const RunSession* s : active_)
+            steps = std::min(steps, s->steps_to_next_output());
+        return steps;
+    }
+    // Runs grow while they take well under kRunSeconds and shrink when they take more.
+    void pace(std::uint64_t steps, double seconds) {
+        if (steps < steps_per_run_) return;  // cut short by an output: says nothing
+        if (seconds < 0.25 * kRunSeconds && steps_per_run_ < kMostStepsPerRun)
+            steps_per_run_ *= 2;
+        else if (seconds > kRunSeconds && steps_per_run_ > 1)
+            steps_per_run_ /= 2;
     }
 
     // The progress follows the run with the most steps left (the first of them), from here.
@@ -275,6 +295,9 @@ class EnsembleLoop {
     bool told_threads_ = false;
     std::chrono::steady_clock::time_point last_threads_check_ = std::chrono::steady_clock::now();
     static constexpr double kThreadsCheckSeconds = 2.0;
+    static constexpr double kRunSeconds = 0.5;
+    static constexpr std::uint64_t kMostStepsPerRun = std::uint64_t{1} << 20;
+    std::uint64_t steps_per_run_ = 1;
 };
 
 // Everything about a checkpoint is checked against its plan before any file is touched.

@@ -141,10 +141,16 @@ void RunSession::write_progress(const char* state, double steps_per_second) {
     last_progress_ = Clock::now();
 }
 
+std::uint64_t RunSession::steps_to_next_output() const {
+    const std::uint64_t step = step_count(), every = plan_.steps_per_output();
+    const std::uint64_t next = std::min((step / every + 1) * every, plan_.total_steps());
+    return next > step ? next - step : 1;
+}
+
 std::optional<int> RunSession::after_step(const std::function<double()>& rate, std::ostream& out,
                                           std::ostream& err, ProgressStyle style,
                                           const BeforePrinting& before_printing) {
-    recorder_.accumulate(ensemble_->last_step(system_));
+    recorder_.accumulate(ensemble_->last_run(system_));
     const std::uint64_t step = step_count(), total = plan_.total_steps();
     const bool on_grid = step % plan_.steps_per_output() == 0;
     if (!on_grid && step != total) return std::nullopt;  // most steps: nothing more to do

@@ -49,6 +49,9 @@ class RunSession {
     const std::filesystem::path& dir() const { return dir_; }
     std::uint64_t step_count() const { return ensemble_->step_count(system_); }
     std::uint64_t steps_left() const { return plan_.total_steps() - step_count(); }
+    // Steps until this run next has something to do after a step (a frame and series row, or
+    // its end): the ensemble may take that many in one go.
+    std::uint64_t steps_to_next_output() const;
     double polar_order() const { return last_polar_order_; }  // in the last frame's row
     SeriesRecorder& recorder() { return recorder_; }
     SteadyStop& steady() { return steady_; }
@@ -65,10 +68,11 @@ class RunSession {
     // must end its line first.
     using BeforePrinting = std::function<void()>;
 
-    // After each step of the ensemble (not after a blow-up of this system): records the step,
-    // writes the frame due, and judges the end (the duration, a steady window, a state the
-    // engine should never produce, a failed write). Returns the run's exit code once it ended.
-    // `rate`, this session's steps/s, is read only for a frame or an end (it reads the clock).
+    // After each run of steps of the ensemble (not after a blow-up of this system; a run ends at
+    // the latest where steps_to_next_output() said): records its steps, writes the frame due, and
+    // judges the end (the duration, a steady window, a state the engine should never produce, a
+    // failed write). Returns the run's exit code once it ended. `rate`, this session's steps/s, is
+    // read only for a frame or an end (it reads the clock).
     std::optional<int> after_step(const std::function<double()>& rate, std::ostream& out,
                                   std::ostream& err, ProgressStyle style,
                                   const BeforePrinting& before_printing);

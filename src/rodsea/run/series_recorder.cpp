@@ -44,14 +44,14 @@ SeriesRecorder::SeriesRecorder(const RunPlan& plan)
     columns_.push_back({"steps_per_second", "s-1"});
 }
 
-void SeriesRecorder::accumulate(const StepStatistics& s) {
+void SeriesRecorder::accumulate(const StepTally& s) {
     max_overlap_ = std::max(max_overlap_, s.max_overlap_fraction);
     unresolved_ += static_cast<double>(s.unresolved);
-    max_sweeps_ = std::max(max_sweeps_, static_cast<double>(s.sweeps));
+    max_sweeps_ = std::max(max_sweeps_, static_cast<double>(s.max_sweeps));
     impulses_ += static_cast<double>(s.impulses);
     body_collisions_ += static_cast<double>(s.body_collisions);
     plate_collisions_ += static_cast<double>(s.plate_collisions);
-    steps_ += 1.0;
+    steps_ += static_cast<double>(s.steps);
 }
 
 std::vector<double> SeriesRecorder::row(const EngineParameters& p, const BodyState& b,

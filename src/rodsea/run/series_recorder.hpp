@@ -19,7 +19,8 @@ class SeriesRecorder {
     explicit SeriesRecorder(const RunPlan& plan);
 
     const std::vector<SeriesColumn>& columns() const { return columns_; }
-    void accumulate(const StepStatistics& step);
+    // The steps since the last call join the interval.
+    void accumulate(const StepTally& steps);
     // The row for the state `bodies` of a system of `params` and the interval so far.
     std::vector<double> row(const EngineParameters& params, const BodyState& bodies,
                             double steps_per_second) const;

@@ -165,8 +165,7 @@ class CudaExecutor {
         check(cudaGetLastError(), "kernel launch");
     }
     template <class Kernel>
-    void launch_counted(std::size_t max_n, const std::uint32_t* count,
-                        const Kernel& kernel) const {
+    void launch_counted(std::size_t max_n, const std::uint32_t* count, const Kernel& kernel) const {
         if (max_n == 0) return;
         // Enough blocks to fill the device several times over; more would mostly find no work.
         const std::size_t blocks =

@@ -4,9 +4,9 @@
 // as it is.
 #include <cstdint>
 
+#include "rodsea/engine/parallel/system_run.hpp"
 #include "rodsea/engine/physics/contact.hpp"
 #include "rodsea/engine/physics/rigid_rotation.hpp"
-#include "rodsea/engine/parallel/system_run.hpp"
 #include "rodsea/engine/physics/step_context.hpp"
 #include "rodsea/math/hostdevice.hpp"
 #include "rodsea/math/mat3.hpp"

@@ -83,8 +83,12 @@ class HostExecutor {
         start.data_[n] = sum;
     }
 
-    bool begin_capture() const { return false; }
-    bool end_capture(Graph&) const { return false; }
+    bool begin_capture() const {
+        return false;
+    }
+    bool end_capture(Graph&) const {
+        return false;
+    }
     void replay(const Graph&) const {}
 
     template <class T>

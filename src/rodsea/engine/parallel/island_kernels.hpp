@@ -63,9 +63,7 @@ struct GatherIslands {
     const std::uint32_t* island_start;
     std::uint32_t* order;
 
-    RODSEA_HD void operator()(std::uint32_t k) const {
-        order[island_start[key[k]] + rank[k]] = k;
-    }
+    RODSEA_HD void operator()(std::uint32_t k) const { order[island_start[key[k]] + rank[k]] = k; }
 };
 
 // What physics::sweep_island reads and writes of the bodies.

@@ -118,10 +118,9 @@ struct PlaceSpheres {
         if (!systems.halted(system)) {
             const std::uint32_t k = bodies.species[b];
             const std::uint32_t local = s - spheres.first_of[b];
-            physics::place_spheres(spheres.position + s,
-                                   species.sphere_offset + species.first_sphere[k] + local, 1,
-                                   bodies.position[b], bodies.orientation[b],
-                                   species.sphere_axis[k]);
+            physics::place_spheres(
+                spheres.position + s, species.sphere_offset + species.first_sphere[k] + local, 1,
+                bodies.position[b], bodies.orientation[b], species.sphere_axis[k]);
         }
         if (status->rebuild == 0) return;
         const SystemGrid& g = systems.grid[system];
@@ -224,6 +223,30 @@ struct EndStep {
     RODSEA_HD void operator()(std::uint32_t m) const {
         if (run[m].halted == 0) run[m].end_step(counts[m], halt[m]);
         if (status->step < status->steps) current[m] = planned[status->step * systems + m];
+    }
+};
+
+// Before a run, per system: its first step's context, its run and counts cleared; and the
+// run's shared words.
+struct BeginRun {
+    StepContext* current;
+    const StepContext* planned;
+    SystemRun* run;
+    StepCounts* counts;
+    RunStatus* status;
+    std::uint32_t steps;
+    bool force_rebuild;
+
+    RODSEA_HD void operator()(std::uint32_t m) const {
+        current[m] = planned[m];
+        run[m] = SystemRun{};
+        counts[m] = StepCounts{};
+        if (m != 0) return;
+        status->step = 0;
+        status->steps = steps;
+        status->needed_slots = 0;
+        status->needed_contacts = 0;
+        if (force_rebuild) status->force_rebuild = 1;
     }
 };
 

@@ -88,6 +88,13 @@ class EnsembleStepper {
 // trajectory does not depend on it.
 inline constexpr double kNeighbourSkin = 0.05;
 
+// The room the lists start with; they grow to what a run needs (a sphere's partners: a handful
+// in a monolayer; a step's contacts: a few per cent of the spheres).
+struct Room {
+    std::uint32_t slots = 16;    // partners per sphere
+    std::uint64_t contacts = 0;  // per step; 0: an eighth of the spheres, and 256
+};
+
 // `gross_overlap_fraction`: the depth over the smaller radius beyond which a contact counts as
 // unresolvable (state_check.hpp's kGrossOverlapFraction, passed in: this header is compiled for
 // a device too).
@@ -98,7 +105,7 @@ class ParallelEnsemble final : public EnsembleStepper {
     static constexpr std::uint64_t kGraphSteps = 16;
 
     ParallelEnsemble(std::vector<EnsembleMember> members, double gross_overlap_fraction,
-                     Executor executor)
+                     Executor executor, Room room = {})
         : gross_overlap_fraction_(gross_overlap_fraction),
           exec_(std::move(executor)),
           members_(std::move(members)) {
@@ -134,8 +141,8 @@ class ParallelEnsemble final : public EnsembleStepper {
         first.force_rebuild = 1;
         exec_.upload(status_, std::vector<RunStatus>{first});
         planned_.resize(kPlannedSteps * systems);
-        grow_neighbours(16);
-        grow_contacts(spheres / 8 + 256);
+        grow_neighbours(room.slots);
+        grow_contacts(room.contacts > 0 ? room.contacts : spheres / 8 + 256);
         host_grids_.resize(systems);
         bodies_stale_.assign(systems, 0);
         spheres_stale_.assign(systems, 0);
@@ -239,8 +246,8 @@ class ParallelEnsemble final : public EnsembleStepper {
                 if (host_status_.needed_slots > slot_capacity_)
                     grow_neighbours(host_status_.needed_slots + host_status_.needed_slots / 4 + 2);
                 if (host_status_.needed_contacts > contact_capacity_)
-                    grow_contacts(host_status_.needed_contacts +
-                                  host_status_.needed_contacts / 4 + 256);
+                    grow_contacts(host_status_.needed_contacts + host_status_.needed_contacts / 4 +
+                                  256);
                 exec_.copy(position_, snapshot_position_, body_count());
                 exec_.copy(orientation_, snapshot_orientation_, body_count());
                 exec_.copy(velocity_, snapshot_velocity_, body_count());
@@ -265,30 +272,6 @@ class ParallelEnsemble final : public EnsembleStepper {
     template <class T>
     using Array = typename Executor::template Array<T>;
 
-    // Before a run, per system: its first step's context, its run and counts cleared; and the
-    // run's shared words.
-    struct BeginRun {
-        StepContext* current;
-        const StepContext* planned;
-        SystemRun* run;
-        StepCounts* counts;
-        RunStatus* status;
-        std::uint32_t steps;
-        bool force_rebuild;
-
-        RODSEA_HD void operator()(std::uint32_t m) const {
-            current[m] = planned[m];
-            run[m] = SystemRun{};
-            counts[m] = StepCounts{};
-            if (m != 0) return;
-            status->step = 0;
-            status->steps = steps;
-            status->needed_slots = 0;
-            status->needed_contacts = 0;
-            if (force_rebuild) status->force_rebuild = 1;
-        }
-    };
-
     // Simulation::kStepsPerRun (the engine's runs): the contexts of that many steps have their
     // place from the start, so that a graph recorded once keeps its pointers.
     static constexpr std::size_t kPlannedSteps = 1024;
@@ -302,7 +285,8 @@ class ParallelEnsemble final : public EnsembleStepper {
         ++layout_;
     }
     void grow_contacts(std::uint64_t capacity) {
-        contact_capacity_ = static_cast<std::uint32_t>(std::min<std::uint64_t>(capacity, 0x7fffffffULL));
+        contact_capacity_ =
+            static_cast<std::uint32_t>(std::min<std::uint64_t>(capacity, 0x7fffffffULL));
         for (auto* a : {&island_key_, &island_rank_, &island_order_})
             a->resize(contact_capacity_);
         contacts_.resize(contact_capacity_);
@@ -378,7 +362,9 @@ class ParallelEnsemble final : public EnsembleStepper {
             exec_.finish();
         };
         stage(profile.free_flight, [&] {
-            exec_.launch(n, FlyBodies{bodies, species, sys,
+            exec_.launch(n, FlyBodies{bodies,
+                                      species,
+                                      sys,
                                       {parent_.data(), island_count_.data(), last_changed_.data(),
                                        inv_mass_.data(), inv_inertia_.data()}});
             exec_.launch(1, DecideRebuild{sys, travel_.data(), status, 0.5 * kNeighbourSkin});
@@ -408,11 +394,11 @@ class ParallelEnsemble final : public EnsembleStepper {
             exec_.launch_counted(contact_capacity_, &status->contacts,
                                  GatherIslands{island_key_.data(), island_rank_.data(),
                                                island_start_.data(), island_order_.data()});
-            exec_.launch(n, SweepIslands{contacts_.data(), island_count_.data(),
-                                         island_start_.data(), island_order_.data(),
-                                         IslandBodies{bodies, inv_mass_.data(),
-                                                      inv_inertia_.data()},
-                                         sys, last_changed_.data(), hit_speed_.data()});
+            exec_.launch(
+                n, SweepIslands{contacts_.data(), island_count_.data(), island_start_.data(),
+                                island_order_.data(),
+                                IslandBodies{bodies, inv_mass_.data(), inv_inertia_.data()}, sys,
+                                last_changed_.data(), hit_speed_.data()});
             exec_.launch(n, ProjectAndKick{bodies, species, sphere_arrays(), sys, contacts_.data(),
                                            contact_offsets_.data(), hit_speed_.data(), status});
         });
@@ -515,9 +501,8 @@ class ParallelEnsemble final : public EnsembleStepper {
     }
 
     BodyArrays body_arrays() {
-        return {body_species_.data(), position_.data(),
-                orientation_.data(),  velocity_.data(),
-                spin_.data(),         static_cast<std::uint32_t>(body_count())};
+        return {body_species_.data(), position_.data(), orientation_.data(),
+                velocity_.data(),     spin_.data(),     static_cast<std::uint32_t>(body_count())};
     }
     SpeciesArrays species_arrays() const {
         return {inverse_mass_.data(),  inverse_inertia_.data(),    rotor_.data(),
@@ -531,8 +516,12 @@ class ParallelEnsemble final : public EnsembleStepper {
                 first_of_.data(), static_cast<std::uint32_t>(sphere_count())};
     }
     Systems system_arrays() {
-        return {current_.data(), system_of_body_.data(), first_body_of_system_.data(),
-                grids_.data(),   runs_.data(),           step_counts_.data(),
+        return {current_.data(),
+                system_of_body_.data(),
+                first_body_of_system_.data(),
+                grids_.data(),
+                runs_.data(),
+                step_counts_.data(),
                 static_cast<std::uint32_t>(size())};
     }
     CellList cell_list() {

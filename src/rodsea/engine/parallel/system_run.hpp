@@ -72,9 +72,9 @@ struct SystemRun {
 
 // The words every system of a run shares.
 struct RunStatus {
-    std::uint32_t step = 0;   // the step of the run being taken, from 0: which contexts it reads
-    std::uint32_t steps = 0;  // the run's length
-    std::uint32_t rebuild = 0;        // this step builds the neighbour list anew
+    std::uint32_t step = 0;     // the step of the run being taken, from 0: which contexts it reads
+    std::uint32_t steps = 0;    // the run's length
+    std::uint32_t rebuild = 0;  // this step builds the neighbour list anew
     std::uint32_t force_rebuild = 0;  // the next step must (a new list, or a state put back)
     std::uint64_t builds = 0;         // of the neighbour list, since the stepper was made
     // The step's contacts as listed: every system's body contacts, then every system's plate
