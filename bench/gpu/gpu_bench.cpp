@@ -6,6 +6,7 @@
 // a machine that has CUDA and nothing else.
 //
 //   rodsea_gpu_bench [--seconds S] [--cpu-threads T] [--only NAME] [--skip-cpu]
+//                    [--launches-only]   (the GPU's `gpu-launches` row alone: for a profiler)
 //
 // Prints one CSV row per system and backend: spheres, steps/s, sphere-steps/s, simulated seconds
 // per wall hour, the microseconds per step of each stage (or of whole steps, `whole_us`, where a
@@ -160,7 +161,7 @@ int main(int argc, char** argv) {
     double seconds = 5.0;
     int cpu_threads = omp_get_num_procs();
     std::string only;
-    bool skip_cpu = false;
+    bool skip_cpu = false, launches_only = false;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--seconds" && i + 1 < argc)
@@ -171,10 +172,12 @@ int main(int argc, char** argv) {
             only = argv[++i];
         else if (arg == "--skip-cpu")
             skip_cpu = true;
+        else if (arg == "--launches-only")
+            launches_only = true;
         else {
             std::fprintf(stderr,
                          "usage: rodsea_gpu_bench [--seconds S] [--cpu-threads T] [--only NAME] "
-                         "[--skip-cpu]\n");
+                         "[--skip-cpu] [--launches-only]\n");
             return 2;
         }
     }
@@ -197,7 +200,7 @@ int main(int argc, char** argv) {
         rodsea::Simulation probe(s.scene.params, s.scene.bodies);
         const auto spheres = static_cast<double>(probe.spheres().size());
         if (gpu.usable)
-            gpu_rows(s.name, spheres, [&](const rodsea::BackendOptions& o) {
+            gpu_rows(s.name, spheres, launches_only, [&](const rodsea::BackendOptions& o) {
                 return time_steps(s.scene, o, seconds);
             });
         if (!skip_cpu) {
@@ -210,9 +213,9 @@ int main(int argc, char** argv) {
     if (want("ensemble-64x1e4")) {
         const double spheres = 64 * 1e4;  // about: each mixture holds ~10⁴
         if (gpu.usable)
-            gpu_rows("ensemble-64x1e4", spheres, [&](const rodsea::BackendOptions& o) {
-                return time_ensemble(64, o, seconds);
-            });
+            gpu_rows(
+                "ensemble-64x1e4", spheres, launches_only,
+                [&](const rodsea::BackendOptions& o) { return time_ensemble(64, o, seconds); });
         if (!skip_cpu) {
             rodsea::BackendOptions o;
             o.threads = cpu_threads;

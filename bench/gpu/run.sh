@@ -10,9 +10,10 @@
 # into .gpu-debs/ (carried likewise), and are skipped without it.
 #
 # Each part has a time limit, so that one slow part cannot eat the lease:
-#   TESTS=0|1 (1)  VALIDATE=0|quick|full (full), VALIDATE_LIMIT (240 s)
+#   TESTS=0|1 (1), TESTS_LIMIT (180 s)  VALIDATE=0|quick|full (full), VALIDATE_LIMIT (240 s)
 #   BENCH_SECONDS (3), BENCH_ONLY (all systems), BENCH_LIMIT (300 s)
-#   PROFILE=0|1 (1: per-kernel times of a few steps of the paper's largest rod system, with ncu)
+#   PROFILE=0|1 (1: per-kernel times of a few steps of the paper's largest rod system, with ncu),
+#   PROFILE_LIMIT (120 s)
 #
 # Writes to $OUT (the device tool's folder) or bench/gpu/out: device.txt (nvidia-smi),
 # tests.txt (the physics tests on the GPU, the device's per-element physics), validate.md (the
@@ -57,17 +58,15 @@ else
   stamp built
 fi
 
-if [ "${TESTS:-1}" = 1 ] && [ "$tests_built" = ON ]; then
-  stamp tests
-  {
-    timeout 60 "$bin/rodsea_cuda_tests" || status=1
-    # Every physics test with an analytic answer on the GPU backend, and its equivalence with
-    # the CPU (the contact list to the bit, the trajectory, ensembles).
-    timeout 180 "$bin/rodsea_engine_tests" --gtest_filter='Backends/*/gpu:GpuBackend.*' || status=1
-  } >"$out/tests.txt" 2>&1
-  grep -E "^\[  (PASSED|FAILED) |^\[  FAILED  \]|measured|Timeout|rror" "$out/tests.txt" | head -40
-elif [ "${TESTS:-1}" = 1 ]; then
+# In order of what matters most should the lease run out: the device's own operations (seconds),
+# the timings, the physics tests, the comparison with the CPU, the per-kernel profile.
+tests_wanted=$([ "${TESTS:-1}" = 1 ] && [ "$tests_built" = ON ] && echo yes)
+[ "${TESTS:-1}" = 1 ] && [ "$tests_built" != ON ] &&
   echo "no GoogleTest (.gpu-prebuilt or .gpu-debs): the tests are skipped" | tee "$out/tests.txt"
+if [ -n "$tests_wanted" ]; then
+  stamp "device operations"
+  timeout 60 "$bin/rodsea_cuda_tests" >"$out/tests.txt" 2>&1 || status=1
+  grep -E "^\[  (PASSED|FAILED) |^\[  FAILED  \]|Failure" "$out/tests.txt" | head -20
 fi
 
 stamp bench
@@ -77,23 +76,16 @@ timeout "${BENCH_LIMIT:-300}" "$bin/rodsea_gpu_bench" --seconds "${BENCH_SECONDS
   >"$out/bench.csv" 2>"$out/bench.log" || status=1
 cat "$out/bench.csv" "$out/bench.log"
 
-if [ "${PROFILE:-1}" = 1 ]; then
-  stamp profile
-  ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
-  if [ -n "$ncu" ]; then
-    # Ten steps of the largest rod system after its warm-up (2000 steps of 17 launches each),
-    # launched singly: each kernel's duration.
-    RODSEA_GPU_GRAPHS=0 timeout 120 "$ncu" --clock-control none --metrics gpu__time_duration.sum \
-      --csv --launch-skip "${PROFILE_SKIP:-40000}" --launch-count "${PROFILE_COUNT:-170}" \
-      "$bin/rodsea_gpu_bench" --only paper-rods --skip-cpu --seconds 0.5 \
-      >"$out/kernels.csv" 2>"$out/ncu.log" || echo "ncu failed: $(tail -3 "$out/ncu.log")"
-    wc -l "$out/kernels.csv"
-  else
-    echo "no ncu on this machine"
-  fi
+if [ -n "$tests_wanted" ]; then
+  stamp tests
+  # Every physics test with an analytic answer on the GPU backend, and its equivalence with the
+  # CPU (the contact list to the bit, the trajectory, ensembles, runs of steps).
+  timeout "${TESTS_LIMIT:-180}" "$bin/rodsea_engine_tests" --gtest_filter='Backends/*/gpu:GpuBackend.*' \
+    >>"$out/tests.txt" 2>&1 || status=1
+  grep -E "^\[  (PASSED|FAILED) |^\[  FAILED  \]|measured|Failure" "$out/tests.txt" | head -40
 fi
 
-# Last: the longest part, whose table prints row by row.
+# The table prints row by row, should its time limit cut it.
 case "${VALIDATE:-full}" in
   0) ;;
   quick | full)
@@ -104,5 +96,22 @@ case "${VALIDATE:-full}" in
     cat "$out/validate.md"
     ;;
 esac
+
+if [ "${PROFILE:-1}" = 1 ]; then
+  stamp profile
+  ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+  if [ -n "$ncu" ]; then
+    # Ten steps of the largest rod system after its warm-up (2000 steps of 17 launches each),
+    # launched singly: each kernel's duration (bench/gpu/kernel_table.py makes the table).
+    timeout "${PROFILE_LIMIT:-120}" "$ncu" --clock-control none \
+      --metrics gpu__time_duration.sum --csv --launch-skip "${PROFILE_SKIP:-40000}" \
+      --launch-count "${PROFILE_COUNT:-170}" \
+      "$bin/rodsea_gpu_bench" --only paper-rods --skip-cpu --seconds 0.3 --launches-only \
+      >"$out/kernels.csv" 2>"$out/ncu.log" || echo "ncu failed: $(tail -3 "$out/ncu.log")"
+    wc -l "$out/kernels.csv"
+  else
+    echo "no ncu on this machine"
+  fi
+fi
 stamp done
 exit $status
