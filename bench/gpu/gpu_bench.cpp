@@ -142,10 +142,11 @@ void print_row(const std::string& system, const char* backend, int threads, doub
 
 // The GPU's three ways of running (the file's header): graphs, single launches, timed stages.
 template <class Time>
-void gpu_rows(const std::string& system, double spheres, Time&& time) {
+void gpu_rows(const std::string& system, double spheres, bool launches_only, Time&& time) {
     const std::pair<const char*, bool> ways[] = {
         {"gpu", false}, {"gpu-launches", false}, {"gpu-stages", true}};
     for (const auto& [name, stages] : ways) {
+        if (launches_only && std::string(name) != "gpu-launches") continue;
         setenv("RODSEA_GPU_GRAPHS", std::string(name) == "gpu-launches" ? "0" : "1", 1);
         rodsea::BackendOptions o;
         o.backend = rodsea::BackendKind::gpu;
