@@ -107,6 +107,24 @@ double planned_wall_seconds(const std::vector<double>& run_core_seconds, Planned
     return *std::max_element(free_at.begin(), free_at.end());
 }
 
+double h200_step_seconds(double spheres) {
+    return 50e-6 + 0.14e-9 * spheres;
+}
+
+GpuHours h200_hours(const std::vector<std::pair<std::uint64_t, std::uint64_t>>& steps_and_spheres) {
+    GpuHours h;
+    std::uint64_t longest = 0;
+    double spheres = 0.0;
+    for (const auto& [steps, n] : steps_and_spheres) {
+        h.alone += static_cast<double>(steps) * h200_step_seconds(static_cast<double>(n)) / 3600.0;
+        longest = std::max(longest, steps);
+        spheres += static_cast<double>(n);
+    }
+    if (!steps_and_spheres.empty())
+        h.ensemble = static_cast<double>(longest) * h200_step_seconds(spheres) / 3600.0;
+    return h;
+}
+
 void describe_campaign(const Campaign& campaign, const CampaignGrid& grid,
                        const CampaignScaling& scaling, const std::vector<PointCost>& costs,
                        PlannedExecution how, std::ostream& out) {
@@ -178,10 +196,18 @@ void describe_campaign(const Campaign& campaign, const CampaignGrid& grid,
         out << " (cost not measured: --no-measure, or a point could not be built even in its own "
                "box)";
     }
-    // The GPU backend exists (run.backend = "gpu") but its speed has not been measured on a
-    // device yet: no figure rather than a guess.
-    out << "\n  GPU-hours: not estimated (the GPU backend's speed is not measured yet: "
-           "bench/gpu/run.sh on a GPU machine)\n";
+    std::vector<std::pair<std::uint64_t, std::uint64_t>> runs;
+    for (const PointCost& c : costs)
+        for (int r = 0; r < campaign.replicates; ++r)
+            runs.emplace_back(c.steps, c.spheres);
+    const GpuHours gpu = h200_hours(runs);
+    const auto hours = [](double h) {
+        return format_number(h < 10 ? std::round(h * 10) / 10 : std::round(h));
+    };
+    out << "\n  on one H200 GPU (--backend gpu; its measured step, within ~25 %: "
+           "docs/performance.md): about "
+        << hours(gpu.alone) << " GPU-hours run by run, at most " << hours(gpu.ensemble)
+        << " as one ensemble (--ensemble)\n";
 }
 
 }  // namespace rodsea

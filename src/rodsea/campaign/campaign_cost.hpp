@@ -4,6 +4,7 @@
 // giving this machine's sphere-steps per second at that density; the point's runs then cost
 // spheres × steps / that rate.
 #include <iosfwd>
+#include <utility>
 #include <vector>
 
 #include "rodsea/campaign/campaign_points.hpp"
@@ -37,6 +38,20 @@ struct PlannedExecution {
 // The ensemble deals by the cost of a step, this by a whole run's: the same when the runs have
 // as many steps, an approximation when their durations or time steps differ.
 double planned_wall_seconds(const std::vector<double>& run_core_seconds, PlannedExecution how);
+
+// Seconds of one step of a system of `spheres` spheres (an ensemble's: all its systems' together)
+// on the GPU backend on one H200, from its measured steps (docs/performance.md, "Measured on an
+// H200": ~50 µs of dependent kernels whatever the size, and ~0.14 ns per sphere above that; the
+// measured systems lie within 25 % of it).
+double h200_step_seconds(double spheres);
+
+// GPU-hours of the runs (steps and spheres of each) on one H200: each run alone, one after
+// another; and all of them as one ensemble, every run's spheres in every step until the longest
+// run's steps are taken (an upper bound: an ensemble drops each run that ends).
+struct GpuHours {
+    double alone = 0.0, ensemble = 0.0;
+};
+GpuHours h200_hours(const std::vector<std::pair<std::uint64_t, std::uint64_t>>& steps_and_spheres);
 
 // The plan: every point with its counts, spheres, steps and cost, and the totals.
 void describe_campaign(const Campaign& campaign, const CampaignGrid& grid,
