@@ -7,6 +7,7 @@
 //
 //   rodsea_gpu_bench [--seconds S] [--cpu-threads T] [--only NAME] [--skip-cpu]
 //                    [--launches-only]   (the GPU's `gpu-launches` row alone: for a profiler)
+//                    [--settle-steps N]  (steps before timing; default 40000, 0.05 s)
 //
 // Prints one CSV row per system and backend: spheres, steps/s, sphere-steps/s, simulated seconds
 // per wall hour, the microseconds per step of each stage (or of whole steps, `whole_us`, where a
@@ -79,7 +80,8 @@ struct Start {
 };
 constexpr std::uint64_t kSettledSteps = 40'000, kCpuWarmUpSteps = 2'000;
 
-Start settled(const std::vector<rodsea::Scene>& scenes, bool gpu, int cpu_threads) {
+Start settled(const std::vector<rodsea::Scene>& scenes, bool gpu, int cpu_threads,
+              std::uint64_t settle_steps) {
     std::vector<rodsea::Simulation> systems;
     for (const rodsea::Scene& s : scenes)
         systems.emplace_back(s.params, s.bodies);
@@ -87,7 +89,7 @@ Start settled(const std::vector<rodsea::Scene>& scenes, bool gpu, int cpu_thread
     o.backend = gpu ? rodsea::BackendKind::gpu : rodsea::BackendKind::cpu;
     o.threads = cpu_threads;
     rodsea::Ensemble ensemble(std::move(systems), o);
-    ensemble.run(gpu ? kSettledSteps : kCpuWarmUpSteps);
+    ensemble.run(gpu ? settle_steps : kCpuWarmUpSteps);
     Start start;
     for (std::size_t m = 0; m < ensemble.size(); ++m) {
         start.params.push_back(ensemble.parameters(m));
@@ -186,6 +188,7 @@ int main(int argc, char** argv) {
     int cpu_threads = omp_get_num_procs();
     std::string only;
     bool skip_cpu = false, launches_only = false;
+    std::uint64_t settle_steps = kSettledSteps;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--seconds" && i + 1 < argc)
@@ -198,10 +201,12 @@ int main(int argc, char** argv) {
             skip_cpu = true;
         else if (arg == "--launches-only")
             launches_only = true;
+        else if (arg == "--settle-steps" && i + 1 < argc)
+            settle_steps = std::strtoull(argv[++i], nullptr, 10);
         else {
             std::fprintf(stderr,
                          "usage: rodsea_gpu_bench [--seconds S] [--cpu-threads T] [--only NAME] "
-                         "[--skip-cpu] [--launches-only]\n");
+                         "[--skip-cpu] [--launches-only] [--settle-steps N]\n");
             return 2;
         }
     }
@@ -229,7 +234,7 @@ int main(int argc, char** argv) {
         "free_flight_us,spheres_us,search_us,resolution_us,noise_us,whole_us,contacts,sweeps,"
         "builds_per_1000_steps\n");
     for (const System& s : systems) {
-        const Start start = settled(s.scenes, gpu.usable, cpu_threads);
+        const Start start = settled(s.scenes, gpu.usable, cpu_threads, settle_steps);
         double spheres = 0.0;
         for (const rodsea::Scene& scene : s.scenes)
             spheres += static_cast<double>(

@@ -101,12 +101,15 @@ if [ "${PROFILE:-1}" = 1 ]; then
   stamp profile
   ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
   if [ -n "$ncu" ]; then
-    # Ten steps of the largest rod system after its warm-up (2000 steps of 17 launches each),
-    # launched singly: each kernel's duration (bench/gpu/kernel_table.py makes the table).
-    timeout "${PROFILE_LIMIT:-120}" "$ncu" --clock-control none \
-      --metrics gpu__time_duration.sum --csv --launch-skip "${PROFILE_SKIP:-40000}" \
+    # Ten steps of the largest rod system, every kernel launched singly (no graph replays, which
+    # ncu does not count as launches): 2000 steps of settling and the timing's first run of 1024,
+    # 17 launches a step, come to ~51 400 launches before the steps timed. Each kernel's duration
+    # (bench/gpu/kernel_table.py makes the table).
+    RODSEA_GPU_GRAPHS=0 timeout "${PROFILE_LIMIT:-120}" "$ncu" --clock-control none \
+      --metrics gpu__time_duration.sum --csv --launch-skip "${PROFILE_SKIP:-60000}" \
       --launch-count "${PROFILE_COUNT:-170}" \
-      "$bin/rodsea_gpu_bench" --only paper-rods --skip-cpu --seconds 0.3 --launches-only \
+      "$bin/rodsea_gpu_bench" --only paper-rods --skip-cpu --seconds 0.5 --launches-only \
+      --settle-steps 2000 \
       >"$out/kernels.csv" 2>"$out/ncu.log" || echo "ncu failed: $(tail -3 "$out/ncu.log")"
     wc -l "$out/kernels.csv"
   else
