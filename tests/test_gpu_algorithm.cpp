@@ -62,6 +62,14 @@ Simulation doomed_beads() {
     return Simulation::resume(p, beads, 0);
 }
 
+// System 0 the healthy scene, system 1 the doomed beads.
+Ensemble beside_doomed_beads(const Scene& healthy, const BackendOptions& options) {
+    std::vector<Simulation> systems;
+    systems.push_back(Simulation(healthy.params, healthy.bodies));
+    systems.push_back(doomed_beads());
+    return Ensemble(std::move(systems), options);
+}
+
 BackendOptions on(BackendKind kind, int threads = 1) {
     BackendOptions o;
     o.backend = kind;
@@ -212,10 +220,7 @@ TEST_P(GpuAlgorithm, AnEnsembleStepsEachSystemAsItStepsAlone) {
 // step, as Simulation::step reports its own.
 TEST_P(GpuAlgorithm, AnEnsembleNamesTheSystemThatBlewUp) {
     const Scene healthy = noisy_dense_mixture(31);
-    std::vector<Simulation> systems;
-    systems.push_back(Simulation(healthy.params, healthy.bodies));
-    systems.push_back(doomed_beads());
-    Ensemble ensemble(std::move(systems), options());
+    Ensemble ensemble = beside_doomed_beads(healthy, options());
     try {
         ensemble.step();
         FAIL() << "no blow-up";
@@ -271,10 +276,7 @@ TEST_P(GpuAlgorithm, AnEnsembleWithoutARetiredSystemStepsTheOthersOn) {
 // the ensemble names it, and without it the healthy system steps on to the bits it reaches alone.
 TEST_P(GpuAlgorithm, ABlowUpWithinARunStopsThatSystemThere) {
     const Scene healthy = noisy_dense_mixture(33);
-    std::vector<Simulation> systems;
-    systems.push_back(Simulation(healthy.params, healthy.bodies));
-    systems.push_back(doomed_beads());
-    Ensemble ensemble(std::move(systems), options());
+    Ensemble ensemble = beside_doomed_beads(healthy, options());
     EXPECT_THROW(ensemble.run(40), BlowUpError);
     const std::uint64_t others = GetParam() == BackendKind::cpu ? 1u : 40u;
     EXPECT_EQ(ensemble.step_count(0), others);

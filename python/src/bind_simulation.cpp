@@ -206,10 +206,12 @@ void bind_simulation(py::module_& m) {
                 d["contact_search"] = p.contact_search;
                 d["resolution"] = p.resolution;
                 d["noise"] = p.noise;
+                d["whole_steps"] = p.whole_steps;
                 d["total"] = p.total();
                 return d;
             },
-            "wall seconds spent in each stage of the step since construction")
+            "wall seconds spent in each stage of the step since construction (on the GPU, "
+            "'whole_steps': runs of steps queued together, whose stages overlap)")
         .def(
             "state_hash", [](const PySimulation& s) { return s.sim().state_hash(); },
             "FNV-1a over every bit of the state: `rodsea run` prints the same")
