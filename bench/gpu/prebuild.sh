@@ -5,6 +5,13 @@
 #   bench/gpu/prebuild.sh && run(command="bench/gpu/run.sh", carry=[".gpu-prebuilt"])
 # The binaries need only glibc, libstdc++ and libgomp (the CUDA runtime is linked statically), so
 # a machine with a glibc as new as this one's runs them. Debian 12's: 2.36.
+#
+#   bench/gpu/prebuild.sh --cli     also the whole `rodsea` command (from build/, configured with
+#                                   CUDA found) and the Debian libraries it links (HDF5, FFTW,
+#                                   Cairo, toml++ and theirs; ~35 MB) in .gpu-prebuilt/lib, for
+#                                   runs and campaigns on the device:
+#   run(command="LD_LIBRARY_PATH=.gpu-prebuilt/lib .gpu-prebuilt/rodsea campaign run ... --backend gpu",
+#       carry=[".gpu-prebuilt"])
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 cmake -S . -B build-gpu -G Ninja -DCMAKE_BUILD_TYPE=Release -DRODSEA_ENGINE_ONLY=ON \
@@ -16,6 +23,18 @@ mkdir -p .gpu-prebuilt
 cp build-gpu/bench/gpu/rodsea_gpu_bench build-gpu/bench/gpu/rodsea_gpu_validate \
   build-gpu/tests/rodsea_engine_tests build-gpu/tests/rodsea_cuda_tests .gpu-prebuilt/
 cp "$(ldd build-gpu/bench/gpu/rodsea_gpu_bench | awk '/libgomp/ {print $3}')" .gpu-prebuilt/
+if [ "${1:-}" = --cli ]; then
+  cmake --build build --target rodsea
+  [ -f build/src/librodsea_gpu.a ] ||
+    { echo "build/ has no CUDA: configure it where nvcc is found" >&2; exit 1; }
+  cp build/rodsea .gpu-prebuilt/
+  mkdir -p .gpu-prebuilt/lib
+  # Every library it links but the C and C++ runtimes, which the device's own system provides
+  # (newer than these: they keep the old symbols).
+  ldd build/rodsea | awk '$3 ~ /^\// {print $3}' |
+    grep -vE "/(libc|libm|libstdc\+\+|libgcc_s|ld-linux[^/]*|libpthread|libdl|librt|libresolv)\.so" |
+    while read -r lib; do cp -L "$lib" .gpu-prebuilt/lib/; done
+fi
 git rev-parse HEAD >.gpu-prebuilt/commit
 git diff --quiet HEAD || echo "(with uncommitted changes)" >>.gpu-prebuilt/commit
 du -sh .gpu-prebuilt
