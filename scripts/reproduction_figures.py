@@ -59,6 +59,9 @@ FIG1F = [(0.0, f"{DATA}/finite-size/fig1c-phi_a0.50-scale0.15.series.csv")] + [
     (d, f"{DATA}/fig1f-38mm/rotational_diffusion={d}.series.csv")
     for d in (0.026, 0.23, 1.21, 1.87)]
 FIG1F_WINDOW = (30.0, 90.0)
+# Its second seed (fig1f-38mm-seed2.toml), D_r = 0 included.
+FIG1F_SEED2 = [(float(d), f"{DATA}/fig1f-38mm/rotational_diffusion={d}.seed2.series.csv")
+               for d in ("0", "0.026", "0.23", "1.21", "1.87")]
 
 # SI S5 (Fig. S7), the bead medium in the 38 mm box: (φ_a, series table); P over BEADS_WINDOW from
 # blocks of ROW38_BLOCK seconds. A φ_a not run yet is left out.
@@ -326,7 +329,15 @@ def draw_fig1f(plt):
     FIG1F_WINDOW, errors from blocks), and P(t) of each run."""
     fig, points, dump = draw_points_and_series(
         plt, FIG1F, FIG1F_WINDOW, "D_r (rad²/s; linear below 0.01)", "D_r", " rad²/s",
-        "Fig. 1f, 38 mm box (18 polar rods), φ_p = 0.05, φ_a = 0.50, σ = 3.125")
+        "Fig. 1f, 38 mm box (18 polar rods), φ_p = 0.05, φ_a = 0.50, σ = 3.125 (P(t): seed 1)")
+    second = window_points(FIG1F_SEED2, FIG1F_WINDOW, ROW38_BLOCK)
+    if second:
+        xs, ys, errs = ([m[i] for m in second] for i in range(3))
+        points.errorbar(xs, ys, yerr=errs, fmt="s--", ms=4, capsize=3, color="C0",
+                        label="seed 2")
+        dump["P, seed 2"] = {"x": xs, "y": ys, "err": errs}
+        points.containers[0].set_label("seed 1")
+        points.legend(loc="best", fontsize=7)
     points.set_xscale("symlog", linthresh=0.01)
     points.set_xlim(-0.002, 3.0)
     points.set_title("P against the polar rods' noise", fontsize=10)

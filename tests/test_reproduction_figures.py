@@ -109,6 +109,12 @@ fig1f = drawn_figure("fig1f")
 expected = [(d_r, block_mean(os.path.join(source, relative), "P_polar", 30.0, 90.0))
             for d_r, relative in figures.FIG1F if os.path.isfile(os.path.join(source, relative))]
 check_points("fig1f", list(zip(fig1f["P"]["x"], fig1f["P"]["y"])), expected, 3)
+expected = [(d_r, block_mean(os.path.join(source, relative), "P_polar", 30.0, 90.0))
+            for d_r, relative in figures.FIG1F_SEED2
+            if os.path.isfile(os.path.join(source, relative))]
+if expected:
+    check_points("fig1f seed 2",
+                 list(zip(fig1f["P, seed 2"]["x"], fig1f["P, seed 2"]["y"])), expected, 1)
 
 # The bead medium: each φ_a's point is the mean of its 15 s block means over 30–90 s.
 beads = drawn_figure("beads")
