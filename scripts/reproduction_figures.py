@@ -52,6 +52,12 @@ ROW38 = {
 }
 ROW38_WINDOW = (60.0, 180.0)
 ROW38_BLOCK = 15.0
+# The row's dense end in the same box (fig1c-dense-38mm.toml), 60 s runs: (φ_a, series table), drawn
+# apart over their own, shorter ROW38_DENSE_WINDOW. A φ_a not run yet is left out.
+ROW38_DENSE = [(phi, f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi:g}.series.csv")
+               for phi in (0.65, 0.80)]
+ROW38_DENSE_WINDOW = (30.0, 60.0)
+ROW38_DENSE_BLOCK = 7.5
 
 # Fig. 1f in the 38 mm box, φ_a = 0.50: (D_r in rad²/s, series table); P over FIG1F_WINDOW from
 # blocks of ROW38_BLOCK seconds. D_r = 0 is the first row's run. A D_r not run yet is left out.
@@ -262,6 +268,13 @@ def draw_row38(plt):
         ax.plot(xs, means, "-", color="C3", lw=1.4, label="mean over seeds")
         dump[f"{name}: seeds"] = {"x": seeds_x, "y": seeds_y, "err": seeds_err}
         dump[f"{name}: mean"] = {"x": xs, "y": means}
+        dense = window_points(ROW38_DENSE, ROW38_DENSE_WINDOW, ROW38_DENSE_BLOCK, name)
+        if dense:
+            dx, dy, derr = ([m[i] for m in dense] for i in range(3))
+            ax.errorbar(dx, dy, yerr=derr, fmt="s", ms=5, mfc="none", color="C2", capsize=2,
+                        label=f"60 s runs ({ROW38_DENSE_WINDOW[0]:g}–"
+                              f"{ROW38_DENSE_WINDOW[1]:g} s, {ROW38_DENSE_BLOCK:g} s blocks)")
+            dump[f"{name}: dense, 60 s runs"] = {"x": dx, "y": dy, "err": derr}
         ax.set_xlabel("φ_a")
         ax.set_title(title, fontsize=10)
     axes[0].legend(loc="best", fontsize=8)
@@ -336,6 +349,12 @@ def draw_fig1f(plt):
         points.errorbar(xs, ys, yerr=errs, fmt="s--", ms=4, capsize=3, color="C0",
                         label="seed 2")
         dump["P, seed 2"] = {"x": xs, "y": ys, "err": errs}
+        first = {x: y for x, y in zip(dump["P"]["x"], dump["P"]["y"])}
+        both = [(x, 0.5 * (first[x] + y)) for x, y in zip(xs, ys) if x in first]
+        if both:
+            mx, my = zip(*both)
+            points.plot(mx, my, "-", color="k", lw=2.0, alpha=0.6, label="mean of the seeds")
+            dump["P, mean of the seeds"] = {"x": list(mx), "y": list(my)}
         points.containers[0].set_label("seed 1")
         points.legend(loc="best", fontsize=7)
     points.set_xscale("symlog", linthresh=0.01)

@@ -103,6 +103,13 @@ expected = [(float(phi), block_mean(os.path.join(source, relative), "P_polar", 6
             if os.path.isfile(os.path.join(source, relative))]
 check_points("row38", list(zip(row["P_polar: seeds"]["x"], row["P_polar: seeds"]["y"])),
              expected, 4)
+# Its dense end, 60 s runs: the mean of 7.5 s block means over 30–60 s.
+expected = [(phi, block_mean(os.path.join(source, relative), "P_polar",
+                             *figures.ROW38_DENSE_WINDOW, figures.ROW38_DENSE_BLOCK))
+            for phi, relative in figures.ROW38_DENSE if os.path.isfile(os.path.join(source, relative))]
+if expected:
+    check_points("row38 dense end", list(zip(row["P_polar: dense, 60 s runs"]["x"],
+                                             row["P_polar: dense, 60 s runs"]["y"])), expected, 1)
 
 # Fig. 1f: each D_r's point is the mean of its 15 s block means over 30–90 s.
 fig1f = drawn_figure("fig1f")
@@ -115,6 +122,12 @@ expected = [(d_r, block_mean(os.path.join(source, relative), "P_polar", 30.0, 90
 if expected:
     check_points("fig1f seed 2",
                  list(zip(fig1f["P, seed 2"]["x"], fig1f["P, seed 2"]["y"])), expected, 1)
+    # The mean of the seeds, at each D_r both have run.
+    first = dict(zip(fig1f["P"]["x"], fig1f["P"]["y"]))
+    expected = [(d_r, 0.5 * (first[d_r] + p)) for d_r, p in expected if d_r in first]
+    check_points("fig1f mean of the seeds",
+                 list(zip(fig1f["P, mean of the seeds"]["x"],
+                          fig1f["P, mean of the seeds"]["y"])), expected, 1)
 
 # The bead medium: each φ_a's point is the mean of its 15 s block means over 30–90 s.
 beads = drawn_figure("beads")
