@@ -58,6 +58,12 @@ ROW38_DENSE = [(phi, f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi:g}.seri
                for phi in (0.65, 0.80)]
 ROW38_DENSE_WINDOW = (30.0, 60.0)
 ROW38_DENSE_BLOCK = 7.5
+# SI S3(a) in the same box: the polar rods' C(t) at each φ_a, from `rodsea analyze --observables
+# autocorrelation` over each run's window (φ_a, table, window in s). A φ_a not run yet is left out.
+CT38 = [(0.50, f"{DATA}/fig1c-dense-38mm/medium.area_fraction=0.5.seed2"
+         ".orientation_autocorrelation.csv", (30.0, 90.0))] + [
+    (phi, f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi:g}.orientation_autocorrelation.csv",
+     ROW38_DENSE_WINDOW) for phi in (0.65, 0.80)]
 
 # Fig. 1f in the 38 mm box, φ_a = 0.50: (D_r in rad²/s, series table); P over FIG1F_WINDOW from
 # blocks of ROW38_BLOCK seconds. D_r = 0 is the first row's run. A D_r not run yet is left out.
@@ -510,8 +516,41 @@ def draw_fig5b(plt):
     return fig, dump
 
 
+def draw_ct38(plt):
+    """SI S3(a): the polar rods' orientation autocorrelation C(t) against the lag, semilog, one
+    curve per φ_a of the 38 mm box, and the medium's C₂(t)."""
+    fig, (polar, medium) = plt.subplots(1, 2, figsize=(10.0, 3.6))
+    dump = {}
+    drawn = 0
+    for k, (phi, relative, window) in enumerate(CT38):
+        if not os.path.isfile(os.path.join(ROOT, relative)):
+            continue  # a φ_a not run yet
+        t = read_csv(relative)
+        for needed in ("t", "C_polar", "C2_medium"):
+            column(t, needed, relative)
+        label = f"φ_a = {phi:g} ({window[0]:g}–{window[1]:g} s)"
+        keep = t["C_polar"] > 0  # a log axis: the noise floor's negative values are not drawn
+        polar.semilogy(t["t"][keep], t["C_polar"][keep], color=f"C{k}", label=label)
+        medium.plot(t["t"], t["C2_medium"], color=f"C{k}", label=label)
+        dump[f"C: φ_a = {phi:g}"] = {"x": t["t"][keep].tolist(), "y": t["C_polar"][keep].tolist()}
+        drawn += 1
+    if not drawn:
+        raise TableError(f"none of {', '.join(r for _, r, _ in CT38)} exists")
+    polar.set_xlabel("lag t (s)")
+    polar.set_ylabel("C(t), polar rods")
+    polar.legend(loc="best", fontsize=8)
+    medium.set_xlim(0, 5)
+    medium.set_xlabel("lag t (s)")
+    medium.set_ylabel("C₂(t), medium rods")
+    fig.suptitle("SI S3(a, b), 38 mm box (18 polar rods), φ_p = 0.05, σ = 3.125, D_r = 0",
+                 fontsize=10)
+    fig.tight_layout()
+    return fig, dump
+
+
 FIGURES = {"fig1c": draw_fig1c, "fig1c-series": draw_fig1c_series,
-           "finite-size": draw_finite_size, "row38": draw_row38, "fig1f": draw_fig1f,
+           "finite-size": draw_finite_size, "row38": draw_row38, "ct38": draw_ct38,
+           "fig1f": draw_fig1f,
            "beads": draw_beads, "beads-light": draw_beads_light, "fig4a": draw_fig4a,
            "fig5b": draw_fig5b}
 

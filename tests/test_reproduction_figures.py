@@ -2,7 +2,7 @@
 Regenerates Fig. 1c's figure into a scratch directory and checks every curve it drew against
 the tables, read here with the csv module (not the script's parser), and the PNG's size; then
 the 38 mm row's, Fig. 1f's and the bead medium's (heavy and light beads) points against the
-block means of their series tables.
+block means of their series tables, and the 38 mm row's C(t) against its tables.
 
     /usr/bin/python3 tests/test_reproduction_figures.py SOURCE_DIR SCRATCH_DIR
 Exit 77 (skipped) without numpy or matplotlib.
@@ -110,6 +110,25 @@ expected = [(phi, block_mean(os.path.join(source, relative), "P_polar",
 if expected:
     check_points("row38 dense end", list(zip(row["P_polar: dense, 60 s runs"]["x"],
                                              row["P_polar: dense, 60 s runs"]["y"])), expected, 1)
+
+# SI S3(a): each φ_a's C(t) as drawn is its table's, every positive value of it (a log axis).
+ct = drawn_figure("ct38")
+checked = 0
+for phi, relative, _ in figures.CT38:
+    path = os.path.join(source, relative)
+    if not os.path.isfile(path):
+        assert f"C: φ_a = {phi:g}" not in ct, f"φ_a = {phi:g} drawn without a table"
+        continue
+    with open(path, encoding="utf-8") as f:
+        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
+    col = {name: i for i, name in enumerate(rows[0])}
+    table = [(float(r[col["t"]]), float(r[col["C_polar"]])) for r in rows[1:]]
+    table = [(t, c) for t, c in table if c > 0]
+    curve = ct[f"C: φ_a = {phi:g}"]
+    assert same(curve["x"], [t for t, _ in table]) and same(curve["y"], [c for _, c in table]), phi
+    checked += 1
+assert checked >= 1, "no C(t) table was checked"
+print(f"checked the C(t) of {checked} runs of reproduction-ct38.png against their tables")
 
 # Fig. 1f: each D_r's point is the mean of its 15 s block means over 30–90 s.
 fig1f = drawn_figure("fig1f")
