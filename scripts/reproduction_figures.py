@@ -285,7 +285,9 @@ def draw_row38(plt):
         ax.set_title(title, fontsize=10)
     axes[0].legend(loc="best", fontsize=8)
     fig.suptitle("38 mm box (18 polar rods), φ_p = 0.05, σ = 3.125, D_r = 0: means over "
-                 f"{ROW38_WINDOW[0]:g}–{ROW38_WINDOW[1]:g} s", fontsize=10)
+                 f"{ROW38_WINDOW[0]:g}–{ROW38_WINDOW[1]:g} s (circles) and over the last "
+                 f"{ROW38_DENSE_WINDOW[1] - ROW38_DENSE_WINDOW[0]:g} s of 60 s runs (squares)",
+                 fontsize=10)
     fig.tight_layout()
     return fig, dump
 
@@ -536,6 +538,8 @@ def draw_ct38(plt):
         drawn += 1
     if not drawn:
         raise TableError(f"none of {', '.join(r for _, r, _ in CT38)} exists")
+    polar.set_yticks([0.1, 0.2, 0.3, 0.5, 0.7, 1.0], ["0.1", "0.2", "0.3", "0.5", "0.7", "1"])
+    polar.minorticks_off()
     polar.set_xlabel("lag t (s)")
     polar.set_ylabel("C(t), polar rods")
     polar.legend(loc="best", fontsize=8)
