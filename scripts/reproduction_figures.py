@@ -52,11 +52,11 @@ ROW38 = {
 }
 ROW38_WINDOW = (60.0, 180.0)
 ROW38_BLOCK = 15.0
-# The row's dense end in the same box (fig1c-dense-38mm.toml), 60 s runs: (φ_a, series table), drawn
+# The row's dense end in the same box (fig1c-dense-38mm.toml), 90 s runs: (φ_a, series table), drawn
 # apart over their own, shorter ROW38_DENSE_WINDOW. A φ_a not run yet is left out.
 ROW38_DENSE = [(phi, f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi:g}.series.csv")
                for phi in (0.65, 0.80)]
-ROW38_DENSE_WINDOW = (30.0, 60.0)
+ROW38_DENSE_WINDOW = (45.0, 90.0)
 ROW38_DENSE_BLOCK = 7.5
 # SI S3(a) in the same box: the polar rods' C(t) at each φ_a, from `rodsea analyze --observables
 # autocorrelation` over each run's window (φ_a, table, window in s). A φ_a not run yet is left out.
@@ -278,15 +278,15 @@ def draw_row38(plt):
         if dense:
             dx, dy, derr = ([m[i] for m in dense] for i in range(3))
             ax.errorbar(dx, dy, yerr=derr, fmt="s", ms=5, mfc="none", color="C2", capsize=2,
-                        label=f"60 s runs ({ROW38_DENSE_WINDOW[0]:g}–"
+                        label=f"90 s runs ({ROW38_DENSE_WINDOW[0]:g}–"
                               f"{ROW38_DENSE_WINDOW[1]:g} s, {ROW38_DENSE_BLOCK:g} s blocks)")
-            dump[f"{name}: dense, 60 s runs"] = {"x": dx, "y": dy, "err": derr}
+            dump[f"{name}: dense, 90 s runs"] = {"x": dx, "y": dy, "err": derr}
         ax.set_xlabel("φ_a")
         ax.set_title(title, fontsize=10)
     axes[0].legend(loc="best", fontsize=8)
     fig.suptitle("38 mm box (18 polar rods), φ_p = 0.05, σ = 3.125, D_r = 0: means over "
                  f"{ROW38_WINDOW[0]:g}–{ROW38_WINDOW[1]:g} s (circles) and over the last "
-                 f"{ROW38_DENSE_WINDOW[1] - ROW38_DENSE_WINDOW[0]:g} s of 60 s runs (squares)",
+                 f"{ROW38_DENSE_WINDOW[1] - ROW38_DENSE_WINDOW[0]:g} s of 90 s runs (squares)",
                  fontsize=10)
     fig.tight_layout()
     return fig, dump
