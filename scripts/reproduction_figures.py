@@ -52,14 +52,15 @@ ROW38 = {
 }
 ROW38_WINDOW = (60.0, 180.0)
 ROW38_BLOCK = 15.0
-# The row's dense end in the same box (fig1c-dense-38mm.toml), 90 s runs: (φ_a, series table), drawn
-# apart over their own, shorter ROW38_DENSE_WINDOW. A φ_a not run yet is left out.
+# The row's dense end in the same box (fig1c-dense-38mm.toml), 90 s runs: (φ_a, series table),
+# drawn apart over their own, shorter ROW38_DENSE_WINDOW. A φ_a not run yet is left out.
 ROW38_DENSE = [(phi, f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi:g}.series.csv")
                for phi in (0.65, 0.80)]
 ROW38_DENSE_WINDOW = (45.0, 90.0)
 ROW38_DENSE_BLOCK = 7.5
 # SI S3(a) in the same box: the polar rods' C(t) at each φ_a, from `rodsea analyze --observables
-# autocorrelation` over each run's window (φ_a, table, window in s). A φ_a not run yet is left out.
+# autocorrelation` over each run's window (φ_a, table, window in s). A φ_a not run yet is left
+# out.
 CT38 = [(0.50, f"{DATA}/fig1c-dense-38mm/medium.area_fraction=0.5.seed2"
          ".orientation_autocorrelation.csv", (30.0, 90.0))] + [
     (phi, f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi:g}.orientation_autocorrelation.csv",

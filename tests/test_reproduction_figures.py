@@ -106,7 +106,8 @@ check_points("row38", list(zip(row["P_polar: seeds"]["x"], row["P_polar: seeds"]
 # Its dense end, 90 s runs: the mean of 7.5 s block means over their window.
 expected = [(phi, block_mean(os.path.join(source, relative), "P_polar",
                              *figures.ROW38_DENSE_WINDOW, figures.ROW38_DENSE_BLOCK))
-            for phi, relative in figures.ROW38_DENSE if os.path.isfile(os.path.join(source, relative))]
+            for phi, relative in figures.ROW38_DENSE
+            if os.path.isfile(os.path.join(source, relative))]
 if expected:
     check_points("row38 dense end", list(zip(row["P_polar: dense, 90 s runs"]["x"],
                                              row["P_polar: dense, 90 s runs"]["y"])), expected, 1)
