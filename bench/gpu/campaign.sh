@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# A campaign's runs stepped on the device machine's GPU as one ensemble, for as long as a lease
+# allows, with the whole `rodsea` command that `bench/gpu/prebuild.sh --cli` put in .gpu-prebuilt/:
+#
+#   bench/gpu/campaign.sh CAMPAIGN [campaign run options: --scale F --duration T ...]
+#   run(command="bench/gpu/campaign.sh ...", carry=[".gpu-prebuilt"])
+#
+# The runs are stopped after CAMPAIGN_LIMIT seconds (default 240) with SIGINT, which makes every
+# run write its checkpoint (exit 124 from timeout, then), and their record comes back in $OUT
+# (or bench/gpu/out) in two files, as the device returns eight at most: campaign.log (the plan,
+# the progress, and each run's step, simulated time and steps/s) and runs.tar.gz (every run's
+# config.toml, progress.txt and timeseries.csv). A run continues only with its trajectory.h5
+# (the checkpoint continues the frames it holds), and a large box's trajectory is far over what
+# comes back: the trajectories and checkpoints stay on the device, which keeps nothing, so a run
+# goes on only within the same call.
+#
+# BACKEND=cpu runs the same on the host's cores (to check the script where no GPU is).
+set -uo pipefail
+cd "$(dirname "$0")/../.." || exit 2
+[ $# -ge 1 ] || { sed -n 2,17p "$0"; exit 2; }
+campaign=$1
+shift
+out=${OUT:-bench/gpu/out}
+mkdir -p "$out"
+[ -x .gpu-prebuilt/rodsea ] ||
+  { echo "no .gpu-prebuilt/rodsea: run bench/gpu/prebuild.sh --cli here and carry .gpu-prebuilt" >&2; exit 2; }
+export LD_LIBRARY_PATH="$PWD/.gpu-prebuilt/lib:$PWD/.gpu-prebuilt${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+rodsea=.gpu-prebuilt/rodsea
+dir=${CAMPAIGN_DIR:-out/device-campaign}
+log=$out/campaign.log
+echo "prebuilt rodsea of $(tr '\n' ' ' <.gpu-prebuilt/commit)" | tee "$log"
+
+"$rodsea" campaign plan "$campaign" "$@" --out "$dir" --ensemble --no-measure 2>&1 | tail -5 | tee -a "$log"
+# SIGINT is Ctrl-C's: the campaign checkpoints every run and exits with 130. -k: should a
+# checkpoint hang, the lease must still come back with what is under $OUT.
+timeout -s INT -k 60 "${CAMPAIGN_LIMIT:-240}" "$rodsea" campaign run "$campaign" "$@" --out "$dir" \
+  --ensemble --backend "${BACKEND:-gpu}" --threads "${THREADS:-16}" >>"$log" 2>&1
+status=$?
+# timeout says 124 for a campaign it stopped, which has then checkpointed every run as on Ctrl-C.
+echo "campaign run exited with $status (124: stopped at CAMPAIGN_LIMIT, checkpoints written; 0: done)" |
+  tee -a "$log"
+tail -4 "$log"
+
+{
+  printf '%-40s %12s %10s %12s\n' run step "time (s)" "steps/s"
+  for progress in "$dir"/runs/*/*/progress.txt; do
+    run=${progress%/progress.txt}
+    step=$(awk -F' = ' '$1 == "step" {print $2}' "$progress")
+    time=$(awk -F' = ' '$1 == "time" {print $2}' "$progress")
+    rate=$(awk -F' = ' '$1 == "steps_per_second" {print $2}' "$progress")
+    printf '%-40s %12s %10.3f %12.0f\n' "${run#"$dir"/runs/}" "$step" "$time" "$rate"
+  done
+} | tee -a "$log"
+
+files=()
+for run in "$dir"/runs/*/*/; do
+  for f in config.toml progress.txt timeseries.csv; do
+    [ -f "$run$f" ] && files+=("$run$f")
+  done
+done
+[ ${#files[@]} -gt 0 ] && tar -czf "$out/runs.tar.gz" "${files[@]}" && ls -la "$out/runs.tar.gz"
+[ "$status" = 0 ] || [ "$status" = 124 ]
