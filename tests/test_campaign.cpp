@@ -648,6 +648,28 @@ TEST(Campaign, AnExtendedCampaignsRunsAreTheRunsGivenTheLongerDurationFromTheSta
     ASSERT_EQ(again.exit_code, 0) << again.err;
     EXPECT_EQ(again.out.find("extended from"), std::string::npos) << again.out;
     EXPECT_NE(again.out.find("2 done, 0 to run"), std::string::npos) << again.out;
+    // Every later command but plan takes the directory's scaling when none is given; one given
+    // is still checked against it.
+    const ChildResult remembered = campaign("status", local, {});
+    ASSERT_EQ(remembered.exit_code, 0) << remembered.err;
+    EXPECT_EQ(count_of(remembered.out, "0.2 / 0.2"), 2) << remembered.out;
+    const ChildResult continued = campaign("run", local, {});
+    ASSERT_EQ(continued.exit_code, 0) << continued.err;
+    EXPECT_NE(continued.out.find("2 done, 0 to run"), std::string::npos) << continued.out;
+    const ChildResult other_scale = campaign("status", local, {"--scale", "0.5"});
+    EXPECT_EQ(other_scale.exit_code, 2) << other_scale.err;
+    EXPECT_NE(other_scale.err.find("was started with (scale = 1, duration = 0.2)"),
+              std::string::npos)
+        << other_scale.err;
+    // plan describes the file: its 0.3 s (the sphere-steps of its runs), not the directory's 0.2.
+    const auto sphere_steps = [&](std::vector<std::string> more) {
+        more.push_back("--no-measure");
+        const std::string out = campaign("plan", local, more).out;
+        const std::size_t total = out.find("total ");
+        return total == std::string::npos ? out : out.substr(total, out.find('\n', total) - total);
+    };
+    EXPECT_EQ(sphere_steps({}), sphere_steps({"--duration", "0.3"}));
+    EXPECT_NE(sphere_steps({}), sphere_steps({"--duration", "0.2"}));
     // scaling.txt is input too.
     std::ofstream(together / "scaling.txt") << "scale = 1\nduration = soon\n";
     const ChildResult garbled = campaign("run", together, {"--duration", "0.3", "--extend"});

@@ -54,9 +54,11 @@ const CommandSpec& campaign_command_spec() {
         {{"--out", "DIR", "the campaign's directory (default out/<campaign name>)"},
          {"--scale", "F",
           "box side times F, in (0, 1], area fractions kept (counts given as counts times F^2): "
-          "run a figure small first; fixed for a campaign directory"},
+          "run a figure small first; fixed for a campaign directory, and taken from it when "
+          "not given (but by plan)"},
          {"--duration", "T",
-          "every run's time.duration, s; fixed for a campaign directory, unless --extend"},
+          "every run's time.duration, s; fixed for a campaign directory unless --extend, and "
+          "taken from it when not given (but by plan)"},
          {"--extend", "",
           "run, submit: take the campaign directory to a longer --duration (the same --scale "
           "and points): runs done continue from their last checkpoints, bit for bit the runs "
@@ -118,17 +120,24 @@ struct Loaded {
     CampaignPaths paths;
 };
 
-Loaded load(const Arguments& a) {
+// A campaign directory remembers the --scale and --duration its runs were given (scaling.txt):
+// every command but plan, which describes the file rather than a directory, takes from there
+// what is not given again, so that `status`, `collect` and a `run` that continues need only the
+// campaign and --out. What is given is checked against it as before.
+Loaded load(const Arguments& a, bool remembered_scaling = true) {
     if (a.positional.size() != 2)
         throw InvalidParameter("CAMPAIGN", std::to_string(a.positional.size() - 1) + " given",
                                "one campaign file after the subcommand (rodsea campaign --help)");
     Loaded l;
     l.campaign = load_campaign_file(a.positional[1]);
+    l.paths.dir = a.value("--out").value_or(default_campaign_dir(l.campaign).string());
+    if (remembered_scaling)
+        if (const std::optional<CampaignScaling> started = read_campaign_scaling(l.paths))
+            l.scaling = *started;
     if (const auto f = a.value("--scale")) l.scaling.scale = parse_number("--scale", *f, 1e-3, 1.0);
     if (const auto t = a.value("--duration"))
         l.scaling.duration = parse_number("--duration", *t, 1e-6, 1e6, "s");
     l.grid = expand_campaign(l.campaign, l.scaling, calibration_table_lookup());
-    l.paths.dir = a.value("--out").value_or(default_campaign_dir(l.campaign).string());
     return l;
 }
 
@@ -140,7 +149,7 @@ void refuse_jobs_with_ensemble(const Arguments& a) {
 }
 
 int plan(const Arguments& a, std::ostream& out) {
-    const Loaded l = load(a);
+    const Loaded l = load(a, false);
     PlannedExecution how;
     how.jobs = static_cast<int>(parse_count("--jobs", a.value("--jobs").value_or("1"), 1, 4096));
     how.threads =
@@ -165,7 +174,7 @@ std::optional<std::vector<RunPlan>> plans_before_extension(const Arguments& a, c
                                                            const std::vector<RunPlan>& plans,
                                                            bool quiet, std::ostream& out) {
     if (!a.has("--extend")) return std::nullopt;
-    if (!l.scaling.duration)
+    if (!a.value("--duration"))
         throw InvalidParameter("--extend", "without --duration",
                                "--extend with --duration T: every run continues to T s");
     const std::optional<CampaignScaling> before = read_campaign_scaling(l.paths);
