@@ -12,6 +12,7 @@
 #include "local_slurm_cluster.hpp"
 #include "rodsea/io/checkpoint.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
+#include "rodsea/run/run_lock.hpp"
 #include "run_comparison.hpp"
 #include "scratch_dir.hpp"
 
@@ -678,6 +679,43 @@ TEST(Campaign, AnExtendedCampaignsRunsAreTheRunsGivenTheLongerDurationFromTheSta
         garbled.err.find("scaling.txt: is not a campaign's scaling: invalid duration = 'soon'"),
         std::string::npos)
         << garbled.err;
+}
+
+// A run of a campaign continued by hand (`rodsea run --resume DIR --duration T`, which holds the
+// run directory's lock, not a runner's claim) while the campaign is looked at and run again:
+// status calls it running, not interrupted, and a runner leaves it alone rather than resume it,
+// which would fail (one process per run directory) and count as the run's failure.
+TEST(Campaign, ARunContinuedByHandIsLeftToItsProcess) {
+    const ScratchDir scratch("campaign-by-hand");
+    const fs::path file = scratch.path() / "together.toml";
+    std::ofstream(file) << ensemble_campaign("[0.1]");
+    const fs::path dir = scratch.path() / "out";
+    const auto campaign = [&](const std::string& sub, std::vector<std::string> more) {
+        std::vector<std::string> args{"campaign", sub, file.string(), "--out", dir.string()};
+        args.insert(args.end(), more.begin(), more.end());
+        return run_rodsea(args, scratch.path());
+    };
+    ASSERT_EQ(campaign("run", {"--duration", "0.1", "--quiet"}).exit_code, 0);
+    const fs::path runs = dir / "runs";
+    const fs::path run_dir = runs / "medium.area_fraction=0.1" / "seed1";
+    {
+        const RunDirectoryLock by_hand(run_dir);
+        const ChildResult extended = campaign("run", {"--duration", "0.2", "--extend"});
+        ASSERT_EQ(extended.exit_code, 0) << extended.out << extended.err;
+        EXPECT_NE(extended.out.find("is being run by another rodsea process"), std::string::npos)
+            << extended.out;
+        EXPECT_FALSE(fs::exists(runs / "medium.area_fraction=0.1" / "seed1.failed"));
+        const ChildResult status = campaign("status", {});
+        ASSERT_EQ(status.exit_code, 0) << status.err;
+        EXPECT_NE(status.out.find("1 running"), std::string::npos) << status.out;
+    }
+    // Its process gone (here: the lock released), the campaign's runner resumes it.
+    const ChildResult status = campaign("status", {});
+    EXPECT_NE(status.out.find("1 interrupted"), std::string::npos) << status.out;
+    const ChildResult resumed = campaign("run", {});
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.out << resumed.err;
+    EXPECT_NE(resumed.out.find("1/1 runs done"), std::string::npos) << resumed.out;
+    EXPECT_NE(read_file(run_dir / "progress.txt").find("time = 0.2"), std::string::npos);
 }
 
 struct BadRun {

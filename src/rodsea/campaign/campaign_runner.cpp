@@ -5,6 +5,7 @@
 
 #include "rodsea/cli/exit_codes.hpp"
 #include "rodsea/cli/progress.hpp"
+#include "rodsea/run/run_lock.hpp"
 
 namespace rodsea {
 
@@ -33,6 +34,14 @@ std::optional<RunClaim> take_run(const CampaignPaths& paths, const CampaignRun& 
         ++tally.done;  // finished by another runner since this one looked
         return std::nullopt;
     }
+    // Resuming it would fail (one process per run directory) and count as the run's failure.
+    if (run_directory_in_use(paths.run_dir(run))) {
+        ++tally.elsewhere;
+        if (!quiet)
+            out << "campaign: " << run.id << " is being run by another rodsea process (rodsea run "
+                << "--resume?); left to it" << std::endl;
+        return std::nullopt;
+    }
     return claim;
 }
 
@@ -56,7 +65,7 @@ int finish_runner(const CampaignPaths& paths, const CampaignGrid& grid, const Ru
     if (!quiet) {
         out << "campaign: " << tally.done << "/" << tally.mine << " runs done after "
             << format_duration(seconds);
-        if (tally.elsewhere) out << "; " << tally.elsewhere << " run by another runner";
+        if (tally.elsewhere) out << "; " << tally.elsewhere << " run by another process";
         out << std::endl;
         for (const std::size_t i : tally.failed)
             out << "campaign: FAILED " << grid.runs[i].id << " (log "

@@ -25,12 +25,13 @@ struct RunnerOptions {
 struct RunnerTally {
     std::size_t mine = 0;             // the runs this runner was given
     std::size_t done = 0;             // of those, done (before or by it)
-    std::size_t elsewhere = 0;        // left to another runner that holds them
+    std::size_t elsewhere = 0;        // left to another runner or process that holds them
     std::vector<std::size_t> failed;  // failed for good (indices into grid.runs)
 };
 
-// The run's claim when this runner may step it; none when another runner holds it (counted in
-// `tally.elsewhere` and said) or it was finished since the runner looked (counted done).
+// The run's claim when this runner may step it; none when another runner, or a rodsea process in
+// its directory, holds it (counted in `tally.elsewhere` and said) or it was finished since the
+// runner looked (counted done).
 std::optional<RunClaim> take_run(const CampaignPaths& paths, const CampaignRun& run,
                                  int max_failures, RunnerTally& tally, bool quiet,
                                  std::ostream& out);

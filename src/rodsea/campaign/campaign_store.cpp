@@ -11,6 +11,7 @@
 #include "rodsea/io/atomic_file.hpp"
 #include "rodsea/number_text.hpp"
 #include "rodsea/run/run_driver.hpp"
+#include "rodsea/run/run_lock.hpp"
 
 namespace rodsea {
 
@@ -205,6 +206,8 @@ RunStatus run_status(const CampaignPaths& paths, const CampaignRun& run, int max
         locked = ::fcntl(fd, F_OFD_GETLK, &probe) == 0 && probe.l_type != F_UNLCK;
         ::close(fd);
     }
+    // A run continued by hand (rodsea run --resume DIR) holds its directory but no runner's claim.
+    if (!locked && has_checkpoint) locked = run_directory_in_use(dir);
     if (finished && has_checkpoint)
         s.state = RunState::done;
     else if (locked)

@@ -8,7 +8,8 @@ namespace rodsea {
 
 class RunDirectoryLock {
   public:
-    // Throws InvalidParameter naming the directory when another process holds it.
+    // Throws InvalidParameter naming the directory when another process holds it (for longer
+    // than a moment: run_directory_in_use's probe holds it for microseconds).
     explicit RunDirectoryLock(const std::filesystem::path& dir);
     ~RunDirectoryLock();
     RunDirectoryLock(const RunDirectoryLock&) = delete;
@@ -17,5 +18,10 @@ class RunDirectoryLock {
   private:
     int fd_ = -1;
 };
+
+// Whether a rodsea process holds DIR's lock now (a run going in it, started by a campaign or by
+// hand): what `campaign status` and a campaign runner must know before they call a run with a
+// checkpoint interrupted and resume it.
+bool run_directory_in_use(const std::filesystem::path& dir);
 
 }  // namespace rodsea
