@@ -23,7 +23,7 @@ def plan(rodsea, campaign, out):
         r"(\d+) points? x (\d+) replicates? .*= (\d+) runs", text).groups()
     steps = float(re.search(r"total ([0-9.e+]+) sphere-steps", text).group(1))
     hours = re.search(r"about ([0-9.e+]+) core-hours", text)
-    gpu = re.search(r"about ([0-9.e+]+) GPU-hours run by run, at most ([0-9.e+]+) as one", text)
+    gpu = re.search(r"about ([0-9.e+]+) GPU-hours run by run, about ([0-9.e+]+) as one", text)
     return (int(points), int(replicates), int(runs), steps,
             float(hours.group(1)) if hours else None, float(gpu.group(1)), float(gpu.group(2)))
 

@@ -206,7 +206,7 @@ void describe_campaign(const Campaign& campaign, const CampaignGrid& grid,
     };
     out << "\n  on one H200 GPU (--backend gpu; its measured step, within ~25 %: "
            "docs/performance.md): about "
-        << hours(gpu.alone) << " GPU-hours run by run, at most " << hours(gpu.ensemble)
+        << hours(gpu.alone) << " GPU-hours run by run, about " << hours(gpu.ensemble)
         << " as one ensemble (--ensemble)\n";
 }
 
