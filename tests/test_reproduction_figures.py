@@ -103,15 +103,6 @@ expected = [(float(phi), block_mean(os.path.join(source, relative), "P_polar", 6
             if os.path.isfile(os.path.join(source, relative))]
 check_points("row38", list(zip(row["P_polar: seeds"]["x"], row["P_polar: seeds"]["y"])),
              expected, 4)
-# Its dense end, 90 s runs: the mean of 7.5 s block means over their window.
-expected = [(phi, block_mean(os.path.join(source, relative), "P_polar",
-                             *figures.ROW38_DENSE_WINDOW, figures.ROW38_DENSE_BLOCK))
-            for phi, relative in figures.ROW38_DENSE
-            if os.path.isfile(os.path.join(source, relative))]
-if expected:
-    check_points("row38 dense end", list(zip(row["P_polar: dense, 90 s runs"]["x"],
-                                             row["P_polar: dense, 90 s runs"]["y"])), expected, 1)
-
 # SI S3(a): each φ_a's C(t) as drawn is its table's, every positive value of it (a log axis).
 ct = drawn_figure("ct38")
 checked = 0
