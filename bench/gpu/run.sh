@@ -86,7 +86,7 @@ if [ -n "$tests_wanted" ]; then
 fi
 
 # The table prints row by row, should its time limit cut it; but its first rows wait for the lone
-# rods on both backends, most of the whole (254 s in all on the H100 machine, none of it under 150).
+# rods on both backends, most of the whole (254 s in all on the H100 machine, no row before 150).
 case "${VALIDATE:-full}" in
   0) ;;
   quick | full)
