@@ -8,22 +8,25 @@
 # The runs are stopped after CAMPAIGN_LIMIT seconds (default 240) with SIGINT, which makes every
 # run write its checkpoint (exit 124 from timeout, then), and their record comes back in $OUT
 # (or bench/gpu/out) in two files, as the device returns eight at most: campaign.log (the plan,
-# the progress, and each run's step, simulated time and steps/s) and runs.tar.gz (every run's
-# config.toml, progress.txt and timeseries.csv). A run continues only with its trajectory.h5
-# (the checkpoint continues the frames it holds), and a large box's trajectory is far over what
-# comes back: the trajectories and checkpoints stay on the device, which keeps nothing, so a run
-# goes on only within the same call.
+# the progress with the ensemble's steps/s, and `campaign status` at the end) and runs.tar.gz
+# (every run's config.toml, progress.txt and timeseries.csv). A run continues only with its
+# trajectory.h5 (the checkpoint continues the frames it holds), and a large box's trajectory is
+# far over what comes back: the trajectories and checkpoints stay on the device, which keeps
+# nothing, so a run goes on only within the same call. The prebuilt rodsea must be this tree's
+# (`campaign status` takes the directory's --scale and --duration since 027b470).
 #
 # BACKEND=cpu runs the same on the host's cores (to check the script where no GPU is).
 set -uo pipefail
 cd "$(dirname "$0")/../.." || exit 2
-[ $# -ge 1 ] || { sed -n 2,17p "$0"; exit 2; }
+[ $# -ge 1 ] || { sed -n 2,18p "$0"; exit 2; }
 campaign=$1
 shift
 out=${OUT:-bench/gpu/out}
 mkdir -p "$out"
-[ -x .gpu-prebuilt/rodsea ] ||
-  { echo "no .gpu-prebuilt/rodsea: run bench/gpu/prebuild.sh --cli here and carry .gpu-prebuilt" >&2; exit 2; }
+[ -x .gpu-prebuilt/rodsea ] || {
+  echo "no .gpu-prebuilt/rodsea: run bench/gpu/prebuild.sh --cli here and carry .gpu-prebuilt" >&2
+  exit 2
+}
 export LD_LIBRARY_PATH="$PWD/.gpu-prebuilt/lib:$PWD/.gpu-prebuilt${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 rodsea=.gpu-prebuilt/rodsea
 dir=${CAMPAIGN_DIR:-out/device-campaign}
@@ -41,16 +44,7 @@ echo "campaign run exited with $status (124: stopped at CAMPAIGN_LIMIT, checkpoi
   tee -a "$log"
 tail -4 "$log"
 
-{
-  printf '%-40s %12s %10s %12s\n' run step "time (s)" "steps/s"
-  for progress in "$dir"/runs/*/*/progress.txt; do
-    run=${progress%/progress.txt}
-    step=$(awk -F' = ' '$1 == "step" {print $2}' "$progress")
-    time=$(awk -F' = ' '$1 == "time" {print $2}' "$progress")
-    rate=$(awk -F' = ' '$1 == "steps_per_second" {print $2}' "$progress")
-    printf '%-40s %12s %10.3f %12.0f\n' "${run#"$dir"/runs/}" "$step" "$time" "$rate"
-  done
-} | tee -a "$log"
+"$rodsea" campaign status "$campaign" --out "$dir" 2>&1 | tee -a "$log"
 
 files=()
 for run in "$dir"/runs/*/*/; do
