@@ -63,6 +63,12 @@ CT38 = [(0.50, f"{DATA}/fig1c-dense-38mm/medium.area_fraction=0.5.seed2"
     (phi, f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi:g}.orientation_autocorrelation.csv",
      ROW38_WINDOW) for phi in (0.65, 0.80)]
 
+# The dense end's whole runs, for the length of their transient: (φ_a, series table, polar rods);
+# DENSE38_BIN-second means of each quantity drawn. A φ_a not run yet is left out.
+DENSE38 = [(phi, f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi:g}.series.csv", 18)
+           for phi in (0.65, 0.80)]
+DENSE38_BIN = 5
+
 # Fig. 1f in the 38 mm box, φ_a = 0.50: (D_r in rad²/s, series table); P over FIG1F_WINDOW from
 # blocks of ROW38_BLOCK seconds. D_r = 0 is the first row's run. A D_r not run yet is left out.
 FIG1F = [(0.0, f"{DATA}/finite-size/fig1c-phi_a0.50-scale0.15.series.csv")] + [
@@ -217,11 +223,7 @@ def draw_finite_size(plt):
         for (label, relative, rods), colour in zip(boxes, ("C0", "C1", "C2")):
             if not os.path.isfile(os.path.join(ROOT, relative)):
                 continue  # a box not run yet
-            t = read_csv(relative)
-            start, p = column(t, "t_from", relative), column(t, "P_polar", relative)
-            bins = len(p) // 5
-            mid = start[:5 * bins].reshape(bins, 5).mean(axis=1) + 0.5
-            mean = p[:5 * bins].reshape(bins, 5).mean(axis=1)
+            mid, mean = bin_means(read_csv(relative), "P_polar", relative, 5)
             floor = float(np.sqrt(np.pi / (4 * rods)))
             ax.plot(mid, mean, color=colour, lw=1.4, label=f"{label}, {rods} polar rods")
             ax.axhline(floor, color=colour, lw=0.9, ls="--")
@@ -512,6 +514,46 @@ def draw_fig5b(plt):
     return fig, dump
 
 
+def bin_means(t, name, relative, width):
+    """`name` in means of `width` consecutive 1 s bins of a series table, at the bins' middles
+    (a shorter remainder at the end is left out)."""
+    start, values = column(t, "t_from", relative), column(t, name, relative)
+    count = len(values) // width
+    middles = start[:width * count].reshape(count, width).min(axis=1) + 0.5 * width
+    return middles, values[:width * count].reshape(count, width).mean(axis=1)
+
+
+def draw_dense38(plt):
+    """The dense end of the 38 mm row over the whole run: P (beside N random headings), the
+    medium's S, Σ and the share of polar rods in flocks, in 5 s means."""
+    fig, axes = plt.subplots(2, 2, figsize=(10.0, 6.0), sharex=True)
+    panels = (("P_polar", "P (polar rods)"), ("S_medium", "S (medium)"),
+              ("Sigma", "Σ (segregation)"), ("fraction_in_flocks", "polar rods in flocks"))
+    dump = {}
+    drawn = 0
+    for k, (phi, relative, rods) in enumerate(DENSE38):
+        if not os.path.isfile(os.path.join(ROOT, relative)):
+            continue  # a φ_a not run yet
+        t = read_csv(relative)
+        for ax, (name, title) in zip(axes.flat, panels):
+            x, y = bin_means(t, name, relative, DENSE38_BIN)
+            ax.plot(x, y, color=f"C{k}", lw=1.3, label=f"φ_a = {phi:.2f}")
+            ax.set_title(title, fontsize=10)
+            dump[f"{name}: φ_a = {phi:g}"] = {"x": x.tolist(), "y": y.tolist()}
+        floor = float(np.sqrt(np.pi / (4 * rods)))
+        axes[0, 0].axhline(floor, color="grey", lw=0.9, ls="--")
+        drawn += 1
+    if not drawn:
+        raise TableError(f"none of {', '.join(r for _, r, _ in DENSE38)} exists")
+    axes[0, 0].legend(loc="best", fontsize=8)
+    for ax in axes[1]:
+        ax.set_xlabel("t (s)")
+    fig.suptitle(f"The 38 mm row's dense end (18 polar rods), {DENSE38_BIN} s means; dashed: "
+                 "18 random headings", fontsize=10)
+    fig.tight_layout()
+    return fig, dump
+
+
 def draw_ct38(plt):
     """SI S3(a): the polar rods' orientation autocorrelation C(t) against the lag, semilog, one
     curve per φ_a of the 38 mm box, and the medium's C₂(t)."""
@@ -548,6 +590,7 @@ def draw_ct38(plt):
 
 FIGURES = {"fig1c": draw_fig1c, "fig1c-series": draw_fig1c_series,
            "finite-size": draw_finite_size, "row38": draw_row38, "ct38": draw_ct38,
+           "dense38": draw_dense38,
            "fig1f": draw_fig1f,
            "beads": draw_beads, "beads-light": draw_beads_light, "fig4a": draw_fig4a,
            "fig5b": draw_fig5b}

@@ -122,6 +122,28 @@ for phi, relative, _ in figures.CT38:
 assert checked >= 1, "no C(t) table was checked"
 print(f"checked the C(t) of {checked} runs of reproduction-ct38.png against their tables")
 
+# The dense end over whole runs: each curve's points are the means of consecutive groups of the
+# table's 1 s bins, the bins read here with the csv module.
+dense = drawn_figure("dense38")
+checked = 0
+for phi, relative, _ in figures.DENSE38:
+    path = os.path.join(source, relative)
+    if not os.path.isfile(path):
+        continue
+    with open(path, encoding="utf-8") as f:
+        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
+    col = {name: i for i, name in enumerate(rows[0])}
+    width = figures.DENSE38_BIN
+    for name in ("P_polar", "S_medium", "Sigma", "fraction_in_flocks"):
+        values = [float(r[col[name]]) for r in rows[1:]]
+        groups = [values[i:i + width] for i in range(0, len(values) - width + 1, width)]
+        curve = dense[f"{name}: φ_a = {phi:g}"]["y"]
+        assert len(curve) == len(groups) and all(
+            abs(y - sum(g) / width) < 1e-12 for y, g in zip(curve, groups)), (phi, name)
+    checked += 1
+assert checked >= 1, "no dense-end series was checked"
+print(f"checked the series of {checked} dense-end runs of reproduction-dense38.png")
+
 # Fig. 1f: each D_r's point is the mean of its 15 s block means over 30–90 s.
 fig1f = drawn_figure("fig1f")
 expected = [(d_r, block_mean(os.path.join(source, relative), "P_polar", 30.0, 90.0))
