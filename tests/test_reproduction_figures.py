@@ -2,7 +2,8 @@
 Regenerates Fig. 1c's figure into a scratch directory and checks every curve it drew against
 the tables, read here with the csv module (not the script's parser), and the PNG's size; then
 the 38 mm row's, Fig. 1f's and the bead medium's (heavy and light beads) points against the
-block means of their series tables, and the 38 mm row's C(t) against its tables.
+block means of their series tables, the 38 mm row's C(t) against its tables and its dense
+end's 5 s means against their series.
 
     /usr/bin/python3 tests/test_reproduction_figures.py SOURCE_DIR SCRATCH_DIR
 Exit 77 (skipped) without numpy or matplotlib.
