@@ -40,16 +40,21 @@ def same(a, b):
     return len(a) == len(b) and all(x == y or (x != x and y != y) for x, y in zip(a, b))
 
 
+def read_table(path):
+    """A table's column indices by name and its data rows, read with the csv module (not the
+    script's parser)."""
+    with open(path, encoding="utf-8") as f:
+        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
+    return {name: i for i, name in enumerate(rows[0])}, rows[1:]
+
+
 checked = 0
 for label, relative in figures.FIG1C_POINTS:
     path = os.path.join(source, relative)
     if not os.path.isfile(path):
         assert not any(k.endswith(": " + label) for k in drawn), f"{label} drawn without a table"
         continue
-    with open(path, encoding="utf-8") as f:
-        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
-    header, rows = rows[0], rows[1:]
-    col = {name: i for i, name in enumerate(header)}
+    col, rows = read_table(path)
     rows.sort(key=lambda r: float(r[col["medium.area_fraction"]]))
     for name in ("P_polar", "Sigma", "N_m"):
         curve = drawn[f"{name}: {label}"]
@@ -69,11 +74,9 @@ print(f"checked {checked} curves of reproduction-fig1c.png against their tables"
 def block_mean(path, column, start, end, block=15.0):
     """The mean of the block means of `column` over [start, end), bins by their middles, read
     with the csv module."""
-    with open(path, encoding="utf-8") as f:
-        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
-    col = {name: i for i, name in enumerate(rows[0])}
+    col, rows = read_table(path)
     blocks = {}
-    for r in rows[1:]:
+    for r in rows:
         middle = 0.5 * (float(r[col["t_from"]]) + float(r[col["t_to"]]))
         if start <= middle < end:
             blocks.setdefault(int((middle - start) // block), []).append(float(r[col[column]]))
@@ -112,10 +115,8 @@ for phi, relative, _ in figures.CT38:
     if not os.path.isfile(path):
         assert f"C: φ_a = {phi:g}" not in ct, f"φ_a = {phi:g} drawn without a table"
         continue
-    with open(path, encoding="utf-8") as f:
-        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
-    col = {name: i for i, name in enumerate(rows[0])}
-    table = [(float(r[col["t"]]), float(r[col["C_polar"]])) for r in rows[1:]]
+    col, rows = read_table(path)
+    table = [(float(r[col["t"]]), float(r[col["C_polar"]])) for r in rows]
     table = [(t, c) for t, c in table if c > 0]
     curve = ct[f"C: φ_a = {phi:g}"]
     assert same(curve["x"], [t for t, _ in table]) and same(curve["y"], [c for _, c in table]), phi
@@ -131,12 +132,10 @@ for phi, relative, _ in figures.DENSE38:
     path = os.path.join(source, relative)
     if not os.path.isfile(path):
         continue
-    with open(path, encoding="utf-8") as f:
-        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
-    col = {name: i for i, name in enumerate(rows[0])}
+    col, rows = read_table(path)
     width = figures.DENSE38_BIN
     for name in ("P_polar", "S_medium", "Sigma", "fraction_in_flocks"):
-        values = [float(r[col[name]]) for r in rows[1:]]
+        values = [float(r[col[name]]) for r in rows]
         groups = [values[i:i + width] for i in range(0, len(values) - width + 1, width)]
         curve = dense[f"{name}: φ_a = {phi:g}"]["y"]
         assert len(curve) == len(groups) and all(
@@ -201,14 +200,12 @@ for sigma, relative, window in figures.FIG4A_88MM:
     path = os.path.join(source, relative)
     if not os.path.isfile(path):
         continue
-    with open(path, encoding="utf-8") as f:
-        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
-    col = {name: i for i, name in enumerate(rows[0])}
+    col, rows = read_table(path)
     for drawn, name in ((f"P(t): σ = {sigma:g}, 88 mm", "P_polar"),
                         (f"S(t): σ = {sigma:g}, 88 mm", "S_medium")):
-        assert same(fig4a[drawn]["y"], [float(r[col[name]]) for r in rows[1:]]), drawn
+        assert same(fig4a[drawn]["y"], [float(r[col[name]]) for r in rows]), drawn
     expected_88mm.append((sigma, block_mean(path, "P_polar", *window, block=5.0)))
-    print(f"checked the 88 mm run at σ = {sigma:g}: P(t) and S(t) ({len(rows) - 1} bins)")
+    print(f"checked the 88 mm run at σ = {sigma:g}: P(t) and S(t) ({len(rows)} bins)")
 if expected_88mm:
     check_points("fig4a 88 mm", list(zip(fig4a["P, 88 mm"]["x"], fig4a["P, 88 mm"]["y"])),
                  expected_88mm, 1)
@@ -222,12 +219,10 @@ for label, relative in band_runs:
     path = os.path.join(source, relative)
     if not os.path.isfile(path):
         continue
-    with open(path, encoding="utf-8") as f:
-        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
-    if "band_longitudinal" not in rows[0]:
+    col, rows = read_table(path)
+    if "band_longitudinal" not in col:
         continue
-    column_index = rows[0].index("band_longitudinal")
-    table = [float(r[column_index]) for r in rows[1:]]
+    table = [float(r[col["band_longitudinal"]]) for r in rows]
     if all(math.isnan(v) for v in table):
         continue
     drawn = fig4a[f"longitudinal band: {label}"]["y"]
