@@ -552,6 +552,37 @@ TEST(Flocks, LargestFlockAndLabelsOfPlantedClusters) {
         EXPECT_EQ(labels.labels[k], -1);
 }
 
+TEST(Flocks, OrderBetweenFlocksIsSetAgainstIndependentlyHeadingFlocks) {
+    // Two flocks of 5 rods and 2 lone rods (N = 12): P of independently heading flocks is
+    // √(5² + 5² + 1 + 1)/12 in every frame. In two frames all head the same way (P = 1), in two
+    // the second flock and one lone rod head the other way (P = 0): ⟨P²⟩ = 1/2 against
+    // ⟨P_independent²⟩ = 52/144, so flock_alignment = 72/52.
+    const double side = 100.0;
+    auto frame_bodies = [](double flip) {
+        std::vector<Body> bodies;
+        for (int k = 0; k < 5; ++k)
+            bodies.push_back({10.0 + 1.0 * k, 10.0, 0.0, 0});
+        for (int k = 0; k < 5; ++k)
+            bodies.push_back({60.0 + 1.0 * k, 60.0, flip, 0});
+        bodies.push_back({30.0, 80.0, 0.0, 0});
+        bodies.push_back({80.0, 30.0, flip, 0});
+        return bodies;
+    };
+    const auto together = frame_bodies(0.0), apart = frame_bodies(kPi);
+    const auto setup = make_setup(side, together, 4);
+    FlockObservable o(setup, resolved(setup));
+    const auto r = run_on(o,
+                          {make_frame(side, together, 0), make_frame(side, together, 1),
+                           make_frame(side, apart, 2), make_frame(side, apart, 3)},
+                          setup);
+    const double independent = std::sqrt(52.0) / 12.0;
+    const TableResult& t = table(r, "flocks");
+    for (const auto& row : t.rows)
+        EXPECT_NEAR(row[column(t, "P_independent")], independent, 1e-14);
+    EXPECT_NEAR(scalar(r, "P_independent").estimate.mean, independent, 1e-14);
+    EXPECT_NEAR(scalar(r, "flock_alignment").estimate.mean, 72.0 / 52.0, 1e-12);
+}
+
 TEST(PeriodicWrap, EveryObservableIsInvariantUnderAShiftOfTheWholeFrame) {
     // A clustered mixture, then the same frame shifted by whole segregation cells (9 mm) so that
     // clusters straddle the edges: every scalar and every table entry must be the same.

@@ -1,8 +1,11 @@
 #include "rodsea/analyze/flock_observable.hpp"
 
 #include <algorithm>
+#include <limits>
 
+#include "rodsea/analysis/flock_order.hpp"
 #include "rodsea/analyze/flock_track_results.hpp"
+#include "rodsea/engine/order_parameters.hpp"
 
 namespace rodsea {
 
@@ -28,6 +31,18 @@ void FlockObservable::compute(const FrameContext& context) {
     largest_.push_back(sizes.empty() ? 0.0 : *std::max_element(sizes.begin(), sizes.end()));
     flocks_.push_back(static_cast<double>(sizes.size()));
     in_flocks_.push_back(polar.empty() ? 0.0 : members / static_cast<double>(polar.size()));
+    const double p = orientational_order(group.angle, 1);
+    const double p_independent = independent_flock_order(group.angle, labels);
+    independent_.push_back(p_independent);
+    if (context.steady()) {
+        const auto b = static_cast<std::size_t>(context.block());
+        if (b >= block_p2_.size()) {
+            block_p2_.resize(b + 1, 0.0);
+            block_independent2_.resize(b + 1, 0.0);
+        }
+        block_p2_[b] += p * p;
+        block_independent2_[b] += p_independent * p_independent;
+    }
     labels_.insert(labels_.end(), labels.begin(), labels.end());
     if (context.steady())
         for (double s : sizes) {
@@ -48,17 +63,25 @@ ObservableResults FlockObservable::finish() {
         {"flock_count", "", "number of flocks, steady mean", steady_estimate(flocks_, steady_)});
     r.scalars.push_back({"flock_fraction", "", "fraction of polar rods in a flock, steady mean",
                          steady_estimate(in_flocks_, steady_)});
+    r.scalars.push_back({"P_independent", "",
+                         "P if each flock and lone polar rod headed independently (rms over "
+                         "random turns of each), steady mean",
+                         steady_estimate(independent_, steady_)});
+    r.scalars.push_back({"flock_alignment", "",
+                         "<P^2> / <P_independent^2> over the steady window: 1 when flocks head "
+                         "independently, above 1 when they align with one another",
+                         flock_alignment()});
     TableResult series{"flocks",
-                       "largest flock N_m, number of flocks and fraction of polar rods in flocks, "
-                       "every frame",
-                       {"time", "steady", "N_m", "flocks", "fraction_in_flocks"},
-                       {"s", "", "", "", ""},
+                       "largest flock N_m, number of flocks, fraction of polar rods in flocks "
+                       "and the P of independently heading flocks, every frame",
+                       {"time", "steady", "N_m", "flocks", "fraction_in_flocks", "P_independent"},
+                       {"s", "", "", "", "", ""},
                        {}};
     std::vector<double> histogram;
     double steady_frames = 0.0;
     for (std::size_t k = 0; k < times_.size(); ++k) {
-        series.rows.push_back(
-            {times_[k], static_cast<double>(steady_[k]), largest_[k], flocks_[k], in_flocks_[k]});
+        series.rows.push_back({times_[k], static_cast<double>(steady_[k]), largest_[k], flocks_[k],
+                               in_flocks_[k], independent_[k]});
         if (!steady_[k]) continue;
         const auto n = static_cast<std::size_t>(largest_[k]);
         if (n >= histogram.size()) histogram.resize(n + 1, 0.0);
@@ -92,6 +115,21 @@ ObservableResults FlockObservable::finish() {
                         times_, labels_});
     add_flock_track_results(tracker_, bodies_, setup_, steady_from_, r);
     return r;
+}
+
+Estimate FlockObservable::flock_alignment() const {
+    double p2 = 0.0, independent2 = 0.0;
+    std::vector<double> blocks;
+    for (std::size_t b = 0; b < block_p2_.size(); ++b) {
+        p2 += block_p2_[b];
+        independent2 += block_independent2_[b];
+        if (block_independent2_[b] > 0.0) blocks.push_back(block_p2_[b] / block_independent2_[b]);
+    }
+    if (!(independent2 > 0.0)) {  // no steady frame, or no polar rod
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        return {.mean = nan, .error = nan};
+    }
+    return estimate_from_blocks(p2 / independent2, blocks);
 }
 
 }  // namespace rodsea
