@@ -110,6 +110,23 @@ FIG4A_SEED2 = (5.625, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspec
                ".seed2.series.csv")
 FIG4A_SEED2_WINDOW = (25.0, 45.0)
 
+# What carries P (the flocks observable's P_independent and flock_alignment): one
+# `rodsea analyze --observables order,flocks` summary per run, (x, label of its window, table).
+# Against φ_a, the 38 mm box's runs (0.50: Fig. 1f's seed-2 D_r = 0 run); a larger box's, if run,
+# beside them; against D_r, Fig. 1f's seed 2.
+ALIGNMENT = f"{DATA}/flock-alignment"
+ALIGNMENT_ROW = [
+    (0.05, "60–180 s", f"{ALIGNMENT}/fig1c-38mm-phi_a0.05-seed1-from60.summary.csv"),
+    (0.50, "30–90 s", f"{ALIGNMENT}/fig1f-38mm-D_r0-seed2-from30.summary.csv"),
+    (0.65, "180–270 s", f"{ALIGNMENT}/fig1c-38mm-phi_a0.65-seed1-from180.summary.csv"),
+    (0.80, "180–270 s", f"{ALIGNMENT}/fig1c-38mm-phi_a0.80-seed1-from180.summary.csv"),
+]
+ALIGNMENT_ROW_88MM = [
+    (0.05, "60–180 s", f"{ALIGNMENT}/fig1c-88mm-phi_a0.05-seed1-from60.summary.csv"),
+]
+ALIGNMENT_NOISE = [(float(d), "30–90 s", f"{ALIGNMENT}/fig1f-38mm-D_r{d}-seed2-from30.summary.csv")
+                   for d in ("0", "0.026", "0.23", "1.21", "1.87")]
+
 # Fig. 5b, first look: the medium's velocity around polar rods against distance in the 63 mm box
 # (label, profile table) from `rodsea analyze --observables medium_velocity`.
 FIG5B_PROFILES = [
@@ -594,9 +611,70 @@ def draw_ct38(plt):
     return fig, dump
 
 
+def alignment_points(runs, required=True):
+    """[(x, {scalar: (mean, error)})] of P, P_independent and flock_alignment from each run's
+    summary; a run not made yet is left out unless `required`."""
+    points = []
+    for x, _, relative in runs:
+        if not required and not os.path.isfile(os.path.join(ROOT, relative)):
+            continue
+        t = read_csv(relative)
+        points.append((x, {name: (float(column(t, name, relative)[0]),
+                                  float(column(t, name + "_err", relative)[0]))
+                           for name in ("P_polar", "P_independent", "flock_alignment")}))
+    return points
+
+
+def draw_alignment(plt):
+    """What carries the polar rods' order: P beside P_independent, the P that the same flocks and
+    lone rods would give heading independently (top), and their ratio ⟨P²⟩/⟨P_independent²⟩
+    (bottom), against φ_a (Fig. 1c's row) and against D_r (Fig. 1f)."""
+    fig, axes = plt.subplots(2, 2, figsize=(10.0, 6.0), sharex="col")
+    dump = {}
+    curves = ((0, "38 mm box", ALIGNMENT_ROW, True, "o-"),
+              (0, "88 mm box", ALIGNMENT_ROW_88MM, False, "D"),
+              (1, "38 mm box, seed 2", ALIGNMENT_NOISE, True, "o-"))
+    for col, box, runs, required, fmt in curves:
+        points = alignment_points(runs, required)
+        if not points:
+            continue
+        xs = [x for x, _ in points]
+        colour = "C0" if box.startswith("38") else "C3"
+        for row, names in ((0, ("P_polar", "P_independent")), (1, ("flock_alignment",))):
+            for name in names:
+                ys = [v[name][0] for _, v in points]
+                errs = [v[name][1] for _, v in points]
+                label = {"P_polar": f"P, {box}", "P_independent": f"P_independent, {box}",
+                         "flock_alignment": box}[name]
+                dashed = name == "P_independent" and fmt.endswith("-")
+                axes[row, col].errorbar(
+                    xs, ys, yerr=errs, fmt=fmt.replace("-", "--") if dashed else fmt, ms=5,
+                    capsize=3, color=colour, mfc="white" if name == "P_independent" else colour,
+                    label=label)
+                dump[f"{name}: {box}, against {'φ_a' if col == 0 else 'D_r'}"] = {
+                    "x": xs, "y": ys, "err": errs}
+    for col in (0, 1):
+        axes[1, col].axhline(1.0, color="grey", lw=0.9, ls="--")
+        axes[0, col].set_ylim(0, 1)
+        axes[0, col].legend(loc="best", fontsize=7)
+        axes[1, col].legend(loc="best", fontsize=7)
+    axes[0, 0].set_ylabel("P; P of independent flocks")
+    axes[1, 0].set_ylabel("⟨P²⟩ / ⟨P_independent²⟩")
+    axes[0, 0].set_title("Fig. 1c's row (D_r = 0)", fontsize=10)
+    axes[0, 1].set_title("Fig. 1f (φ_a = 0.50)", fontsize=10)
+    axes[1, 0].set_xlabel("φ_a")
+    axes[1, 1].set_xlabel("D_r (rad²/s; linear below 0.01)")
+    axes[1, 1].set_xscale("symlog", linthresh=0.01)
+    axes[1, 1].set_xlim(-0.002, 3.0)
+    fig.suptitle("What carries P: flocks (P_independent) or alignment between flocks and lone rods "
+                 "(the ratio; 1 = independent)", fontsize=10)
+    fig.tight_layout()
+    return fig, dump
+
+
 FIGURES = {"fig1c": draw_fig1c, "fig1c-series": draw_fig1c_series,
            "finite-size": draw_finite_size, "row38": draw_row38, "ct38": draw_ct38,
-           "dense38": draw_dense38,
+           "dense38": draw_dense38, "alignment": draw_alignment,
            "fig1f": draw_fig1f,
            "beads": draw_beads, "beads-light": draw_beads_light, "fig4a": draw_fig4a,
            "fig5b": draw_fig5b}

@@ -2,8 +2,9 @@
 Regenerates Fig. 1c's figure into a scratch directory and checks every curve it drew against
 the tables, read here with the csv module (not the script's parser), and the PNG's size; then
 the 38 mm row's, Fig. 1f's and the bead medium's (heavy and light beads) points against the
-block means of their series tables, the 38 mm row's C(t) against its tables and its dense
-end's 5 s means against their series.
+block means of their series tables, the 38 mm row's C(t) against its tables, its dense
+end's 5 s means against their series, and what carries P (P_independent, flock_alignment)
+against each run's analysis summary.
 
     /usr/bin/python3 tests/test_reproduction_figures.py SOURCE_DIR SCRATCH_DIR
 Exit 77 (skipped) without numpy or matplotlib.
@@ -229,3 +230,29 @@ for label, relative in band_runs:
     assert same(drawn, table), label
     bands_checked += 1
 print(f"checked {bands_checked} longitudinal band series of fig4a against their tables")
+
+# What carries P: every point of the alignment figure is its run's summary value (mean and
+# error), read here with the csv module; the runs of the 38 mm row and of Fig. 1f are all drawn.
+alignment = drawn_figure("alignment")
+alignment_checked = 0
+for box, runs, axis in (("38 mm box", figures.ALIGNMENT_ROW, "φ_a"),
+                        ("88 mm box", figures.ALIGNMENT_ROW_88MM, "φ_a"),
+                        ("38 mm box, seed 2", figures.ALIGNMENT_NOISE, "D_r")):
+    present = [(x, os.path.join(source, relative)) for x, _, relative in runs
+               if os.path.isfile(os.path.join(source, relative))]
+    if box != "88 mm box":
+        assert len(present) == len(runs), f"{box}: a summary is missing"
+    if not present:
+        continue
+    for name in ("P_polar", "P_independent", "flock_alignment"):
+        curve = alignment[f"{name}: {box}, against {axis}"]
+        expected_x, expected_y, expected_err = [], [], []
+        for x, path in present:
+            col, rows = read_table(path)
+            expected_x.append(x)
+            expected_y.append(float(rows[0][col[name]]))
+            expected_err.append(float(rows[0][col[name + "_err"]]))
+        assert same(curve["x"], expected_x) and same(curve["y"], expected_y), (box, name)
+        assert same(curve["err"], expected_err), (box, name)
+        alignment_checked += len(present)
+print(f"checked {alignment_checked} points of reproduction-alignment.png against their summaries")
