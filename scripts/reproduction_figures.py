@@ -117,6 +117,7 @@ FIG4A_SEED2_WINDOW = (25.0, 45.0)
 ALIGNMENT = f"{DATA}/flock-alignment"
 ALIGNMENT_ROW = [
     (0.05, "60–180 s", f"{ALIGNMENT}/fig1c-38mm-phi_a0.05-seed1-from60.summary.csv"),
+    (0.20, "60–180 s", f"{ALIGNMENT}/fig1c-38mm-phi_a0.20-seed1-from60.summary.csv"),
     (0.50, "30–90 s", f"{ALIGNMENT}/fig1f-38mm-D_r0-seed2-from30.summary.csv"),
     (0.65, "180–270 s", f"{ALIGNMENT}/fig1c-38mm-phi_a0.65-seed1-from180.summary.csv"),
     (0.80, "180–270 s", f"{ALIGNMENT}/fig1c-38mm-phi_a0.80-seed1-from180.summary.csv"),
