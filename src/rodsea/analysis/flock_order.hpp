@@ -6,8 +6,9 @@
 // order between them; the mean of P² over such rotations is
 //     P_ind² = (Σ_k |m_k|² + n_lone) / N²,    m_k = Σ_{i in flock k} (cos θ_i, sin θ_i),
 // exactly (the cross terms average to zero). ⟨P²⟩ / ⟨P_ind²⟩ over a run is then 1 when flocks and
-// lone rods head independently, above 1 when they align with one another (order on the scale of
-// the box, which a larger box keeps), below 1 when they head against one another.
+// lone rods head independently, above 1 when they align with one another, below 1 when they head
+// against one another. Alignment that spans the box makes the ratio grow with the number of rods;
+// alignment of a finite reach leaves it the same in a larger box.
 #include <span>
 
 namespace rodsea {
