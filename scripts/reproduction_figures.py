@@ -111,21 +111,22 @@ FIG4A_SEED2 = (5.625, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspec
 FIG4A_SEED2_WINDOW = (25.0, 45.0)
 
 # What carries P (the flocks observable's P_independent and flock_alignment): one
-# `rodsea analyze --observables order,flocks` summary per run, (x, label of its window, table).
-# Against φ_a, the 38 mm box's runs (0.50: Fig. 1f's seed-2 D_r = 0 run); a larger box's, if run,
-# beside them; against D_r, Fig. 1f's seed 2.
+# `rodsea analyze --observables order,flocks --from T` summary per run, (x, table), its window
+# in its name (from T to the run's end: 180 s for the row's 0.05 and 0.20, 270 s for 0.65 and
+# 0.80, 90 s for Fig. 1f's). Against φ_a, the 38 mm box's runs (0.50: Fig. 1f's seed-2 D_r = 0
+# run); a larger box's, if run, beside them; against D_r, Fig. 1f's seed 2.
 ALIGNMENT = f"{DATA}/flock-alignment"
 ALIGNMENT_ROW = [
-    (0.05, "60–180 s", f"{ALIGNMENT}/fig1c-38mm-phi_a0.05-seed1-from60.summary.csv"),
-    (0.20, "60–180 s", f"{ALIGNMENT}/fig1c-38mm-phi_a0.20-seed1-from60.summary.csv"),
-    (0.50, "30–90 s", f"{ALIGNMENT}/fig1f-38mm-D_r0-seed2-from30.summary.csv"),
-    (0.65, "180–270 s", f"{ALIGNMENT}/fig1c-38mm-phi_a0.65-seed1-from180.summary.csv"),
-    (0.80, "180–270 s", f"{ALIGNMENT}/fig1c-38mm-phi_a0.80-seed1-from180.summary.csv"),
+    (0.05, f"{ALIGNMENT}/fig1c-38mm-phi_a0.05-seed1-from60.summary.csv"),
+    (0.20, f"{ALIGNMENT}/fig1c-38mm-phi_a0.20-seed1-from60.summary.csv"),
+    (0.50, f"{ALIGNMENT}/fig1f-38mm-D_r0-seed2-from30.summary.csv"),
+    (0.65, f"{ALIGNMENT}/fig1c-38mm-phi_a0.65-seed1-from180.summary.csv"),
+    (0.80, f"{ALIGNMENT}/fig1c-38mm-phi_a0.80-seed1-from180.summary.csv"),
 ]
 ALIGNMENT_ROW_88MM = [
-    (0.05, "60–180 s", f"{ALIGNMENT}/fig1c-88mm-phi_a0.05-seed1-from60.summary.csv"),
+    (0.05, f"{ALIGNMENT}/fig1c-88mm-phi_a0.05-seed1-from60.summary.csv"),
 ]
-ALIGNMENT_NOISE = [(float(d), "30–90 s", f"{ALIGNMENT}/fig1f-38mm-D_r{d}-seed2-from30.summary.csv")
+ALIGNMENT_NOISE = [(float(d), f"{ALIGNMENT}/fig1f-38mm-D_r{d}-seed2-from30.summary.csv")
                    for d in ("0", "0.026", "0.23", "1.21", "1.87")]
 
 # Fig. 5b, first look: the medium's velocity around polar rods against distance in the 63 mm box
@@ -616,7 +617,7 @@ def alignment_points(runs, required=True):
     """[(x, {scalar: (mean, error)})] of P, P_independent and flock_alignment from each run's
     summary; a run not made yet is left out unless `required`."""
     points = []
-    for x, _, relative in runs:
+    for x, relative in runs:
         if not required and not os.path.isfile(os.path.join(ROOT, relative)):
             continue
         t = read_csv(relative)

@@ -238,7 +238,7 @@ alignment_checked = 0
 for box, runs, axis in (("38 mm box", figures.ALIGNMENT_ROW, "φ_a"),
                         ("88 mm box", figures.ALIGNMENT_ROW_88MM, "φ_a"),
                         ("38 mm box, seed 2", figures.ALIGNMENT_NOISE, "D_r")):
-    present = [(x, os.path.join(source, relative)) for x, _, relative in runs
+    present = [(x, os.path.join(source, relative)) for x, relative in runs
                if os.path.isfile(os.path.join(source, relative))]
     if box != "88 mm box":
         assert len(present) == len(runs), f"{box}: a summary is missing"
