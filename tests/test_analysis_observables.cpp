@@ -124,6 +124,48 @@ TEST(PairCorrelation, UniformRandomPointsHaveGOfROne) {
     EXPECT_NEAR(pairs / ideal, 1.0, 5.0 / std::sqrt(ideal));
 }
 
+TEST(PairCorrelation, ErrorBarsAreTheSpreadOfTheTimeBlocks) {
+    // Two polar rods 2.4 mm apart, one frame per block of 4, turned against each other by 0,
+    // π/3, π/2 and π: G in their bin is cos δ = 1, 1/2, 0, −1 block by block, pooled 1/8 (each
+    // block holds the same two ordered pairs), and G_err is the standard error of those four,
+    // √(Σ (G_k − 1/8)² / 3 / 4). G₂ = cos 2δ = 1, −1/2, −1, 1 likewise; g is the same in every
+    // block, so its error is 0. A bin no pair reaches has no value and no error.
+    const double side = 20.0;
+    const std::vector<double> turns{0.0, kPi / 3.0, kPi / 2.0, kPi};
+    std::vector<AnalysisFrame> frames;
+    std::vector<Body> first;
+    for (std::size_t k = 0; k < turns.size(); ++k) {
+        const std::vector<Body> bodies{{5.0, 5.0, 0.3, 0}, {7.4, 5.0, 0.3 + turns[k], 0}};
+        if (k == 0) first = bodies;
+        frames.push_back(make_frame(side, bodies, k));
+    }
+    const auto setup = make_setup(side, first, frames.size());
+    ASSERT_EQ(setup.blocks, 4);
+    AnalysisOptions options;
+    options.pair_r_max = 5.0;
+    options.pair_bin = 1.0;
+    PairCorrelationObservable o(setup, resolved(setup, options));
+    const auto r = run_on(o, frames, setup);
+    const TableResult& t = table(r, "pair_correlation_polar");
+    const auto& row = t.rows[2];  // r in [2, 3) mm
+    const auto standard_error = [](std::vector<double> v) {
+        double mean = 0.0, ss = 0.0;
+        for (double x : v)
+            mean += x / static_cast<double>(v.size());
+        for (double x : v)
+            ss += (x - mean) * (x - mean);
+        return std::sqrt(ss / static_cast<double>(v.size() - 1) / static_cast<double>(v.size()));
+    };
+    // Sums of four cosines of exact angles: within a few ulps.
+    EXPECT_NEAR(row[column(t, "G")], 0.125, 1e-12);
+    EXPECT_NEAR(row[column(t, "G_err")], standard_error({1.0, 0.5, 0.0, -1.0}), 1e-12);
+    EXPECT_NEAR(row[column(t, "G2")], 0.125, 1e-12);
+    EXPECT_NEAR(row[column(t, "G2_err")], standard_error({1.0, -0.5, -1.0, 1.0}), 1e-12);
+    EXPECT_EQ(row[column(t, "g_err")], 0.0);
+    EXPECT_TRUE(std::isnan(t.rows[4][column(t, "G")]));
+    EXPECT_TRUE(std::isnan(t.rows[4][column(t, "G_err")]));
+}
+
 // Rods on a rectangular lattice, 5.25 mm apart along their axis and 1.75 mm across it (mid-bin
 // distances), the lattice turned with the rods by `angle`.
 std::vector<Body> aligned_lattice(double side, double angle, double x0, double y0) {

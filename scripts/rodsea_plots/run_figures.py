@@ -507,11 +507,18 @@ def pair_jobs(a, log):
                            (medium, f"medium rods ({medium_name})")):
             if table is None:
                 continue
-            left.plot(table.number("r"), table.number("g"), lw=1.3, label=f"g(r), {who}")
-            if table.has("G"):
-                right.plot(table.number("r"), table.number("G"), lw=1.3, label=f"G(r), {who}")
-            right.plot(table.number("r"), table.number("G2"), lw=1.3, ls="--",
-                       label=f"G₂(r), {who}")
+            r = table.number("r")
+            for ax, col, label, ls in ((left, "g", f"g(r), {who}", "-"),
+                                       (right, "G", f"G(r), {who}", "-"),
+                                       (right, "G2", f"G₂(r), {who}", "--")):
+                if not table.has(col):
+                    continue
+                y = table.number(col)
+                line, = ax.plot(r, y, lw=1.3, ls=ls, label=label)
+                # The time blocks' standard error, where the analysis wrote it.
+                if table.has(col + "_err"):
+                    e = table.number(col + "_err")
+                    ax.fill_between(r, y - e, y + e, color=line.get_color(), alpha=0.2, lw=0)
         left.axhline(1.0, color="0.4", lw=0.8, ls=":")
         right.axhline(0.0, color="0.4", lw=0.8, ls=":")
         left.set_xlabel("r (mm)")

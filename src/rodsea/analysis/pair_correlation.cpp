@@ -1,5 +1,6 @@
 #include "rodsea/analysis/pair_correlation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -41,6 +42,24 @@ void PairCorrelation::compute(const PeriodicGrid2D& points, std::span<const doub
         });
     }
     reference_pairs_ += n * (n - 1.0);
+}
+
+PairCorrelation& PairCorrelation::operator+=(const PairCorrelation& other) {
+    if (other.frames_ == 0) return *this;
+    if (frames_ == 0) return *this = other;
+    // The blocks of one run share its box, so its bins and area; min() only keeps a mismatch
+    // from reading past the shorter.
+    bins_ = std::min(bins_, other.bins_);
+    pairs_.resize(bins_), cos1_.resize(bins_), cos2_.resize(bins_);
+    for (std::size_t b = 0; b < bins_; ++b) {
+        pairs_[b] += other.pairs_[b];
+        cos1_[b] += other.cos1_[b];
+        cos2_[b] += other.cos2_[b];
+    }
+    reference_pairs_ += other.reference_pairs_;
+    frames_ += other.frames_;
+    area_ = other.area_;
+    return *this;
 }
 
 std::vector<double> PairCorrelation::bin_centres() const {

@@ -34,6 +34,10 @@ class PairCorrelation {
     std::vector<double> nematic_correlation() const;                    // G₂(r)
     std::size_t frames() const { return frames_; }
 
+    // Pools another accumulation of the same parameters (e.g. one time block of the window); an
+    // empty one changes nothing, and the pooled range is the shorter of the two.
+    PairCorrelation& operator+=(const PairCorrelation& other);
+
   private:
     double bin_;
     std::size_t bins_;
