@@ -129,6 +129,33 @@ ALIGNMENT_ROW_88MM = [
 ALIGNMENT_NOISE = [(float(d), f"{ALIGNMENT}/fig1f-38mm-D_r{d}-seed2-from30.summary.csv")
                    for d in ("0", "0.026", "0.23", "1.21", "1.87")]
 
+# The dilute end's order (φ_a = 0.05, φ_p = 0.05, D_r = 0): how far it reaches and what carries
+# it. G(r) of the polar rods over 60-180 s from `rodsea analyze --observables pair --from 60
+# --param pair.r_max=L/2 --param pair.bin=1` (label, table, colour, line style), and P(t) in 5 s
+# means of 1 s series tables (label, table, colour, line style): the row's runs with the medium
+# from the random start; the same rods without the medium (dilute-order/polar-only-*.toml); the
+# 88 mm box from an aligned start (dilute-order/aligned-88mm.toml).
+DILUTE = f"{DATA}/dilute-order"
+DILUTE_CORRELATIONS = [
+    ("38 mm, with medium", f"{DILUTE}/fig1c-38mm-phi_a0.05-seed1-from60.pair_correlation_polar.csv",
+     "C0", "-"),
+    ("38 mm, no medium", f"{DILUTE}/polar-only-38mm-from60.pair_correlation_polar.csv", "C0", "--"),
+    ("88 mm, with medium", f"{DILUTE}/fig1c-88mm-phi_a0.05-seed1-from60.pair_correlation_polar.csv",
+     "C3", "-"),
+    ("88 mm, no medium", f"{DILUTE}/polar-only-88mm-from60.pair_correlation_polar.csv", "C3", "--"),
+    ("88 mm, with medium, aligned start",
+     f"{DILUTE}/aligned-88mm-from60.pair_correlation_polar.csv", "C2", "-"),
+]
+DILUTE_SERIES = [
+    ("38 mm, with medium", f"{DATA}/finite-size/fig1c-phi_a0.05-scale0.15.series.csv", "C0", "-"),
+    ("38 mm, no medium", f"{DILUTE}/polar-only-38mm.series.csv", "C0", "--"),
+    ("88 mm, with medium",
+     f"{DATA}/finite-size/fig1c-phi_a0.05-scale0.35_extended_to_360_s.series.csv", "C3", "-"),
+    ("88 mm, no medium", f"{DILUTE}/polar-only-88mm.series.csv", "C3", "--"),
+    ("88 mm, with medium, aligned start", f"{DILUTE}/aligned-88mm.series.csv", "C2", "-"),
+]
+DILUTE_BIN = 5
+
 # Fig. 5b, first look: the medium's velocity around polar rods against distance in the 63 mm box
 # (label, profile table) from `rodsea analyze --observables medium_velocity`.
 FIG5B_PROFILES = [
@@ -674,9 +701,44 @@ def draw_alignment(plt):
     return fig, dump
 
 
+def draw_dilute(plt):
+    """The dilute end's order: G(r) of the polar rods against distance in two boxes, with and
+    without the medium and from an aligned start (left), and P(t) of the same runs (right)."""
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11.0, 4.2))
+    dump = {}
+    for label, relative, colour, style in DILUTE_CORRELATIONS:
+        t = read_csv(relative)
+        r, g, err = (column(t, n, relative) for n in ("r", "G", "G_err"))
+        keep = np.isfinite(g)
+        left.plot(r[keep], g[keep], color=colour, ls=style, lw=1.3, label=label)
+        left.fill_between(r[keep], (g - err)[keep], (g + err)[keep], color=colour, alpha=0.15,
+                          lw=0)
+        dump[f"G: {label}"] = {"x": r[keep].tolist(), "y": g[keep].tolist(),
+                               "err": err[keep].tolist()}
+    for label, relative, colour, style in DILUTE_SERIES:
+        t = read_csv(relative)
+        x, y = bin_means(t, "P_polar", relative, DILUTE_BIN)
+        right.plot(x, y, color=colour, ls=style, lw=1.3, label=label)
+        dump[f"P: {label}"] = {"x": x.tolist(), "y": y.tolist()}
+    left.axhline(0.0, color="grey", lw=0.8, ls=":")
+    left.set_xlabel("r (mm)")
+    left.set_ylabel("G(r) = ⟨cos(θ_i − θ_j)⟩, polar rods")
+    left.set_title("Polar correlation, 60–180 s (shaded: ± 1 s.e., 4 time blocks)", fontsize=10)
+    left.legend(loc="upper right", fontsize=7)
+    right.set_xlabel("t (s)")
+    right.set_ylabel(f"P ({DILUTE_BIN} s means)")
+    right.set_ylim(0, 1)
+    right.set_title("Global polar order", fontsize=10)
+    right.legend(loc="upper right", fontsize=7)
+    fig.suptitle("The dilute end (φ_a = 0.05, φ_p = 0.05, σ = 3.125, D_r = 0): how far the "
+                 "polar order reaches, and whether it is the medium's", fontsize=10)
+    fig.tight_layout()
+    return fig, dump
+
+
 FIGURES = {"fig1c": draw_fig1c, "fig1c-series": draw_fig1c_series,
            "finite-size": draw_finite_size, "row38": draw_row38, "ct38": draw_ct38,
-           "dense38": draw_dense38, "alignment": draw_alignment,
+           "dense38": draw_dense38, "alignment": draw_alignment, "dilute": draw_dilute,
            "fig1f": draw_fig1f,
            "beads": draw_beads, "beads-light": draw_beads_light, "fig4a": draw_fig4a,
            "fig5b": draw_fig5b}
