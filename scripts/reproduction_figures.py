@@ -130,11 +130,13 @@ ALIGNMENT_NOISE = [(float(d), f"{ALIGNMENT}/fig1f-38mm-D_r{d}-seed2-from30.summa
                    for d in ("0", "0.026", "0.23", "1.21", "1.87")]
 
 # The dilute end's order (φ_a = 0.05, φ_p = 0.05, D_r = 0): how far it reaches and what carries
-# it. G(r) of the polar rods over 60-180 s from `rodsea analyze --observables pair --from 60
-# --param pair.r_max=L/2 --param pair.bin=1` (label, table, colour, line style), and P(t) in 5 s
-# means of 1 s series tables (label, table, colour, line style): the row's runs with the medium
-# from the random start; the same rods without the medium (dilute-order/polar-only-*.toml); the
-# 88 mm box from an aligned start (dilute-order/aligned-88mm.toml).
+# it. G(r) of the polar rods over 60-180 s unless the label names a window, from `rodsea analyze
+# --observables pair --from T --param pair.r_max=L/2 --param pair.bin=1` (label, table, colour,
+# line style), and P(t) in 5 s means of 1 s series tables (label, table, colour, line style):
+# the row's runs with the medium from the random start; the same rods without the medium
+# (dilute-order/polar-only-*.toml, seed 2 to 360 s); the 88 mm box with medium rods of a quarter
+# of the mass (light-medium-88mm.toml) and, P(t) only (stopped at 70 s), from an aligned start
+# (aligned-88mm.toml).
 DILUTE = f"{DATA}/dilute-order"
 DILUTE_CORRELATIONS = [
     ("38 mm, with medium", f"{DILUTE}/fig1c-38mm-phi_a0.05-seed1-from60.pair_correlation_polar.csv",
@@ -143,8 +145,12 @@ DILUTE_CORRELATIONS = [
     ("88 mm, with medium", f"{DILUTE}/fig1c-88mm-phi_a0.05-seed1-from60.pair_correlation_polar.csv",
      "C3", "-"),
     ("88 mm, no medium", f"{DILUTE}/polar-only-88mm-from60.pair_correlation_polar.csv", "C3", "--"),
-    ("88 mm, with medium, aligned start",
-     f"{DILUTE}/aligned-88mm-from60.pair_correlation_polar.csv", "C2", "-"),
+    ("88 mm, no medium, seed 2, 60–180 s (before it orders)",
+     f"{DILUTE}/polar-only-88mm-seed2-from60-to180.pair_correlation_polar.csv", "C3", "-."),
+    ("88 mm, no medium, seed 2, 240–360 s",
+     f"{DILUTE}/polar-only-88mm-seed2-from240.pair_correlation_polar.csv", "C3", ":"),
+    ("88 mm, light medium", f"{DILUTE}/light-medium-88mm-from60.pair_correlation_polar.csv", "C1",
+     "-"),
 ]
 DILUTE_SERIES = [
     ("38 mm, with medium", f"{DATA}/finite-size/fig1c-phi_a0.05-scale0.15.series.csv", "C0", "-"),
@@ -152,7 +158,9 @@ DILUTE_SERIES = [
     ("88 mm, with medium",
      f"{DATA}/finite-size/fig1c-phi_a0.05-scale0.35_extended_to_360_s.series.csv", "C3", "-"),
     ("88 mm, no medium", f"{DILUTE}/polar-only-88mm.series.csv", "C3", "--"),
+    ("88 mm, no medium, seed 2", f"{DILUTE}/polar-only-88mm-seed2.series.csv", "C3", ":"),
     ("88 mm, with medium, aligned start", f"{DILUTE}/aligned-88mm.series.csv", "C2", "-"),
+    ("88 mm, light medium", f"{DILUTE}/light-medium-88mm.series.csv", "C1", "-"),
 ]
 DILUTE_BIN = 5
 
@@ -704,7 +712,7 @@ def draw_alignment(plt):
 def draw_dilute(plt):
     """The dilute end's order: G(r) of the polar rods against distance in two boxes, with and
     without the medium and from an aligned start (left), and P(t) of the same runs (right)."""
-    fig, (left, right) = plt.subplots(1, 2, figsize=(11.0, 4.2))
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11.0, 5.6))
     dump = {}
     for label, relative, colour, style in DILUTE_CORRELATIONS:
         t = read_csv(relative)
@@ -723,13 +731,14 @@ def draw_dilute(plt):
     left.axhline(0.0, color="grey", lw=0.8, ls=":")
     left.set_xlabel("r (mm)")
     left.set_ylabel("G(r) = ⟨cos(θ_i − θ_j)⟩, polar rods")
-    left.set_title("Polar correlation, 60–180 s (shaded: ± 1 s.e., 4 time blocks)", fontsize=10)
-    left.legend(loc="upper right", fontsize=7)
+    left.set_title("Polar correlation, 60–180 s unless named (shaded: ± 1 s.e.)", fontsize=10)
+    # Below the axes: the curves fill the panels.
+    left.legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, fontsize=7)
     right.set_xlabel("t (s)")
     right.set_ylabel(f"P ({DILUTE_BIN} s means)")
     right.set_ylim(0, 1)
     right.set_title("Global polar order", fontsize=10)
-    right.legend(loc="upper right", fontsize=7)
+    right.legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, fontsize=7)
     fig.suptitle("The dilute end (φ_a = 0.05, φ_p = 0.05, σ = 3.125, D_r = 0): how far the "
                  "polar order reaches, and whether it is the medium's", fontsize=10)
     fig.tight_layout()

@@ -3,8 +3,8 @@ Regenerates Fig. 1c's figure into a scratch directory and checks every curve it 
 the tables, read here with the csv module (not the script's parser), and the PNG's size; then
 the 38 mm row's, Fig. 1f's and the bead medium's (heavy and light beads) points against the
 block means of their series tables, the 38 mm row's C(t) against its tables, its dense
-end's 5 s means against their series, and what carries P (P_independent, flock_alignment)
-against each run's analysis summary.
+end's 5 s means against their series, what carries P (P_independent, flock_alignment)
+against each run's analysis summary, and the dilute end's G(r) and P(t) against their tables.
 
     /usr/bin/python3 tests/test_reproduction_figures.py SOURCE_DIR SCRATCH_DIR
 Exit 77 (skipped) without numpy or matplotlib.
@@ -256,3 +256,26 @@ for box, runs, axis in (("38 mm box", figures.ALIGNMENT_ROW, "φ_a"),
         assert same(curve["err"], expected_err), (box, name)
         alignment_checked += len(present)
 print(f"checked {alignment_checked} points of reproduction-alignment.png against their summaries")
+
+# The dilute end: every G(r) drawn is its table's G and G_err wherever G has a value, and every
+# P(t) its series' 5 s means, the tables read here with the csv module; every run is drawn.
+dilute = drawn_figure("dilute")
+dilute_checked = 0
+for label, relative, _, _ in figures.DILUTE_CORRELATIONS:
+    col, rows = read_table(os.path.join(source, relative))
+    kept = [r for r in rows if not math.isnan(float(r[col["G"]]))]
+    curve = dilute[f"G: {label}"]
+    assert same(curve["x"], [float(r[col["r"]]) for r in kept]), label
+    assert same(curve["y"], [float(r[col["G"]]) for r in kept]), label
+    assert same(curve["err"], [float(r[col["G_err"]]) for r in kept]), label
+    dilute_checked += 1
+for label, relative, _, _ in figures.DILUTE_SERIES:
+    col, rows = read_table(os.path.join(source, relative))
+    values = [float(r[col["P_polar"]]) for r in rows]
+    width = figures.DILUTE_BIN
+    groups = [values[i:i + width] for i in range(0, len(values) - width + 1, width)]
+    curve = dilute[f"P: {label}"]["y"]
+    assert len(curve) == len(groups) and all(
+        abs(y - sum(g) / width) < 1e-12 for y, g in zip(curve, groups)), label
+    dilute_checked += 1
+print(f"checked {dilute_checked} curves of reproduction-dilute.png against their tables")
