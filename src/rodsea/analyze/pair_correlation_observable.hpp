@@ -3,7 +3,6 @@
 // (analysis/pair_correlation.hpp), averaged over the steady frames, with error bars from the
 // spread of the window's time blocks: the distant pairs' G(r) moves with the global order, whose
 // memory is as long as the window.
-#include <optional>
 #include <vector>
 
 #include "rodsea/analysis/pair_correlation.hpp"
