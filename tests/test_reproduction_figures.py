@@ -85,6 +85,14 @@ def block_mean(path, column, start, end, block=15.0):
     return sum(means) / len(means)
 
 
+def are_bin_means(curve, values, width):
+    """Whether `curve` is the means of consecutive groups of `width` of `values` (a shorter
+    remainder left out)."""
+    groups = [values[i:i + width] for i in range(0, len(values) - width + 1, width)]
+    return len(curve) == len(groups) and all(
+        abs(y - sum(g) / width) < 1e-12 for y, g in zip(curve, groups))
+
+
 def check_points(name, drawn_points, expected, at_least):
     assert len(drawn_points) == len(expected) >= at_least, (drawn_points, expected)
     for (x, y), (ex, ey) in zip(drawn_points, expected):
@@ -134,13 +142,9 @@ for phi, relative, _ in figures.DENSE38:
     if not os.path.isfile(path):
         continue
     col, rows = read_table(path)
-    width = figures.DENSE38_BIN
     for name in ("P_polar", "S_medium", "Sigma", "fraction_in_flocks"):
-        values = [float(r[col[name]]) for r in rows]
-        groups = [values[i:i + width] for i in range(0, len(values) - width + 1, width)]
-        curve = dense[f"{name}: φ_a = {phi:g}"]["y"]
-        assert len(curve) == len(groups) and all(
-            abs(y - sum(g) / width) < 1e-12 for y, g in zip(curve, groups)), (phi, name)
+        assert are_bin_means(dense[f"{name}: φ_a = {phi:g}"]["y"],
+                             [float(r[col[name]]) for r in rows], figures.DENSE38_BIN), (phi, name)
     checked += 1
 assert checked >= 1, "no dense-end series was checked"
 print(f"checked the series of {checked} dense-end runs of reproduction-dense38.png")
@@ -271,11 +275,7 @@ for label, relative, _, _ in figures.DILUTE_CORRELATIONS:
     dilute_checked += 1
 for label, relative, _, _ in figures.DILUTE_SERIES:
     col, rows = read_table(os.path.join(source, relative))
-    values = [float(r[col["P_polar"]]) for r in rows]
-    width = figures.DILUTE_BIN
-    groups = [values[i:i + width] for i in range(0, len(values) - width + 1, width)]
-    curve = dilute[f"P: {label}"]["y"]
-    assert len(curve) == len(groups) and all(
-        abs(y - sum(g) / width) < 1e-12 for y, g in zip(curve, groups)), label
+    assert are_bin_means(dilute[f"P: {label}"]["y"], [float(r[col["P_polar"]]) for r in rows],
+                         figures.DILUTE_BIN), label
     dilute_checked += 1
 print(f"checked {dilute_checked} curves of reproduction-dilute.png against their tables")
