@@ -307,9 +307,9 @@ TEST_P(GpuAlgorithm, TheNeighbourListLastsManySteps) {
 
 RODSEA_ON_EACH_BACKEND(GpuAlgorithm);
 
-// A run whose lists outgrow their room (here one partner per sphere and one contact per step to
-// start with) is taken again from its start with more room: the bits are those of a stepper that
-// had the room from the start, run by run.
+// A run whose lists outgrow their room (here one partner per sphere, one sphere per cell and one
+// contact per step to start with) is taken again from its start with more room: the bits are those
+// of a stepper that had the room from the start, run by run.
 TEST(DataParallelRuns, ARunThatOutgrowsItsRoomIsTakenAgainToTheSameBits) {
     const Scene scene = noisy_dense_mixture(9);
     const SpeciesTable species = SpeciesTable::from(scene.params);
@@ -320,7 +320,7 @@ TEST(DataParallelRuns, ARunThatOutgrowsItsRoomIsTakenAgainToTheSameBits) {
             std::move(members), kGrossOverlapFraction, parallel::HostExecutor(1), room);
     };
     auto roomy = stepper({});
-    auto cramped = stepper({1, 1});
+    auto cramped = stepper({1, 1, 1});
     std::vector<StepsDone> roomy_done, cramped_done;
     StageProfile profile;
     std::uint64_t step = 0;
@@ -419,10 +419,19 @@ TEST(CpuEnsemble, ABlowUpSideBySideNamesItsSystem) {
     EXPECT_EQ(ensemble.state_hash(0), alone.state_hash());
 }
 
-// The islands on a random contact graph much denser than a monolayer's, hooked by two threads:
-// every contact is labelled with the smallest body of its connected component (found here by a
-// plain search), whatever order the hooks ran in, and gathered into its island's place.
-TEST(Islands, EveryContactIsLabelledWithTheSmallestBodyOfItsComponent) {
+// Joins each body contact's two islands (the contact search does it as it writes them).
+struct JoinEach {
+    const Contact* contacts;
+    std::uint32_t* parent;
+    void operator()(std::uint32_t k) const {
+        parallel::join_islands(parent, contacts[k].a, contacts[k].b);
+    }
+};
+
+// The islands on a random contact graph much denser than a monolayer's, joined and listed by two
+// threads: every contact is on the list of the smallest body of its connected component (found
+// here by a plain search), once, whatever order the joins ran in.
+TEST(Islands, EveryContactIsListedAtTheSmallestBodyOfItsComponent) {
     using Exec = parallel::HostExecutor;
     Exec exec(2);
     const std::uint32_t bodies = 6000, body_contacts = 5000, plate_contacts = 800;
@@ -444,27 +453,23 @@ TEST(Islands, EveryContactIsLabelledWithTheSmallestBodyOfItsComponent) {
     }
     const auto count = static_cast<std::uint32_t>(list.size());
     Exec::Array<Contact> contacts;
-    Exec::Array<std::uint32_t> parent, island_count, island_start, key, rank, order;
+    Exec::Array<std::uint32_t> parent, island_count, island_head, next;
     exec.upload(contacts, list);
     std::vector<std::uint32_t> itself(bodies);
     std::iota(itself.begin(), itself.end(), 0u);
     exec.upload(parent, itself);  // free flight's start: every body its own island
     island_count.resize(bodies);
-    island_start.resize(bodies);
+    island_head.resize(bodies);
     exec.fill(island_count, bodies, 0u);
-    for (auto* a : {&key, &rank, &order})
-        a->resize(count);
-    exec.launch(body_contacts, parallel::HookIslands{contacts.data(), parent.data()});
-    exec.launch(count, parallel::KeyContactsByIsland{contacts.data(), parent.data(),
-                                                     island_count.data(), key.data(), rank.data()});
-    exec.exclusive_scan(island_count, island_start, bodies);
-    exec.launch(
-        count, parallel::GatherIslands{key.data(), rank.data(), island_start.data(), order.data()});
-    std::vector<std::uint32_t> label, counted, island_at, gathered;
-    exec.download(key, count, label);
+    exec.fill(island_head, bodies, parallel::kNoContact);
+    next.resize(count);
+    exec.launch(body_contacts, JoinEach{contacts.data(), parent.data()});
+    exec.launch(count, parallel::ListIslands{contacts.data(), parent.data(), island_count.data(),
+                                             island_head.data(), next.data()});
+    std::vector<std::uint32_t> counted, head, after;
     exec.download(island_count, bodies, counted);
-    exec.download(island_start, bodies, island_at);
-    exec.download(order, count, gathered);
+    exec.download(island_head, bodies, head);
+    exec.download(next, count, after);
 
     // The components by a breadth-first search over the body–body contacts.
     std::vector<std::vector<std::uint32_t>> around(bodies);
@@ -478,26 +483,28 @@ TEST(Islands, EveryContactIsLabelledWithTheSmallestBodyOfItsComponent) {
         std::vector<std::uint32_t> queue{start};
         smallest[start] = start;  // bodies are visited in order: the first is the smallest
         for (std::size_t q = 0; q < queue.size(); ++q)
-            for (const std::uint32_t next : around[queue[q]])
-                if (smallest[next] == bodies) {
-                    smallest[next] = start;
-                    queue.push_back(next);
+            for (const std::uint32_t next_body : around[queue[q]])
+                if (smallest[next_body] == bodies) {
+                    smallest[next_body] = start;
+                    queue.push_back(next_body);
                 }
     }
-    std::size_t joined = 0;
-    for (std::uint32_t k = 0; k < count; ++k) {
-        ASSERT_EQ(label[k], smallest[list[k].a]) << "contact " << k;
-        if (label[k] != list[k].a) ++joined;
-    }
-    EXPECT_GT(joined, count / 2);  // the graph does join most contacts into larger islands
-    // Each root's place holds exactly its island's contacts, every contact once.
+    // Each root's list holds exactly its island's contacts, as many as it counted, every
+    // contact once.
     std::vector<int> seen(count, 0);
-    for (std::uint32_t root = 0; root < bodies; ++root)
-        for (std::uint32_t i = island_at[root]; i < island_at[root] + counted[root]; ++i) {
-            ASSERT_EQ(label[gathered[i]], root);
-            ++seen[gathered[i]];
+    std::size_t joined = 0;
+    for (std::uint32_t root = 0; root < bodies; ++root) {
+        std::uint32_t k = head[root];
+        for (std::uint32_t i = 0; i < counted[root]; ++i, k = after[k]) {
+            ASSERT_LT(k, count) << "root " << root;
+            ASSERT_EQ(smallest[list[k].a], root) << "contact " << k;
+            ++seen[k];
+            if (root != list[k].a) ++joined;
         }
+        EXPECT_EQ(k, parallel::kNoContact) << "root " << root << "'s list is longer than counted";
+    }
     EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<std::ptrdiff_t>(count));
+    EXPECT_GT(joined, count / 2);  // the graph does join most contacts into larger islands
 }
 
 // Asking for the GPU where this build or machine has none is refused before any work, naming

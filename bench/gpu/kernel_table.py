@@ -24,8 +24,13 @@ def main():
     scale = {"ns": 1e-3, "nsecond": 1e-3, "us": 1.0, "usecond": 1.0, "ms": 1e3, "msecond": 1e3}
     times = OrderedDict()
     for row in rows[1:]:
-        match = re.search(r"parallel::(\w+)", row[name_at])
-        name = match.group(1) if match else re.sub(r"<.*", "", row[name_at]).split("::")[-1]
+        # A step kernel by its element kernels (run_kernel_then's tail after a +), whether ncu
+        # writes them with their namespace or without.
+        kernels = re.findall(r"parallel::(\w+)", row[name_at])
+        if not kernels:
+            template = re.match(r"(?:void )?run_\w+<([^>(]*)>", row[name_at])
+            kernels = [k.strip() for k in template.group(1).split(",")] if template else []
+        name = " + ".join(kernels) if kernels else re.sub(r"<.*", "", row[name_at]).split("::")[-1]
         times.setdefault(name, []).append(float(row[value_at].replace(",", "")) * scale[row[unit_at]])
     total = sum(sum(v) for v in times.values())
     print("| kernel | launches per step | µs per launch | µs per step | share |")

@@ -104,11 +104,11 @@ if [ "${PROFILE:-1}" = 1 ]; then
   if [ -n "$ncu" ]; then
     # Ten steps of the largest rod system, every kernel launched singly (no graph replays, which
     # ncu does not count as launches): 2000 steps of settling and the timing's first run of 1024,
-    # 17 launches a step, come to ~51 400 launches before the steps timed. Each kernel's duration
+    # 6 launches a step, come to ~18 100 launches before the steps timed. Each kernel's duration
     # (bench/gpu/kernel_table.py makes the table).
     RODSEA_GPU_GRAPHS=0 timeout "${PROFILE_LIMIT:-120}" "$ncu" --clock-control none \
-      --metrics gpu__time_duration.sum --csv --launch-skip "${PROFILE_SKIP:-60000}" \
-      --launch-count "${PROFILE_COUNT:-170}" \
+      --metrics gpu__time_duration.sum --csv --launch-skip "${PROFILE_SKIP:-20000}" \
+      --launch-count "${PROFILE_COUNT:-60}" \
       "$bin/rodsea_gpu_bench" --only paper-rods --skip-cpu --seconds 0.5 --launches-only \
       --settle-steps 2000 \
       >"$out/kernels.csv" 2>"$out/ncu.log" || echo "ncu failed: $(tail -3 "$out/ncu.log")"

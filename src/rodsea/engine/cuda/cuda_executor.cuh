@@ -1,7 +1,7 @@
 #pragma once
 // Runs the data-parallel step's kernels on a CUDA device: HostExecutor's interface
-// (engine/parallel/host_executor.hpp) over device memory, one kernel launch per launch(), CUB's
-// scans (deterministic: no floating-point atomics). Everything is queued on the executor's own
+// (engine/parallel/host_executor.hpp) over device memory, one kernel launch per launch() (a
+// launch's tail run by its last block). Everything is queued on the executor's own
 // stream, which a run of steps can be recorded from as a CUDA graph and replayed; the host waits
 // only where it reads memory back (download, read).
 #include <cuda_runtime.h>
@@ -9,8 +9,6 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <cub/block/block_scan.cuh>
-#include <cub/device/device_scan.cuh>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -46,34 +44,27 @@ __global__ void fill_kernel(T* data, std::uint32_t n, T value) {
     if (i < n) data[i] = value;
 }
 
-// One block scans the cells' counts when the neighbour list is rebuilt (every few hundred
-// steps): a block-wide scan per tile of kScanThreads × kScanItems counts, carried from tile to
-// tile. When it is not rebuilt the block reads the flag and ends.
-constexpr int kScanThreads = 1024;
-constexpr int kScanItems = 4;
-__global__ void __launch_bounds__(kScanThreads)
-    flagged_scan_kernel(const std::uint32_t* flag, std::uint32_t* count, std::uint32_t* start,
-                        std::uint32_t n) {
-    if (*flag == 0) return;
-    using Scan = cub::BlockScan<std::uint32_t, kScanThreads>;
-    __shared__ typename Scan::TempStorage temp;
-    std::uint32_t carried = 0;
-    for (std::uint32_t tile = 0; tile < n; tile += kScanThreads * kScanItems) {
-        std::uint32_t items[kScanItems];
-        const std::uint32_t first = tile + threadIdx.x * kScanItems;
-        for (int j = 0; j < kScanItems; ++j)
-            items[j] = first + j < n ? count[first + j] : 0u;
-        std::uint32_t tile_total = 0;
-        Scan(temp).ExclusiveSum(items, items, tile_total);
-        __syncthreads();  // the temporary storage is reused by the next tile
-        for (int j = 0; j < kScanItems; ++j)
-            if (first + j < n) {
-                start[first + j] = carried + items[j];
-                count[first + j] = 0;
-            }
-        carried += tile_total;
+// kernel(i) for i < n, then tail(j) for j < tail_n by the last block to finish: each block's
+// first thread counts its block done after a fence (cooperative groups' grid barrier does the
+// same), and the block that counts last fences again and runs the tail, which so sees every
+// element's writes. It leaves the count at 0 for the next launch (the stream orders them).
+template <class Kernel, class Tail>
+__global__ void run_kernel_then(Kernel kernel, std::uint32_t n, Tail tail, std::uint32_t tail_n,
+                                std::uint32_t* blocks_done) {
+    const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i < n) kernel(i);
+    __shared__ bool last;
+    __syncthreads();
+    if (threadIdx.x == 0) {
+        __threadfence();
+        last = atomicAdd(blocks_done, 1u) == gridDim.x - 1;
+        if (last) __threadfence();
     }
-    if (threadIdx.x == 0) start[n] = carried;
+    __syncthreads();
+    if (!last) return;
+    for (std::uint32_t j = threadIdx.x; j < tail_n; j += blockDim.x)
+        tail(j);
+    if (threadIdx.x == 0) *blocks_done = 0;
 }
 
 class CudaExecutor {
@@ -143,15 +134,16 @@ class CudaExecutor {
         check(cudaGetDevice(&device), "device");
         check(cudaDeviceGetAttribute(&multiprocessors_, cudaDevAttrMultiProcessorCount, device),
               "device attributes");
+        check(cudaMalloc(&blocks_done_, sizeof(std::uint32_t)), "cudaMalloc");
+        check(cudaMemsetAsync(blocks_done_, 0, sizeof(std::uint32_t), stream_), "cudaMemset");
     }
     CudaExecutor(CudaExecutor&& o) noexcept
         : stream_(std::exchange(o.stream_, nullptr)),
           multiprocessors_(o.multiprocessors_),
-          scratch_(std::exchange(o.scratch_, nullptr)),
-          scratch_bytes_(std::exchange(o.scratch_bytes_, 0)) {}
+          blocks_done_(std::exchange(o.blocks_done_, nullptr)) {}
     CudaExecutor& operator=(CudaExecutor&&) = delete;
     ~CudaExecutor() {
-        cudaFree(scratch_);
+        cudaFree(blocks_done_);
         if (stream_ != nullptr) cudaStreamDestroy(stream_);
     }
 
@@ -161,8 +153,7 @@ class CudaExecutor {
     void launch(std::size_t n, const Kernel& kernel) const {
         if (n == 0) return;
         const auto count = static_cast<std::uint32_t>(n);
-        run_kernel<<<(count + kBlock - 1) / kBlock, kBlock, 0, stream_>>>(kernel, count);
-        check(cudaGetLastError(), "kernel launch");
+        start((count + kBlock - 1) / kBlock, run_kernel<Kernel>, kernel, count);
     }
     template <class Kernel>
     void launch_counted(std::size_t max_n, const std::uint32_t* count, const Kernel& kernel) const {
@@ -170,8 +161,16 @@ class CudaExecutor {
         // Enough blocks to fill the device several times over; more would mostly find no work.
         const std::size_t blocks =
             std::min<std::size_t>((max_n + kBlock - 1) / kBlock, 4 * std::size_t(multiprocessors_));
-        run_counted_kernel<<<static_cast<unsigned>(blocks), kBlock, 0, stream_>>>(kernel, count);
-        check(cudaGetLastError(), "kernel launch");
+        start(static_cast<std::uint32_t>(blocks), run_counted_kernel<Kernel>, kernel, count);
+    }
+
+    template <class Kernel, class Tail>
+    void launch_then(std::size_t n, const Kernel& kernel, std::size_t tail_n,
+                     const Tail& tail) const {
+        const auto count = static_cast<std::uint32_t>(n);
+        const std::uint32_t blocks = count > 0 ? (count + kBlock - 1) / kBlock : 1;
+        start(blocks, run_kernel_then<Kernel, Tail>, kernel, count, tail,
+              static_cast<std::uint32_t>(tail_n), blocks_done_);
     }
 
     void finish() const { check(cudaStreamSynchronize(stream_), "kernel"); }
@@ -189,26 +188,6 @@ class CudaExecutor {
         check(cudaMemcpyAsync(to.data(), from.data(), n * sizeof(T), cudaMemcpyDeviceToDevice,
                               stream_),
               "copy");
-    }
-
-    // Its scratch is sized by the first call with a given n: a recorded graph's calls allocate
-    // nothing (ParallelEnsemble takes a step before it records one).
-    template <class T>
-    void exclusive_scan(const Array<T>& in, Array<T>& out, std::size_t n) {
-        if (n == 0) return;
-        std::size_t bytes = 0;
-        const auto count = static_cast<int>(n);
-        check(cub::DeviceScan::ExclusiveSum(nullptr, bytes, in.data(), out.data(), count, stream_),
-              "scan");
-        check(cub::DeviceScan::ExclusiveSum(scratch(bytes), bytes, in.data(), out.data(), count,
-                                            stream_),
-              "scan");
-    }
-    void flagged_scan_and_clear(const std::uint32_t* flag, Array<std::uint32_t>& count,
-                                Array<std::uint32_t>& start, std::size_t n) const {
-        flagged_scan_kernel<<<1, kScanThreads, 0, stream_>>>(flag, count.data(), start.data(),
-                                                             static_cast<std::uint32_t>(n));
-        check(cudaGetLastError(), "scan");
     }
 
     // Records the launches from here to end_capture() instead of running them; false (and
@@ -277,23 +256,17 @@ class CudaExecutor {
   private:
     static constexpr std::uint32_t kBlock = 256;
 
-    // CUB's temporary storage. Never null: CUB takes a null pointer as a query for the size.
-    void* scratch(std::size_t bytes) {
-        bytes = bytes > 0 ? bytes : 1;
-        if (bytes > scratch_bytes_) {
-            finish();  // a scan queued earlier may still use the old storage
-            cudaFree(scratch_);
-            scratch_ = nullptr;
-            check(cudaMalloc(&scratch_, bytes), "cudaMalloc");
-            scratch_bytes_ = bytes;
-        }
-        return scratch_;
+    // One launch of a step's kernel on the executor's stream, its error checked.
+    template <class... Parameters, class... Arguments>
+    void start(std::uint32_t blocks, void (*kernel)(Parameters...),
+               Arguments&&... arguments) const {
+        kernel<<<blocks, kBlock, 0, stream_>>>(std::forward<Arguments>(arguments)...);
+        check(cudaGetLastError(), "kernel launch");
     }
 
     cudaStream_t stream_ = nullptr;
     int multiprocessors_ = 1;
-    void* scratch_ = nullptr;
-    std::size_t scratch_bytes_ = 0;
+    std::uint32_t* blocks_done_ = nullptr;  // run_kernel_then's count of finished blocks
 };
 
 }  // namespace rodsea::cuda

@@ -28,7 +28,7 @@ GpuAvailability probe_device() {
     // Whether the build's code runs there (sm_90 and compute_90 PTX by default): one of its
     // kernels asked for its attributes.
     cudaFuncAttributes attributes{};
-    const cudaError_t image = cudaFuncGetAttributes(&attributes, run_kernel<parallel::HookIslands>);
+    const cudaError_t image = cudaFuncGetAttributes(&attributes, run_kernel<parallel::ListIslands>);
     if (image != cudaSuccess) {
         cudaGetLastError();  // clear it: the device is still usable by others
         char advice[160];

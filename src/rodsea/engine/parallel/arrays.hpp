@@ -48,6 +48,16 @@ struct SpeciesArrays {
     }
 };
 
+// A body's fastest approach to each plate among the impulses it got from it this step (mm/s;
+// 0: none): what a polar body's noise kicks scale with (MODEL.md §3).
+struct PlateHits {
+    double base = 0.0;
+    double lid = 0.0;
+};
+
+// The end of a list of contacts.
+inline constexpr std::uint32_t kNoContact = 0xffffffffu;
+
 // Every sphere of every body, in body order (SphereView's layout).
 struct SphereArrays {
     const std::uint32_t* body = nullptr;
@@ -81,15 +91,23 @@ struct SystemGrid {
     std::uint32_t first_cell = 0;
 };
 
-// The cell list, built with the neighbour list: each sphere's cell and its rank among the
-// spheres binned there (in no particular order), the cells' counts and starts, and the spheres
-// by cell: cell c holds sphere[start[c] .. start[c + 1]).
+// The cell list, built with the neighbour list: each cell's spheres, in no particular order, in
+// `room` slots of its own, so that a sphere is binned with one atomic and nothing is sorted or
+// scanned: cell c holds sphere[c * room .. c * room + min(count[c], room)). A cell given more
+// than `room` spheres reports how many (RunStatus::needed_cell_room): the run is taken again
+// with more room. The counts are cleared as each step begins (the last build has read them).
 struct CellList {
-    std::uint32_t* cell_of = nullptr;
-    std::uint32_t* rank = nullptr;
     std::uint32_t* count = nullptr;
-    std::uint32_t* start = nullptr;  // cells + 1 entries
     std::uint32_t* sphere = nullptr;
+    std::uint32_t room = 0;
+    std::uint32_t cells = 0;
+
+    RODSEA_HD std::uint32_t* slots(std::uint32_t cell) const {
+        return sphere + std::uint64_t{cell} * room;
+    }
+    RODSEA_HD std::uint32_t held(std::uint32_t cell) const {
+        return count[cell] < room ? count[cell] : room;
+    }
 };
 
 // The Verlet list of the GPU backend: for each sphere i, the spheres j > i of other bodies of its

@@ -1,10 +1,12 @@
 #pragma once
 // The few words that elements of one launch share: a flag every writer sets to the same value,
-// the island forest that contacts hook into, and the counts and maxima a step's elements add to
+// the island forest that contacts hook into, the cursors that hand out places in a list, the
+// islands' lists of contacts, and the counts and maxima a step's elements add to
 // their system's tally. Relaxed atomics on the host (OpenMP threads), volatile accesses and
 // atomic instructions on a device. Only integers are summed and only maxima are taken, so the
 // result does not depend on the order in which the elements run: no floating-point sum is ever
-// formed by atomics (that order would change the bits from run to run).
+// formed by atomics (that order would change the bits from run to run). Where the order does
+// show (the place a cursor hands out, a list's order), the reader sorts what it reads.
 #include <atomic>
 #include <bit>
 #include <cstdint>
@@ -49,6 +51,16 @@ RODSEA_HD inline std::uint32_t atomic_add(std::uint32_t* p, std::uint32_t v) {
     return atomicAdd(reinterpret_cast<unsigned int*>(p), v);
 #else
     return std::atomic_ref<std::uint32_t>(*p).fetch_add(v, std::memory_order_relaxed);
+#endif
+}
+
+// *p = v; returns the old value (a list's head pushed onto: the order varies from run to run, so
+// a caller sorts what it reads from such a list).
+RODSEA_HD inline std::uint32_t atomic_exchange(std::uint32_t* p, std::uint32_t v) {
+#if defined(__CUDA_ARCH__)
+    return atomicExch(reinterpret_cast<unsigned int*>(p), v);
+#else
+    return std::atomic_ref<std::uint32_t>(*p).exchange(v, std::memory_order_relaxed);
 #endif
 }
 

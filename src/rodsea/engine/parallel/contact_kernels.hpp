@@ -1,15 +1,18 @@
 #pragma once
 // The contact search of the data-parallel step (kernels.hpp says what every kernel promises):
 // a Verlet list of sphere pairs, built from a cell list when the spheres may have moved half its
-// skin and kept for hundreds of steps in between, from which each step's touching pairs are
-// counted, placed by a scan and written. The list holds every touching pair whenever it is
-// built, and each sphere's partners ascending, so the contact list is the CPU's, contact for
-// contact and in the same order, whatever the list's age: body contacts by (sphere i, sphere j),
-// then plate contacts in sphere order (base before lid).
+// skin and kept for hundreds of steps in between, from which each step's touching pairs and
+// plate overlaps become contacts. Each sphere takes places for its contacts from a cursor, so
+// the list comes in no particular order, and no scan is needed; each contact's key says where it
+// stands in the CPU's list (body contacts by (sphere i, sphere j), then plate contacts in sphere
+// order, base before lid), and whatever reads contacts in order sorts them by key first. The Verlet
+// list holds every touching pair whenever it is built, so the contacts are the CPU's, contact
+// for contact, whatever the list's age.
 #include <cstdint>
 
 #include "rodsea/engine/parallel/arrays.hpp"
 #include "rodsea/engine/parallel/atomics.hpp"
+#include "rodsea/engine/parallel/island_kernels.hpp"
 #include "rodsea/engine/parallel/system_run.hpp"
 #include "rodsea/engine/physics/contact_geometry.hpp"
 #include "rodsea/math/nan_as_infinity.hpp"
@@ -31,8 +34,9 @@ RODSEA_HD void for_each_sphere_around(const Vec3& p, const CellList& cells,
         for (int dx = x_from; dx <= x_to; ++dx) {
             const std::uint32_t column = (cx + grid.nx + static_cast<std::uint32_t>(dx)) % grid.nx;
             const std::uint32_t c = system_grid.first_cell + row * grid.nx + column;
-            for (std::uint32_t m = cells.start[c]; m < cells.start[c + 1]; ++m)
-                visit(cells.sphere[m]);
+            const std::uint32_t* held = cells.slots(c);
+            for (std::uint32_t m = 0, n = cells.held(c); m < n; ++m)
+                visit(held[m]);
         }
     }
 }
@@ -45,17 +49,36 @@ RODSEA_HD inline bool spheres_touch(const Vec3& d, double r_i, double r_j) {
     return d2 < reach * reach && d2 != 0.0;
 }
 
-// Stage 4, per sphere: when the list is rebuilt, sphere i's partners (spheres j > i of other
+// Where a contact stands in the CPU's list: body contacts by (sphere i, partner j > i), then
+// plate contacts by sphere, base before lid.
+RODSEA_HD inline std::uint64_t body_contact_key(std::uint32_t i, std::uint32_t j) {
+    return (std::uint64_t{i} << 32) | j;
+}
+RODSEA_HD inline std::uint64_t plate_contact_key(std::uint32_t i, bool lid) {
+    return (std::uint64_t{1} << 63) | (std::uint64_t{i} << 1) | (lid ? 1u : 0u);
+}
+
+// Stage 3, per sphere: when the list is rebuilt, sphere i's partners (spheres j > i of other
 // bodies whose discs come within r_i + r_j + skin; the CPU's VerletPairList criterion) found in
-// the cells around it and kept ascending; then how many of its partners it touches, and how
-// many plates. The two counts share one word (body contacts high, plate contacts low) so that
-// one scan places both.
-struct ListAndCountContacts {
+// the cells around it and kept ascending; then its contacts with the partners it touches and
+// the plates it overlaps, with the pair's coefficients, at places taken from the step's cursor,
+// each keyed and each body contact joining its two bodies' islands (union–find); each contact's
+// overlap over its smaller radius joins the system's deepest. Contacts that would not fit are
+// not written (the tail, CloseContactList, says so and the run is taken again). One kernel for
+// both the counting and the writing: a kernel of its own for the few spheres with contacts
+// costs more in its launch than the registers it frees buy back (docs/performance.md).
+struct FindContacts {
     SphereArrays spheres;
+    BodyArrays bodies;
+    SpeciesArrays species;
     Systems systems;
     CellList cells;
     NeighbourList neighbours;
-    std::uint64_t* counts;
+    Contact* contacts;
+    std::uint64_t* key;
+    std::uint32_t capacity;
+    std::uint32_t* parent;  // the islands' forest (kernels.hpp: BodyScratch)
+    double gross_overlap_fraction;
     RunStatus* status;
 
     RODSEA_HD void operator()(std::uint32_t i) const {
@@ -64,11 +87,8 @@ struct ListAndCountContacts {
         const Vec3 p = spheres.position[i];
         const double r_i = spheres.radius[i];
         if (status->rebuild != 0) build(i, p, r_i, system, step.box);
-        if (systems.halted(system)) {
-            counts[i] = 0;
-            return;
-        }
-        std::uint64_t touching = 0;
+        if (systems.halted(system)) return;
+        std::uint32_t touching = 0;
         const std::uint32_t listed = neighbours.count[i];
         for (std::uint32_t k = 0; k < listed; ++k) {
             const std::uint32_t j = neighbours.slot[k * neighbours.stride + i];
@@ -77,7 +97,57 @@ struct ListAndCountContacts {
                 ++touching;
         }
         const physics::PlateOverlaps o = physics::plate_overlaps(p.z, r_i, step.plates);
-        counts[i] = (touching << 32) | ((o.base > 0.0 ? 1u : 0u) + (o.lid > 0.0 ? 1u : 0u));
+        const std::uint32_t plates = (o.base > 0.0 ? 1u : 0u) + (o.lid > 0.0 ? 1u : 0u);
+        const std::uint32_t found = touching + plates;
+        if (found == 0) return;
+        std::uint32_t at = atomic_add(&status->placed, found);
+        if (std::uint64_t{at} + found > capacity) return;
+
+        StepCounts& tally = systems.counts[system];
+        const std::uint32_t b_i = spheres.body[i];
+        double deepest = 0.0;
+        std::uint64_t gross = 0;
+        const auto depth = [&](double overlap_fraction) {
+            const double d = nan_as_infinity(overlap_fraction);
+            if (d > deepest) deepest = d;
+            if (d > gross_overlap_fraction) ++gross;
+        };
+        for (std::uint32_t k = 0; k < listed && touching > 0; ++k) {
+            const std::uint32_t j = neighbours.slot[k * neighbours.stride + i];
+            const Vec3 d = step.box.minimum_image(p - spheres.position[j]);
+            if (!spheres_touch(d, r_i, spheres.radius[j])) continue;
+            const std::uint32_t b_j = spheres.body[j];
+            Contact c;
+            physics::sphere_sphere_contact(d, b_i, p, r_i, bodies.position[b_i], b_j,
+                                           spheres.position[j], spheres.radius[j],
+                                           bodies.position[b_j], c);
+            const ContactCoefficients& coefficients =
+                species.pair_coefficients(bodies.species[b_i], bodies.species[b_j]);
+            c.friction = coefficients.friction;
+            c.restitution = coefficients.restitution;
+            const double r_j = spheres.radius[j];
+            depth(c.overlap / (r_i < r_j ? r_i : r_j));
+            key[at] = body_contact_key(i, j);
+            contacts[at++] = c;
+            join_islands(parent, b_i, b_j);
+        }
+        const ContactCoefficients& k = species.plate[bodies.species[b_i]];
+        if (o.base > 0.0) {
+            depth(o.base / r_i);
+            key[at] = plate_contact_key(i, false);
+            contacts[at++] =
+                physics::plate_contact(b_i, p, r_i, bodies.position[b_i], true, o.base, k);
+        }
+        if (o.lid > 0.0) {
+            depth(o.lid / r_i);
+            key[at] = plate_contact_key(i, true);
+            contacts[at] =
+                physics::plate_contact(b_i, p, r_i, bodies.position[b_i], false, o.lid, k);
+        }
+        if (touching > 0) atomic_add(&tally.body_contacts, std::uint64_t{touching});
+        if (plates > 0) atomic_add(&tally.plate_contacts, std::uint64_t{plates});
+        atomic_max_of(&tally.overlap_bits, deepest);
+        if (gross > 0) atomic_add(&tally.gross, gross);
     }
 
   private:
@@ -107,90 +177,17 @@ struct ListAndCountContacts {
     }
 };
 
-// Stage 4b, per sphere, after the exclusive scan of the counts: writes its contacts where the
-// scan puts them (body contacts first, every system's, then plate contacts), with the pair's
-// coefficients; each contact's overlap over its smaller radius joins the system's deepest, and
-// its plate hit speed starts at 0. The last sphere also writes how many there are, or 0 and the
-// room needed when they do not fit.
-struct WriteContacts {
-    SphereArrays spheres;
-    BodyArrays bodies;
-    SpeciesArrays species;
-    Systems systems;
-    NeighbourList neighbours;
-    const std::uint64_t* counts;
-    const std::uint64_t* offsets;
-    Contact* contacts;
-    double* hit_speed;
-    std::uint32_t capacity;
-    double gross_overlap_fraction;
+// Stage 3's tail, once every sphere has placed its contacts: how many the step has, or 0 and the
+// room needed when they did not all fit.
+struct CloseContactList {
     RunStatus* status;
+    std::uint32_t capacity;
 
-    RODSEA_HD void operator()(std::uint32_t i) const {
-        const std::uint32_t last = spheres.count - 1;
-        const std::uint64_t total = offsets[last] + counts[last];
-        const auto body_total = static_cast<std::uint32_t>(total >> 32);
-        const std::uint64_t all = body_total + (total & 0xffffffffu);
-        const bool fits = all <= capacity;
-        if (i == last) {
-            status->body_contacts = fits ? body_total : 0u;
-            status->contacts = fits ? static_cast<std::uint32_t>(all) : 0u;
-            if (!fits) atomic_max(&status->needed_contacts, all);
-        }
-        const std::uint64_t count = counts[i];
-        if (count == 0 || !fits) return;
-        const std::uint32_t system = systems.of_sphere(spheres, i);
-        const StepContext& step = systems.context[system];
-        StepCounts& tally = systems.counts[system];
-        const Vec3 p = spheres.position[i];
-        const double r_i = spheres.radius[i];
-        const std::uint32_t b_i = spheres.body[i];
-        double deepest = 0.0;
-        std::uint64_t gross = 0;
-        const auto depth = [&](double overlap_fraction) {
-            const double d = nan_as_infinity(overlap_fraction);
-            if (d > deepest) deepest = d;
-            if (d > gross_overlap_fraction) ++gross;
-        };
-        auto at = static_cast<std::uint32_t>(offsets[i] >> 32);
-        const std::uint32_t listed = neighbours.count[i];
-        for (std::uint32_t k = 0; k < listed; ++k) {
-            const std::uint32_t j = neighbours.slot[k * neighbours.stride + i];
-            const Vec3 d = step.box.minimum_image(p - spheres.position[j]);
-            if (!spheres_touch(d, r_i, spheres.radius[j])) continue;
-            const std::uint32_t b_j = spheres.body[j];
-            Contact c;
-            physics::sphere_sphere_contact(d, b_i, p, r_i, bodies.position[b_i], b_j,
-                                           spheres.position[j], spheres.radius[j],
-                                           bodies.position[b_j], c);
-            const ContactCoefficients& coefficients =
-                species.pair_coefficients(bodies.species[b_i], bodies.species[b_j]);
-            c.friction = coefficients.friction;
-            c.restitution = coefficients.restitution;
-            const double r_j = spheres.radius[j];
-            depth(c.overlap / (r_i < r_j ? r_i : r_j));
-            hit_speed[at] = 0.0;
-            contacts[at++] = c;
-        }
-        at = body_total + static_cast<std::uint32_t>(offsets[i] & 0xffffffffu);
-        const physics::PlateOverlaps o = physics::plate_overlaps(p.z, r_i, step.plates);
-        const ContactCoefficients& k = species.plate[bodies.species[b_i]];
-        if (o.base > 0.0) {
-            depth(o.base / r_i);
-            hit_speed[at] = 0.0;
-            contacts[at++] =
-                physics::plate_contact(b_i, p, r_i, bodies.position[b_i], true, o.base, k);
-        }
-        if (o.lid > 0.0) {
-            depth(o.lid / r_i);
-            hit_speed[at] = 0.0;
-            contacts[at] =
-                physics::plate_contact(b_i, p, r_i, bodies.position[b_i], false, o.lid, k);
-        }
-        atomic_add(&tally.body_contacts, count >> 32);
-        atomic_add(&tally.plate_contacts, count & 0xffffffffu);
-        atomic_max_of(&tally.overlap_bits, deepest);
-        if (gross > 0) atomic_add(&tally.gross, gross);
+    RODSEA_HD void operator()(std::uint32_t) const {
+        const std::uint32_t placed = status->placed;
+        const bool fits = placed <= capacity;
+        status->contacts = fits ? placed : 0u;
+        if (!fits) atomic_max(&status->needed_contacts, placed);
     }
 };
 

@@ -1,12 +1,11 @@
 #pragma once
 // Runs the data-parallel step's kernels on the host: each launch a loop over the elements (an
-// OpenMP loop on several threads), scans from the standard library. It is the GPU backend's
+// OpenMP loop on several threads), a launch's tail after it. It is the GPU backend's
 // algorithm without a device: what tests run everywhere, and what a device's results are
 // checked against. The CUDA executor (engine/cuda/) has the same interface.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <numeric>
 #include <vector>
 
 namespace rodsea::parallel {
@@ -50,6 +49,16 @@ class HostExecutor {
                         const Kernel& kernel) const {
         launch(*count, kernel);
     }
+    // kernel(i) for i < n, then, once every element is done, tail(j) for j < tail_n: the work
+    // of a few elements that needs all of kernel's results (a step's decisions, a system's
+    // counts), without a launch of its own.
+    template <class Kernel, class Tail>
+    void launch_then(std::size_t n, const Kernel& kernel, std::size_t tail_n,
+                     const Tail& tail) const {
+        launch(n, kernel);
+        for (std::size_t j = 0; j < tail_n; ++j)
+            tail(static_cast<std::uint32_t>(j));
+    }
 
     // Waits for the launches so far: they are done when launch() returns.
     void finish() const {}
@@ -61,26 +70,6 @@ class HostExecutor {
     template <class T>
     void copy(Array<T>& to, const Array<T>& from, std::size_t n) const {
         std::copy_n(from.data_.begin(), n, to.data_.begin());
-    }
-
-    // out[i] = in[0] + ... + in[i − 1], for i < n.
-    template <class T>
-    void exclusive_scan(const Array<T>& in, Array<T>& out, std::size_t n) const {
-        std::exclusive_scan(in.data_.begin(), in.data_.begin() + static_cast<std::ptrdiff_t>(n),
-                            out.data_.begin(), T{0});
-    }
-    // When *flag is not 0: start[i] = count[0] + ... + count[i − 1] for i <= n, and the counts
-    // cleared for the next time.
-    void flagged_scan_and_clear(const std::uint32_t* flag, Array<std::uint32_t>& count,
-                                Array<std::uint32_t>& start, std::size_t n) const {
-        if (*flag == 0) return;
-        std::uint32_t sum = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            start.data_[i] = sum;
-            sum += count.data_[i];
-            count.data_[i] = 0;
-        }
-        start.data_[n] = sum;
     }
 
     bool begin_capture() const {

@@ -30,26 +30,32 @@
 
 namespace rodsea::parallel {
 
-// What the resolution needs of each body, written by free flight: the island forest and sweep
-// marks cleared, the inverse mass and world-frame inverse inertia for the orientation the
-// contacts see.
+// What the resolution needs of each body, written by free flight: the island forest, lists and
+// sweep marks cleared, the inverse mass and world-frame inverse inertia for the orientation the
+// contacts see, no plate hit yet.
 struct BodyScratch {
     std::uint32_t* parent;        // union–find forest of the islands
     std::uint32_t* island_count;  // contacts of the island whose root this body is
+    std::uint32_t* island_head;   // the first of them in the island's list (kNoContact: none)
     int* last_changed;            // sweep_island's marks
     double* inv_mass;
     Mat3* inv_inertia;
+    PlateHits* plate_hit;
 };
 
 // Stage 1, per body: free flight; its squared in-plane speeds join the system's maxima (the
-// step's max_planar_speed, and the neighbour list's bound on how far spheres moved).
+// step's max_planar_speed, and the neighbour list's bound on how far spheres moved). Also clears
+// the cell list's counts, a few cells per body, for this step's build if it has one.
 struct FlyBodies {
     BodyArrays bodies;
     SpeciesArrays species;
     Systems systems;
     BodyScratch scratch;
+    CellList cells;
 
     RODSEA_HD void operator()(std::uint32_t i) const {
+        for (std::uint32_t c = i; c < cells.cells; c += bodies.count)
+            cells.count[c] = 0;
         const std::uint32_t system = systems.of_body[i];
         if (systems.halted(system)) return;
         const StepContext& step = systems.context[system];
@@ -64,18 +70,21 @@ struct FlyBodies {
                             bodies.spin[i], rotor, step.dt, step.gravity, step.drop(), step.box);
         scratch.parent[i] = i;
         scratch.island_count[i] = 0;
+        scratch.island_head[i] = kNoContact;
         scratch.last_changed[i] = 0;
         scratch.inv_mass[i] = species.inverse_mass[k];
         scratch.inv_inertia[i] =
             physics::world_inverse_inertia(bodies.orientation[i], species.inverse_inertia[k]);
+        scratch.plate_hit[i] = PlateHits{};
     }
 };
 
-// Stage 2, one element: whether this step builds the neighbour list anew. Each system's spheres
-// have moved at most `travel` in the plane since the last build (the bound of each step's
-// fastest body, summed, as the CPU's VerletPairList sums it); past half the skin a pair could
-// have come within reach unlisted. The list is shared by every system, so any one rebuilds it.
-// Also moves the run on to its next step's contexts (the step's are read by now).
+// Stage 1's tail, once every body has flown: whether this step builds the neighbour list anew.
+// Each system's spheres have moved at most `travel` in the plane since the last build (the bound
+// of each step's fastest body, summed, as the CPU's VerletPairList sums it); past half the skin a
+// pair could have come within reach unlisted. The list is shared by every system, so any one
+// rebuilds it. Also opens the step's lists of contacts and moves the run on to its next step's
+// contexts (the step's are read by now).
 struct DecideRebuild {
     Systems systems;
     double* travel;  // per system, mm
@@ -99,18 +108,20 @@ struct DecideRebuild {
                 travel[m] = 0.0;
             ++status->builds;
         }
+        status->placed = 0;
+        status->island_placed = 0;
         ++status->step;
     }
 };
 
-// Stage 3, per sphere: its centre in the world; when the list is rebuilt, its cell, counted.
+// Stage 2, per sphere: its centre in the world; when the list is rebuilt, into its cell.
 struct PlaceSpheres {
     BodyArrays bodies;
     SpeciesArrays species;
     SphereArrays spheres;
     Systems systems;
     CellList cells;
-    const RunStatus* status;
+    RunStatus* status;
 
     RODSEA_HD void operator()(std::uint32_t s) const {
         const std::uint32_t b = spheres.body[s];
@@ -128,39 +139,26 @@ struct PlaceSpheres {
         const Vec3& p = spheres.position[s];
         const std::uint32_t cell =
             g.first_cell + g.grid.row_of(p.y, box.ly) * g.grid.nx + g.grid.column_of(p.x, box.lx);
-        cells.cell_of[s] = cell;
-        cells.rank[s] = atomic_add(cells.count + cell, 1u);
+        const std::uint32_t rank = atomic_add(cells.count + cell, 1u);
+        if (rank < cells.room)
+            cells.slots(cell)[rank] = s;
+        else
+            atomic_max(&status->needed_cell_room, std::uint64_t{rank} + 1);
     }
 };
 
-// Stage 3b, per sphere, when the list is rebuilt: into its cell's place (after the scan of the
-// cells' counts), at its rank there.
-struct ScatterSpheres {
-    CellList cells;
-    const RunStatus* status;
-
-    RODSEA_HD void operator()(std::uint32_t s) const {
-        if (status->rebuild == 0) return;
-        cells.sphere[cells.start[cells.cell_of[s]] + cells.rank[s]] = s;
-    }
-};
-
-// Stage 6, per body: out of the plates by its deepest overlap (plate_projection.hpp says why),
+// Stage 5, per body: out of the plates by its deepest overlap (plate_projection.hpp says why),
 // and a polar body's spin kick for each plate it hit this step (MODEL.md §3), the lid's before
-// the base's as on the CPU, with the fastest approach that got an impulse. The overlaps are those
-// the contacts were found with: the spheres have not moved since. A body's plate contacts are
-// together in the list (its spheres' plate contacts). The noise hashes the body's index in its
-// own system. No kick at ε = 0 (the CPU's rule: a kick of ±0 would still change the sign of a
-// zero spin).
+// the base's as on the CPU, with the fastest approach that got an impulse (the sweeps kept it).
+// The overlaps are those the contacts were found with: the spheres have not moved since. The
+// noise hashes the body's index in its own system. No kick at ε = 0 (the CPU's rule: a kick of
+// ±0 would still change the sign of a zero spin).
 struct ProjectAndKick {
     BodyArrays bodies;
     SpeciesArrays species;
     SphereArrays spheres;
     Systems systems;
-    const Contact* contacts;
-    const std::uint64_t* contact_offset;  // per sphere: its body contacts (high), plate (low)
-    const double* hit_speed;
-    const RunStatus* status;
+    const PlateHits* plate_hit;
 
     RODSEA_HD void operator()(std::uint32_t b) const {
         const std::uint32_t system = systems.of_body[b];
@@ -181,27 +179,16 @@ struct ProjectAndKick {
                 spheres.position[s].z += dz;
         }
         if (step.noise_epsilon == 0.0 || !species.polar[bodies.species[b]]) return;
-        if (status->contacts == 0) return;  // none listed (or they did not fit: taken again)
-        const std::uint32_t begin =
-            status->body_contacts + static_cast<std::uint32_t>(contact_offset[first]);
-        const std::uint32_t end =
-            last < spheres.count
-                ? status->body_contacts + static_cast<std::uint32_t>(contact_offset[last])
-                : status->contacts;
-        double lid_hit = 0.0, base_hit = 0.0;
-        for (std::uint32_t k = begin; k < end; ++k) {
-            if (contacts[k].b == kLidPlate && hit_speed[k] > lid_hit) lid_hit = hit_speed[k];
-            if (contacts[k].b == kBasePlate && hit_speed[k] > base_hit) base_hit = hit_speed[k];
-        }
+        const PlateHits hit = plate_hit[b];
         const std::uint32_t own = b - systems.first_body[system];
         std::uint64_t kicks = 0;
-        if (lid_hit > 0.0) {
-            bodies.spin[b].z += step.noise_epsilon * lid_hit *
+        if (hit.lid > 0.0) {
+            bodies.spin[b].z += step.noise_epsilon * hit.lid *
                                 physics::noise_sign(step.seed, step.step, own, kLidPlate);
             ++kicks;
         }
-        if (base_hit > 0.0) {
-            bodies.spin[b].z += step.noise_epsilon * base_hit *
+        if (hit.base > 0.0) {
+            bodies.spin[b].z += step.noise_epsilon * hit.base *
                                 physics::noise_sign(step.seed, step.step, own, kBasePlate);
             ++kicks;
         }
@@ -209,8 +196,9 @@ struct ProjectAndKick {
     }
 };
 
-// Stage 7, per system: the step's counts become its statistics (a system that crossed its
-// bounds stops), and the next step of the run reads its context.
+// Stage 5's tail, per system, once every body is out of the plates and kicked: the step's counts
+// become its statistics (a system that crossed its bounds stops), and the next step of the run
+// reads its context.
 struct EndStep {
     SystemRun* run;
     StepCounts* counts;
@@ -246,6 +234,7 @@ struct BeginRun {
         status->steps = steps;
         status->needed_slots = 0;
         status->needed_contacts = 0;
+        status->needed_cell_room = 0;
         if (force_rebuild) status->force_rebuild = 1;
     }
 };

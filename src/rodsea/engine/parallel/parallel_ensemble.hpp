@@ -9,30 +9,35 @@
 // Steps come in runs: the host plans a run's contexts (the plates' motion, the step numbers),
 // hands them over with the run, and reads back once at its end what each system's steps came to
 // (system_run.hpp); in between a device takes step after step without waiting for the host. A
-// step, in launches:
-//   1 free flight per body; whether to rebuild the neighbour list (one thread);
-//   2 sphere centres per sphere, and when rebuilding the cell list (bin, scan, scatter);
-//   3 contacts: per sphere, its Verlet list rebuilt when due, its touching partners and plates
-//     counted; an exclusive scan places them; per sphere, written;
-//   4 islands: hooked per body contact (union–find), keyed and counted per contact, the counts
-//     scanned, gathered, and each island swept by one thread in list order;
-//   5 per body: out of the plates, and polar bodies' noise kicks;
-//   6 per system: the step's counts become its statistics; a system past its blow-up bounds
-//     stops there for the rest of the run.
+// step, in six launches (a launch's tail is the work of a few elements that needs all of its
+// results, done by the launch's last block: HostExecutor::launch_then):
+//   1 free flight per body (and the cell counts cleared); its tail decides whether to rebuild
+//     the neighbour list;
+//   2 sphere centres per sphere, each binned into its cell's slots when rebuilding;
+//   3 contacts per sphere: its Verlet list rebuilt when due, its contacts with the partners it
+//     touches and the plates written at places from a cursor, islands joined (union–find); the
+//     tail counts them;
+//   4 islands: each contact onto its island's list; each island copied out, put in the CPU's
+//     order and swept by one thread;
+//   5 per body: out of the plates, and polar bodies' noise kicks; the tail, per system: the
+//     step's counts become its statistics, and a system past its blow-up bounds stops there for
+//     the rest of the run.
 // Where a device can, the launches of kGraphSteps steps are recorded once as a CUDA graph and
-// replayed. Lists that outgrow their room (a sphere's partners, a step's contacts) say how much
-// they needed: the state is put back as it was at the run's start and the run taken again with
-// more room, so the room never shows in a trajectory.
+// replayed. Lists that outgrow their room (a sphere's partners, a cell's spheres, a step's
+// contacts) say how much they needed: the state is put back as it was at the run's start and
+// the run taken again with more room, so the room never shows in a trajectory.
 //
-// The contact list is the CPU's, contact for contact, and each island gets the CPU's impulses in
-// the CPU's order: run by the host executor the step is the CPU backend's to the last bit. On a
-// device only the rounding of the device's arithmetic can differ (nvcc may fuse a multiply and
-// an add where the host rounds twice; the build asks it not to, -fmad=false). Nothing a system
-// computes depends on the systems beside it, so each steps to the same bits as it does alone.
+// The contact list is the CPU's, contact for contact (in the order of its keys), and each island
+// gets the CPU's impulses in the CPU's order: run by the host executor the step is the CPU
+// backend's to the last bit. On a device only the rounding of the device's arithmetic can differ
+// (nvcc may fuse a multiply and an add where the host rounds twice; the build asks it not to,
+// -fmad=false). Nothing a system computes depends on the systems beside it, so each steps to the
+// same bits as it does alone.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -91,8 +96,9 @@ inline constexpr double kNeighbourSkin = 0.05;
 // The room the lists start with; they grow to what a run needs (a sphere's partners: a handful
 // in a monolayer; a step's contacts: a few per cent of the spheres).
 struct Room {
-    std::uint32_t slots = 16;    // partners per sphere
-    std::uint64_t contacts = 0;  // per step; 0: an eighth of the spheres, and 256
+    std::uint32_t slots = 16;      // partners per sphere
+    std::uint32_t cell_room = 16;  // spheres per cell (cells are two radii and the skin wide)
+    std::uint64_t contacts = 0;    // per step; 0: an eighth of the spheres, and 256
 };
 
 // `gross_overlap_fraction`: the depth over the smaller radius beyond which a contact counts as
@@ -115,18 +121,16 @@ class ParallelEnsemble final : public EnsembleStepper {
                 throw std::invalid_argument("rodsea: a system of an ensemble without bodies");
         concatenate();
         const std::size_t n = body_count(), spheres = sphere_count(), systems = members_.size();
-        for (auto* a : {&parent_, &island_count_, &island_start_})
+        for (auto* a : {&parent_, &island_count_, &island_head_})
             a->resize(n);
         last_changed_.resize(n);
+        plate_hit_.resize(n);
         inv_mass_.resize(n);
         inv_inertia_.resize(n);
         for (auto* a : {&snapshot_position_, &snapshot_velocity_, &snapshot_spin_})
             a->resize(n);
         snapshot_orientation_.resize(n);
-        for (auto* a : {&cell_of_, &sphere_rank_, &by_cell_, &neighbour_count_})
-            a->resize(spheres);
-        contact_counts_.resize(spheres);
-        contact_offsets_.resize(spheres);
+        neighbour_count_.resize(spheres);
         exec_.fill(neighbour_count_, spheres, 0u);
         current_.resize(systems);
         runs_.resize(systems);
@@ -142,11 +146,11 @@ class ParallelEnsemble final : public EnsembleStepper {
         exec_.upload(status_, std::vector<RunStatus>{first});
         planned_.resize(kPlannedSteps * systems);
         grow_neighbours(room.slots);
+        cell_room_ = room.cell_room;
         grow_contacts(room.contacts > 0 ? room.contacts : spheres / 8 + 256);
         host_grids_.resize(systems);
         bodies_stale_.assign(systems, 0);
         spheres_stale_.assign(systems, 0);
-        contacts_stale_.assign(systems, 0);
         host_contacts_.resize(systems);
         const char* graphs = std::getenv("RODSEA_GPU_GRAPHS");
         graphs_wanted_ = graphs == nullptr || std::string(graphs) != "0";
@@ -178,33 +182,31 @@ class ParallelEnsemble final : public EnsembleStepper {
         return {s.body, s.radius, s.position, s.first_of};
     }
     const std::vector<Contact>& contacts(std::size_t m) const override {
-        std::vector<Contact>& out = host_contacts_[m];
-        if (contacts_stale_[m]) {
-            out.clear();
-            if (host_status_.contacts > 0) {
-                // System m's body contacts, then its plate contacts (after every system's body
-                // contacts), where the scan of its spheres' counts put them.
-                const auto at = [this](std::size_t system) -> std::uint64_t {
-                    if (system == members_.size())
-                        return (std::uint64_t{host_status_.body_contacts} << 32) |
-                               (host_status_.contacts - host_status_.body_contacts);
-                    return exec_.read(contact_offsets_, first_sphere_[system]);
-                };
-                const std::uint64_t from = at(m), to = at(m + 1);
-                std::vector<Contact> part;
-                exec_.download(contacts_, from >> 32, (to >> 32) - (from >> 32), out);
-                exec_.download(contacts_, host_status_.body_contacts + (from & 0xffffffffu),
-                               (to & 0xffffffffu) - (from & 0xffffffffu), part);
-                out.insert(out.end(), part.begin(), part.end());
-                const auto own = static_cast<std::uint32_t>(first_body_[m]);
-                for (Contact& c : out) {
-                    c.a -= own;
-                    if (!c.with_plate()) c.b -= own;
-                }
+        if (contacts_stale_) {
+            // Every system's contacts at once (they come mixed), each system's in key order.
+            for (std::vector<Contact>& c : host_contacts_)
+                c.clear();
+            std::vector<Contact> all;
+            std::vector<std::uint64_t> keys;
+            exec_.download(contacts_, host_status_.contacts, all);
+            exec_.download(contact_key_, host_status_.contacts, keys);
+            std::vector<std::uint32_t> order(all.size());
+            std::iota(order.begin(), order.end(), 0u);
+            std::sort(order.begin(), order.end(),
+                      [&keys](std::uint32_t x, std::uint32_t y) { return keys[x] < keys[y]; });
+            for (const std::uint32_t k : order) {
+                Contact c = all[k];
+                const auto system = static_cast<std::size_t>(
+                    std::upper_bound(first_body_.begin(), first_body_.end(), c.a) -
+                    first_body_.begin() - 1);
+                const std::uint32_t own = first_body_[system];
+                c.a -= own;
+                if (!c.with_plate()) c.b -= own;
+                host_contacts_[system].push_back(c);
             }
-            contacts_stale_[m] = 0;
+            contacts_stale_ = false;
         }
-        return out;
+        return host_contacts_[m];
     }
 
     void run(const std::vector<StepContext>& contexts, std::uint64_t steps,
@@ -240,7 +242,8 @@ class ParallelEnsemble final : public EnsembleStepper {
                 exec_.download(runs_, systems, runs);
                 host_status_ = exec_.read(status_, 0);
                 if (host_status_.needed_slots <= slot_capacity_ &&
-                    host_status_.needed_contacts <= contact_capacity_)
+                    host_status_.needed_contacts <= contact_capacity_ &&
+                    host_status_.needed_cell_room <= cell_room_)
                     break;
                 // Something did not fit: the run again from its start, with room for it.
                 if (host_status_.needed_slots > slot_capacity_)
@@ -248,6 +251,9 @@ class ParallelEnsemble final : public EnsembleStepper {
                 if (host_status_.needed_contacts > contact_capacity_)
                     grow_contacts(host_status_.needed_contacts + host_status_.needed_contacts / 4 +
                                   256);
+                if (host_status_.needed_cell_room > cell_room_)
+                    grow_cells(static_cast<std::uint32_t>(host_status_.needed_cell_room +
+                                                          host_status_.needed_cell_room / 4 + 2));
                 exec_.copy(position_, snapshot_position_, body_count());
                 exec_.copy(orientation_, snapshot_orientation_, body_count());
                 exec_.copy(velocity_, snapshot_velocity_, body_count());
@@ -265,7 +271,7 @@ class ParallelEnsemble final : public EnsembleStepper {
         }
         std::fill(bodies_stale_.begin(), bodies_stale_.end(), 1);
         std::fill(spheres_stale_.begin(), spheres_stale_.end(), 1);
-        std::fill(contacts_stale_.begin(), contacts_stale_.end(), 1);
+        contacts_stale_ = true;
     }
 
   private:
@@ -287,10 +293,15 @@ class ParallelEnsemble final : public EnsembleStepper {
     void grow_contacts(std::uint64_t capacity) {
         contact_capacity_ =
             static_cast<std::uint32_t>(std::min<std::uint64_t>(capacity, 0x7fffffffULL));
-        for (auto* a : {&island_key_, &island_rank_, &island_order_})
+        for (auto* a : {&next_in_island_, &island_order_})
             a->resize(contact_capacity_);
         contacts_.resize(contact_capacity_);
-        hit_speed_.resize(contact_capacity_);
+        contact_key_.resize(contact_capacity_);
+        ++layout_;
+    }
+    void grow_cells(std::uint32_t room) {
+        cell_room_ = room;
+        cell_sphere_.resize(std::size_t{cell_room_} * cells_);
         ++layout_;
     }
 
@@ -362,49 +373,41 @@ class ParallelEnsemble final : public EnsembleStepper {
             exec_.finish();
         };
         stage(profile.free_flight, [&] {
-            exec_.launch(n, FlyBodies{bodies,
-                                      species,
-                                      sys,
-                                      {parent_.data(), island_count_.data(), last_changed_.data(),
-                                       inv_mass_.data(), inv_inertia_.data()}});
-            exec_.launch(1, DecideRebuild{sys, travel_.data(), status, 0.5 * kNeighbourSkin});
+            exec_.launch_then(n,
+                              FlyBodies{bodies,
+                                        species,
+                                        sys,
+                                        {parent_.data(), island_count_.data(), island_head_.data(),
+                                         last_changed_.data(), inv_mass_.data(),
+                                         inv_inertia_.data(), plate_hit_.data()},
+                                        cells},
+                              1, DecideRebuild{sys, travel_.data(), status, 0.5 * kNeighbourSkin});
         });
         stage(profile.sphere_update, [&] {
             exec_.launch(s, PlaceSpheres{bodies, species, sphere_arrays(), sys, cells, status});
-            exec_.flagged_scan_and_clear(&status->rebuild, cell_count_, cell_start_, cells_);
-            exec_.launch(s, ScatterSpheres{cells, status});
         });
         stage(profile.contact_search, [&] {
-            exec_.launch(s, ListAndCountContacts{sphere_arrays(), sys, cells, neighbours,
-                                                 contact_counts_.data(), status});
-            exec_.exclusive_scan(contact_counts_, contact_offsets_, s);
-            exec_.launch(s, WriteContacts{sphere_arrays(), bodies, species, sys, neighbours,
-                                          contact_counts_.data(), contact_offsets_.data(),
-                                          contacts_.data(), hit_speed_.data(), contact_capacity_,
-                                          gross_overlap_fraction_, status});
+            exec_.launch_then(s,
+                              FindContacts{sphere_arrays(), bodies, species, sys, cells, neighbours,
+                                           contacts_.data(), contact_key_.data(), contact_capacity_,
+                                           parent_.data(), gross_overlap_fraction_, status},
+                              1, CloseContactList{status, contact_capacity_});
         });
         stage(profile.resolution, [&] {
-            exec_.launch_counted(contact_capacity_, &status->body_contacts,
-                                 HookIslands{contacts_.data(), parent_.data()});
-            exec_.launch_counted(
-                contact_capacity_, &status->contacts,
-                KeyContactsByIsland{contacts_.data(), parent_.data(), island_count_.data(),
-                                    island_key_.data(), island_rank_.data()});
-            exec_.exclusive_scan(island_count_, island_start_, n);
             exec_.launch_counted(contact_capacity_, &status->contacts,
-                                 GatherIslands{island_key_.data(), island_rank_.data(),
-                                               island_start_.data(), island_order_.data()});
+                                 ListIslands{contacts_.data(), parent_.data(), island_count_.data(),
+                                             island_head_.data(), next_in_island_.data()});
             exec_.launch(
-                n, SweepIslands{contacts_.data(), island_count_.data(), island_start_.data(),
-                                island_order_.data(),
+                n, SweepIslands{contacts_.data(), contact_key_.data(), island_count_.data(),
+                                island_head_.data(), next_in_island_.data(), island_order_.data(),
                                 IslandBodies{bodies, inv_mass_.data(), inv_inertia_.data()}, sys,
-                                last_changed_.data(), hit_speed_.data()});
-            exec_.launch(n, ProjectAndKick{bodies, species, sphere_arrays(), sys, contacts_.data(),
-                                           contact_offsets_.data(), hit_speed_.data(), status});
-        });
-        stage(profile.noise, [&] {
-            exec_.launch(systems, EndStep{runs_.data(), step_counts_.data(), halt_.data(),
-                                          current_.data(), planned_.data(), status, systems});
+                                last_changed_.data(), plate_hit_.data(), status});
+            // The noise and the step's end (the tail) are part of this launch.
+            exec_.launch_then(
+                n, ProjectAndKick{bodies, species, sphere_arrays(), sys, plate_hit_.data()},
+                systems,
+                EndStep{runs_.data(), step_counts_.data(), halt_.data(), current_.data(),
+                        planned_.data(), status, systems});
         });
     }
 
@@ -524,10 +527,7 @@ class ParallelEnsemble final : public EnsembleStepper {
                 step_counts_.data(),
                 static_cast<std::uint32_t>(size())};
     }
-    CellList cell_list() {
-        return {cell_of_.data(), sphere_rank_.data(), cell_count_.data(), cell_start_.data(),
-                by_cell_.data()};
-    }
+    CellList cell_list() { return {cell_count_.data(), cell_sphere_.data(), cell_room_, cells_}; }
 
     // Each system's cells no narrower than the neighbour list's widest reach and no more than a
     // few per sphere (a huge box of few spheres would otherwise sweep an empty grid at each
@@ -564,8 +564,8 @@ class ParallelEnsemble final : public EnsembleStepper {
         cells_ = first_cell;
         exec_.upload(grids_, host_grids_);
         cell_count_.resize(cells_);
-        cell_start_.resize(cells_ + 1);
         exec_.fill(cell_count_, cells_, 0u);
+        grow_cells(cell_room_);
         exec_.upload_into(status_, std::vector<RunStatus>{with_forced_rebuild()});
         ++layout_;
     }
@@ -620,20 +620,21 @@ class ParallelEnsemble final : public EnsembleStepper {
 
     // The cell list and the neighbour list.
     std::uint32_t cells_ = 0;
-    Array<std::uint32_t> cell_of_, sphere_rank_, cell_count_, cell_start_, by_cell_;
+    Array<std::uint32_t> cell_count_, cell_sphere_;
+    std::uint32_t cell_room_ = 0;
     Array<std::uint32_t> neighbour_slots_, neighbour_count_;
     std::uint32_t slot_capacity_ = 0;
 
     // The contacts and the islands.
-    Array<std::uint64_t> contact_counts_, contact_offsets_;
     Array<Contact> contacts_;
-    Array<double> hit_speed_;
+    Array<std::uint64_t> contact_key_;
     std::uint32_t contact_capacity_ = 0;
-    Array<std::uint32_t> island_key_, island_rank_, island_order_;
-    Array<std::uint32_t> parent_, island_count_, island_start_;
+    Array<std::uint32_t> next_in_island_, island_order_;
+    Array<std::uint32_t> parent_, island_count_, island_head_;
     Array<int> last_changed_;
     Array<double> inv_mass_;
     Array<Mat3> inv_inertia_;
+    Array<PlateHits> plate_hit_;
 
     // Timing and graphs.
     bool time_stages_ = false;
@@ -646,7 +647,8 @@ class ParallelEnsemble final : public EnsembleStepper {
 
     // The host's copies are refreshed when read after a run.
     mutable std::vector<std::vector<Contact>> host_contacts_;
-    mutable std::vector<char> bodies_stale_, spheres_stale_, contacts_stale_;
+    mutable std::vector<char> bodies_stale_, spheres_stale_;
+    mutable bool contacts_stale_ = false;
 };
 
 }  // namespace rodsea::parallel

@@ -77,14 +77,18 @@ struct RunStatus {
     std::uint32_t rebuild = 0;  // this step builds the neighbour list anew
     std::uint32_t force_rebuild = 0;  // the next step must (a new list, or a state put back)
     std::uint64_t builds = 0;         // of the neighbour list, since the stepper was made
-    // The step's contacts as listed: every system's body contacts, then every system's plate
-    // contacts. Both 0 when they did not fit (the run is then taken again, with more room).
-    std::uint32_t body_contacts = 0;
+    // The step's contacts: places handed out as spheres find theirs (every system's, in no
+    // particular order: contact_key orders them), and once every sphere has, how many there
+    // are (0 when they did not fit: the run is then taken again, with more room).
+    std::uint32_t placed = 0;
     std::uint32_t contacts = 0;
+    std::uint32_t island_placed = 0;  // places handed out to the islands' sweeps
     // Room asked for beyond what there was, in this run (0: it all fitted): the most partners a
-    // sphere had in the neighbour list, the most contacts a step had.
+    // sphere had in the neighbour list, the most contacts a step had, the most spheres a cell
+    // held.
     std::uint64_t needed_slots = 0;
     std::uint64_t needed_contacts = 0;
+    std::uint64_t needed_cell_room = 0;
 };
 
 }  // namespace rodsea::parallel
