@@ -17,6 +17,7 @@ struct Body {
     double x, y, theta;
     std::uint32_t species = 0;
     double vx = 0.0, vy = 0.0;
+    double spin_z = 0.0;
 };
 
 inline AnalysisFrame make_frame(double side, const std::vector<Body>& bodies, std::size_t index = 0,
@@ -30,6 +31,7 @@ inline AnalysisFrame make_frame(double side, const std::vector<Body>& bodies, st
         f.position.push_back({PeriodicBox2D::wrap(b.x, side), PeriodicBox2D::wrap(b.y, side), 0.0});
         f.theta.push_back(std::remainder(b.theta, 2.0 * std::numbers::pi));
         f.velocity.push_back({b.vx, b.vy, 0.0});
+        f.spin_z.push_back(b.spin_z);
         f.species.push_back(b.species);
     }
     return f;

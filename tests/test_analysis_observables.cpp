@@ -94,6 +94,38 @@ TEST(Drift, MeanVelocitiesAndTheMediumAlongThePolarHeading) {
     EXPECT_NEAR(t.rows[0][column(t, "vy_medium")], -1.0, 1e-12);
 }
 
+TEST(Drift, AgitationIsTheSpreadAboutTheDriftAndTheSpinsRms) {
+    // Every body moves at its species' drift plus a jitter whose partner body carries the
+    // opposite one, so the species' mean stays the drift and the rms about it is the jitter's
+    // size, whatever the jitter's directions: 3 mm/s for the polar rods, 4 for the medium. Spins
+    // are ±5 and ±0.5 rad/s. Exact to rounding of sums of 30 and 70 terms.
+    std::vector<Body> bodies;
+    SplitMix64 rng(11);
+    const auto add_pairs = [&](int pairs, std::uint32_t species, double vx, double vy,
+                               double jitter, double spin) {
+        for (int i = 0; i < pairs; ++i) {
+            const double a = rng.uniform(-kPi, kPi);
+            for (const double sign : {1.0, -1.0})
+                bodies.push_back({rng.uniform(0, 40), rng.uniform(0, 40), 0.3, species,
+                                  vx + sign * jitter * std::cos(a),
+                                  vy + sign * jitter * std::sin(a), sign * spin});
+        }
+    };
+    add_pairs(15, 0, 1.0, 2.0, 3.0, 5.0);
+    add_pairs(35, 1, 3.0, -1.0, 4.0, 0.5);
+    const auto setup = make_setup(40.0, bodies, 1);
+    DriftObservable o(setup);
+    const auto r = run_on(o, {make_frame(40.0, bodies, 0)}, setup);
+    EXPECT_NEAR(scalar(r, "vx_polar").estimate.mean, 1.0, 1e-12);
+    EXPECT_NEAR(scalar(r, "v_rms_polar").estimate.mean, 3.0, 1e-12);
+    EXPECT_NEAR(scalar(r, "spin_rms_polar").estimate.mean, 5.0, 1e-12);
+    EXPECT_NEAR(scalar(r, "v_rms_medium").estimate.mean, 4.0, 1e-12);
+    EXPECT_NEAR(scalar(r, "spin_rms_medium").estimate.mean, 0.5, 1e-12);
+    EXPECT_EQ(scalar(r, "spin_rms_medium").unit, "rad/s");
+    const TableResult& t = table(r, "drift");
+    EXPECT_NEAR(t.rows[0][column(t, "v_rms_medium")], 4.0, 1e-12);
+}
+
 TEST(PairCorrelation, UniformRandomPointsHaveGOfROne) {
     SplitMix64 rng(4);
     const double side = 80.0;

@@ -14,6 +14,7 @@ AnalysisFrame make_analysis_frame(const BodyState& bodies, const PeriodicBox2D& 
     const std::size_t n = bodies.size();
     f.position.resize(n);
     f.theta.resize(n);
+    f.spin_z.resize(n);
     f.species = bodies.species;
     f.velocity = bodies.velocity;
     for (std::size_t i = 0; i < n; ++i) {
@@ -21,6 +22,7 @@ AnalysisFrame make_analysis_frame(const BodyState& bodies, const PeriodicBox2D& 
         f.position[i] = {PeriodicBox2D::wrap(bodies.position[i].x, box.lx),
                          PeriodicBox2D::wrap(bodies.position[i].y, box.ly), bodies.position[i].z};
         f.theta[i] = in_plane_angle(bodies.orientation[i]);
+        f.spin_z[i] = bodies.spin[i].z;
     }
     return f;
 }

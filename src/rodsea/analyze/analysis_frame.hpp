@@ -1,6 +1,7 @@
 #pragma once
 // One trajectory frame as the analysis sees it: in-plane centres wrapped into the box, the
-// in-plane axis angle θ (thick → thin for polar rods, MODEL.md §4), velocity and species. Built
+// in-plane axis angle θ (thick → thin for polar rods, MODEL.md §4), velocity, spin about z and
+// species. Built
 // once per frame, so that no observable redoes the quaternion → angle work.
 #include <cstdint>
 #include <string>
@@ -29,6 +30,7 @@ struct AnalysisFrame {
     std::vector<Vec3> position;          // mm, x and y wrapped into [0, L)
     std::vector<double> theta;           // rad, in (−π, π]
     std::vector<Vec3> velocity;          // mm/s
+    std::vector<double> spin_z;          // rad/s, ω_z: the in-plane turning rate
     std::vector<std::uint32_t> species;  // index into the run's species
 
     std::size_t size() const { return position.size(); }
