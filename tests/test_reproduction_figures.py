@@ -4,7 +4,8 @@ the tables, read here with the csv module (not the script's parser), and the PNG
 the 38 mm row's, Fig. 1f's and the bead medium's (heavy and light beads) points against the
 block means of their series tables, the 38 mm row's C(t) against its tables, its dense
 end's 5 s means against their series, what carries P (P_independent, flock_alignment)
-against each run's analysis summary, and the dilute end's G(r) and P(t) against their tables.
+against each run's analysis summary, the dilute end's G(r) and P(t) against their tables, and
+its medium-mass and time-step points against their summaries.
 
     /usr/bin/python3 tests/test_reproduction_figures.py SOURCE_DIR SCRATCH_DIR
 Exit 77 (skipped) without numpy or matplotlib.
@@ -279,3 +280,34 @@ for label, relative, _, _ in figures.DILUTE_SERIES:
                          figures.DILUTE_BIN), label
     dilute_checked += 1
 print(f"checked {dilute_checked} curves of reproduction-dilute.png against their tables")
+
+# What sets the medium's kicks: every run of each summary is drawn once, at the mass its
+# directory names (no medium at 0, the default run at the paper's 0.2), with its own D_r, P and
+# errors; the time-step panel has every run of its table, in order of dt.
+choices = drawn_figure("dilute-choices")
+choices_checked = 0
+for label, relative, _, _ in figures.DILUTE_MASS_TABLES:
+    col, rows = read_table(os.path.join(source, relative))
+    rows = [r for r in rows if not r[col["replicates"]]]
+    named = {"polar-only": 0.0, "dt=": 0.2}
+    mass = []
+    for r in rows:
+        run_name = r[col["run"]]
+        if "medium.mass=" in run_name:
+            mass.append(float(run_name.split("medium.mass=")[1].split("/")[0]))
+        else:
+            mass.append(next(m for key, m in named.items() if key in run_name))
+    order = sorted(range(len(rows)), key=lambda k: mass[k])
+    for name in ("D_r_C2_polar", "P_polar"):
+        curve = choices[f"{name}: {label}"]
+        assert same(curve["x"], [mass[k] for k in order]), (label, name)
+        assert same(curve["y"], [float(rows[k][col[name]]) for k in order]), (label, name)
+        assert same(curve["err"], [float(rows[k][col[name + "_err"]]) for k in order]), (label, name)
+        choices_checked += len(rows)
+col, rows = read_table(os.path.join(source, figures.DILUTE_DT_TABLE))
+rows.sort(key=lambda r: float(r[col["dt_s"]]))
+curve = choices["D_r_C2_polar: dt"]
+assert same(curve["x"], [float(r[col["dt_s"]]) * 1e6 for r in rows])
+assert same(curve["y"], [float(r[col["D_r_C2_polar"]]) * 10.0 for r in rows])  # drawn in 0.1 rad²/s
+choices_checked += len(rows)
+print(f"checked {choices_checked} points of reproduction-dilute-choices.png against their summaries")
