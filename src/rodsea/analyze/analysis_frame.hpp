@@ -1,8 +1,7 @@
 #pragma once
 // One trajectory frame as the analysis sees it: in-plane centres wrapped into the box, the
 // in-plane axis angle θ (thick → thin for polar rods, MODEL.md §4), velocity, spin about z and
-// species. Built
-// once per frame, so that no observable redoes the quaternion → angle work.
+// species. Built once per frame, so that no observable redoes the quaternion → angle work.
 #include <cstdint>
 #include <string>
 #include <vector>
