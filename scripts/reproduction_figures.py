@@ -155,6 +155,8 @@ DILUTE_CORRELATIONS = [
      f"{DILUTE}/polar-only-88mm-seed2-from240.pair_correlation_polar.csv", "C3", ":"),
     ("88 mm, light medium", f"{DILUTE}/light-medium-88mm-from60.pair_correlation_polar.csv", "C1",
      "-"),
+    ("88 mm, half-mass medium",
+     f"{DILUTE}/half-mass-medium-88mm-from60.pair_correlation_polar.csv", "C1", "--"),
 ]
 DILUTE_SERIES = [
     ("38 mm, with medium", f"{DATA}/finite-size/fig1c-phi_a0.05-scale0.15.series.csv", "C0", "-"),
@@ -166,6 +168,7 @@ DILUTE_SERIES = [
     ("88 mm, no medium, seed 2", f"{DILUTE}/polar-only-88mm-seed2.series.csv", "C3", ":"),
     ("88 mm, with medium, aligned start", f"{DILUTE}/aligned-88mm.series.csv", "C2", "-"),
     ("88 mm, light medium", f"{DILUTE}/light-medium-88mm.series.csv", "C1", "-"),
+    ("88 mm, half-mass medium", f"{DILUTE}/half-mass-medium-88mm.series.csv", "C1", "--"),
 ]
 DILUTE_BIN = 5
 # What sets how hard the medium kicks (docs/reproduction.md, the dilute end): the φ_a = 0.05
