@@ -10,10 +10,8 @@ DIR/reproduction-<name>.json: every curve drawn, as {label: {"x": [...], "y": [.
 table is named and nothing is drawn (exit 2).
 """
 import argparse
-import csv
 import json
 import os
-import re
 import sys
 
 import numpy as np
@@ -173,27 +171,15 @@ DILUTE_SERIES = [
 DILUTE_BIN = 5
 # What sets how hard the medium kicks (docs/reproduction.md, the dilute end): the φ_a = 0.05
 # point in the 38 mm box at several medium masses (seed 1, and seed 2 at the two masses either
-# side of the turn) and at several time steps. Each summary row is one run; its medium mass,
-# in polar-rod masses, is read from its run directory's name.
+# side of the turn) and at several time steps. Each summary row is one run; the masses, in
+# polar-rod masses (0: no medium), are those of its rows in order (the toml headers' commands).
 DILUTE_MASS_TABLES = [
-    ("seed 1", f"{DILUTE}/medium-mass-38mm-from60.summary.csv", "C0", "o"),
-    ("seed 2", f"{DILUTE}/medium-mass-38mm-seed2-from60.summary.csv", "C3", "s"),
+    ("seed 1", f"{DILUTE}/medium-mass-38mm-from60.summary.csv", [0.0, 0.05, 0.1, 0.15, 0.2, 0.4],
+     "C0", "o"),
+    ("seed 2", f"{DILUTE}/medium-mass-38mm-seed2-from60.summary.csv", [0.1, 0.15], "C3", "s"),
 ]
 DILUTE_DT_TABLE = f"{DILUTE}/dt-38mm-from60.summary.csv"
 PAPER_MEDIUM_MASS = 0.2  # MODEL.md §2, the paper's m_apolar / m_polar
-
-
-def medium_mass(run):
-    """A mass-scan run's medium mass: the campaign point in its directory name, none for the run
-    without a medium, the paper's for the default run at the scan's time step (dt-38mm's)."""
-    m = re.search(r"medium\.mass=([0-9.]+)", run)
-    if m:
-        return float(m.group(1))
-    if "polar-only" in run:
-        return 0.0
-    if "dt=" in run:
-        return PAPER_MEDIUM_MASS
-    raise TableError(f"{run}: not a run of the medium-mass scan")
 
 # Fig. 5b, first look: the medium's velocity around polar rods against distance in the 63 mm box
 # (label, profile table) from `rodsea analyze --observables medium_velocity`.
@@ -776,28 +762,18 @@ def draw_dilute(plt):
     return fig, dump
 
 
-def read_summary(relative):
-    """An analysis summary's run rows (not the replicate groups) as dicts, with the csv module:
-    its run column is text."""
-    path = os.path.join(ROOT, relative)
-    if not os.path.isfile(path):
-        raise TableError(f"{relative}: missing")
-    with open(path, encoding="utf-8") as f:
-        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
-    return [r for r in rows if not r.get("replicates")]
-
-
 def draw_dilute_choices(plt):
     """What sets the medium's kicks at the dilute point: the polar rods' D_r and P against the
     medium rods' mass (left, middle) and D_r with the medium's agitation against dt (right)."""
     fig, (left, middle, right) = plt.subplots(1, 3, figsize=(13.0, 4.4))
     dump = {}
-    for label, relative, colour, marker in DILUTE_MASS_TABLES:
-        rows = sorted(read_summary(relative), key=lambda r: medium_mass(r["run"]))
-        mass = [medium_mass(r["run"]) for r in rows]
+    for label, relative, mass, colour, marker in DILUTE_MASS_TABLES:
+        t = read_csv(relative)
+        if len(t) != len(mass):
+            raise TableError(f"{relative}: {len(t)} rows for the {len(mass)} masses {mass}")
         for ax, name in ((left, "D_r_C2_polar"), (middle, "P_polar")):
-            y = [float(r[name]) for r in rows]
-            err = [float(r[name + "_err"]) for r in rows]
+            y = column(t, name, relative).tolist()
+            err = column(t, name + "_err", relative).tolist()
             ax.errorbar(mass, y, err, color=colour, marker=marker, ls="-", lw=1, capsize=3,
                         label=label)
             dump[f"{name}: {label}"] = {"x": mass, "y": y, "err": err}
@@ -810,15 +786,16 @@ def draw_dilute_choices(plt):
     middle.set_ylabel("P")
     middle.set_ylim(0, 1)
     middle.set_title("Global polar order", fontsize=10)
-    rows = sorted(read_summary(DILUTE_DT_TABLE), key=lambda r: float(r["dt_s"]))
-    dt = [float(r["dt_s"]) * 1e6 for r in rows]
+    t = read_csv(DILUTE_DT_TABLE)
+    order = np.argsort(column(t, "dt_s", DILUTE_DT_TABLE))
+    dt = (column(t, "dt_s", DILUTE_DT_TABLE)[order] * 1e6).tolist()
     # Scaled to share one axis: D_r ~0.05 rad²/s, the medium's agitation ~10 mm/s and rad/s.
     for name, scale, colour, label in (
             ("D_r_C2_polar", 10.0, "C0", "polar rods' D_r (0.1 rad²/s)"),
             ("v_rms_medium", 0.1, "C1", "medium's rms in-plane speed (10 mm/s)"),
             ("spin_rms_medium", 0.1, "C2", "medium's rms spin (10 rad/s)")):
-        y = [float(r[name]) * scale for r in rows]
-        err = [float(r[name + "_err"]) * scale for r in rows]
+        y = (column(t, name, DILUTE_DT_TABLE)[order] * scale).tolist()
+        err = (column(t, name + "_err", DILUTE_DT_TABLE)[order] * scale).tolist()
         right.errorbar(dt, y, err, color=colour, marker="o", ls="-", lw=1, capsize=3, label=label)
         dump[f"{name}: dt"] = {"x": dt, "y": y, "err": err}
     right.set_xscale("log", base=2)

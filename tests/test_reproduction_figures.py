@@ -281,12 +281,12 @@ for label, relative, _, _ in figures.DILUTE_SERIES:
     dilute_checked += 1
 print(f"checked {dilute_checked} curves of reproduction-dilute.png against their tables")
 
-# What sets the medium's kicks: every run of each summary is drawn once, at the mass its
-# directory names (no medium at 0, the default run at the paper's 0.2), with its own D_r, P and
-# errors; the time-step panel has every run of its table, in order of dt.
+# What sets the medium's kicks: every run of each summary is drawn once, in the table's order,
+# at the mass its directory names (no medium at 0, the default run at the paper's 0.2), with its
+# own D_r, P and errors; the time-step panel has every run of its table, in order of dt.
 choices = drawn_figure("dilute-choices")
 choices_checked = 0
-for label, relative, _, _ in figures.DILUTE_MASS_TABLES:
+for label, relative, _, _, _ in figures.DILUTE_MASS_TABLES:
     col, rows = read_table(os.path.join(source, relative))
     rows = [r for r in rows if not r[col["replicates"]]]
     named = {"polar-only": 0.0, "dt=": 0.2}
@@ -297,12 +297,11 @@ for label, relative, _, _ in figures.DILUTE_MASS_TABLES:
             mass.append(float(run_name.split("medium.mass=")[1].split("/")[0]))
         else:
             mass.append(next(m for key, m in named.items() if key in run_name))
-    order = sorted(range(len(rows)), key=lambda k: mass[k])
     for name in ("D_r_C2_polar", "P_polar"):
         curve = choices[f"{name}: {label}"]
-        assert same(curve["x"], [mass[k] for k in order]), (label, name)
-        assert same(curve["y"], [float(rows[k][col[name]]) for k in order]), (label, name)
-        assert same(curve["err"], [float(rows[k][col[name + "_err"]]) for k in order]), (label, name)
+        assert same(curve["x"], mass), (label, name)
+        assert same(curve["y"], [float(r[col[name]]) for r in rows]), (label, name)
+        assert same(curve["err"], [float(r[col[name + "_err"]]) for r in rows]), (label, name)
         choices_checked += len(rows)
 col, rows = read_table(os.path.join(source, figures.DILUTE_DT_TABLE))
 rows.sort(key=lambda r: float(r[col["dt_s"]]))
