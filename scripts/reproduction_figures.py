@@ -102,9 +102,10 @@ FIG4A = [(sigma, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspect_rat
 FIG4A_WINDOW = (30.0, 60.0)
 FIG4A_BLOCK = 5.0
 # The same points in the 88 mm box (98 polar rods): (σ, series table, window of its P): their
-# P(t) and S(t) beside the 38 mm runs', and P over each one's own window.
+# P(t) and S(t) beside the 38 mm runs', and P over each one's own window; a run still in its
+# transient (window None) is drawn in time only.
 FIG4A_88MM = [(sigma, f"{DATA}/fig4a-88mm/medium.area_fraction=0.75,medium.aspect_ratio={sigma:g}"
-               ".series.csv", window) for sigma, window in ((5.625, (40.0, 60.0)),)]
+               ".series.csv", window) for sigma, window in ((3.125, None), (5.625, (40.0, 60.0)))]
 # A second seed of σ = 5.625 in the 38 mm box, run 45 s: its P over FIG4A_SEED2_WINDOW.
 FIG4A_SEED2 = (5.625, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspect_ratio=5.625"
                ".seed2.series.csv")
@@ -509,10 +510,12 @@ def draw_fig4a(plt):
         p, nematic = column(t, "P_polar", relative), column(t, "S_medium", relative)
         series.plot(middle, p, color=f"C{k_of[sigma]}", lw=1.2, ls="--",
                     label=f"σ = {sigma:g}, 88 mm box")
-        series.plot(middle, nematic, color="0.3", lw=1.0, ls=":",
+        series.plot(middle, nematic, color=f"C{k_of[sigma]}", lw=1.0, ls=":",
                     label=f"S of the medium, σ = {sigma:g}, 88 mm")
         dump[f"P(t): σ = {sigma:g}, 88 mm"] = {"x": middle.tolist(), "y": p.tolist()}
         dump[f"S(t): σ = {sigma:g}, 88 mm"] = {"x": middle.tolist(), "y": nematic.tolist()}
+        if window is None:
+            continue  # not steady yet: no point against σ
         _, y, err, _ = window_points([(sigma, relative)], window, FIG4A_BLOCK)[0]
         points.errorbar([sigma], [y], yerr=[err], fmt="o", ms=7, mfc="none", capsize=3,
                         color="C3", label="P, 88 mm box" if "P, 88 mm" not in dump else None)
