@@ -136,8 +136,9 @@ ALIGNMENT_NOISE = [(float(d), f"{ALIGNMENT}/fig1f-38mm-D_r{d}-seed2-from30.summa
 # line style), and P(t) in 5 s means of 1 s series tables (label, table, colour, line style):
 # the row's runs with the medium from the random start; the same rods without the medium
 # (dilute-order/polar-only-*.toml, seed 2 to 360 s); the 88 mm box with medium rods of a quarter
-# of the mass (light-medium-88mm.toml) and, P(t) only (stopped at 70 s), from an aligned start
-# (aligned-88mm.toml).
+# of the mass (light-medium-88mm.toml), of half (half-mass-medium-88mm.toml) and of 0.15
+# polar-rod masses (medium-mass-88mm.toml) and, P(t) only (stopped at 70 s), from an aligned
+# start (aligned-88mm.toml).
 DILUTE = f"{DATA}/dilute-order"
 DILUTE_CORRELATIONS = [
     ("38 mm, with medium", f"{DILUTE}/fig1c-38mm-phi_a0.05-seed1-from60.pair_correlation_polar.csv",
@@ -156,6 +157,8 @@ DILUTE_CORRELATIONS = [
      "-"),
     ("88 mm, half-mass medium",
      f"{DILUTE}/half-mass-medium-88mm-from60.pair_correlation_polar.csv", "C1", "--"),
+    ("88 mm, medium of 0.15 masses",
+     f"{DILUTE}/medium-mass-88mm-0.15-from60.pair_correlation_polar.csv", "C1", ":"),
 ]
 DILUTE_SERIES = [
     ("38 mm, with medium", f"{DATA}/finite-size/fig1c-phi_a0.05-scale0.15.series.csv", "C0", "-"),
@@ -168,18 +171,44 @@ DILUTE_SERIES = [
     ("88 mm, with medium, aligned start", f"{DILUTE}/aligned-88mm.series.csv", "C2", "-"),
     ("88 mm, light medium", f"{DILUTE}/light-medium-88mm.series.csv", "C1", "-"),
     ("88 mm, half-mass medium", f"{DILUTE}/half-mass-medium-88mm.series.csv", "C1", "--"),
+    ("88 mm, medium of 0.15 masses", f"{DILUTE}/medium-mass-88mm-0.15.series.csv", "C1", ":"),
 ]
 DILUTE_BIN = 5
 # What sets how hard the medium kicks (docs/reproduction.md, the dilute end): the φ_a = 0.05
-# point in the 38 mm box at several medium masses (seed 1, and seed 2 at the two masses either
-# side of the turn) and at several time steps. Each summary row is one run; the masses, in
-# polar-rod masses (0: no medium), are those of its rows in order (the toml headers' commands).
+# point in the 38 mm box at several medium masses (seed 1; seed 2 at the two masses either side
+# of the turn; seeds 3-5 at those two and the paper's; seeds 6-8 at the turn and 6-7 at the
+# paper's) and at several time steps. Each run row of a summary is one run (the rows of seed groups that `analyze`
+# appends are skipped); the masses, in polar-rod masses (0: no medium), are those of its run rows
+# in order (the toml headers' commands). A table with several seeds at one mass is drawn as
+# points, not joined.
 DILUTE_MASS_TABLES = [
     ("seed 1", f"{DILUTE}/medium-mass-38mm-from60.summary.csv", [0.0, 0.05, 0.1, 0.15, 0.2, 0.4],
      "C0", "o"),
     ("seed 2", f"{DILUTE}/medium-mass-38mm-seed2-from60.summary.csv", [0.1, 0.15], "C3", "s"),
+    ("seeds 3–5", f"{DILUTE}/medium-mass-38mm-seeds3-5-from60.summary.csv",
+     [0.1] * 3 + [0.15] * 3 + [0.2] * 3, "C2", "^"),
+    ("seeds 6–8", f"{DILUTE}/medium-mass-38mm-seeds6-8-from60.summary.csv", [0.15] * 3, "C4",
+     "v"),
+    ("seeds 6–7", f"{DILUTE}/medium-mass-38mm-paper-seeds6-7-from60.summary.csv", [0.2] * 2,
+     "C5", "D"),
 ]
 DILUTE_DT_TABLE = f"{DILUTE}/dt-38mm-from60.summary.csv"
+# The same turn run by run: P(t) of every seed at the masses either side of it and the paper's
+# (mass: [(label, 1 s series table)]), in 5 s means. Seeds 1 and 2 are the tables above's runs
+# (seed 1 at 0.2 is dt-38mm's 2.5 µs run); seeds 3-8 are those of medium-mass-38mm-seeds3-5,
+# -seeds6-8 and -paper-seeds6-7.toml, named by `scripts/reproduction_series.py` after their
+# campaign point.
+DILUTE_SEEDS = f"{DILUTE}/medium-mass-seeds"
+DILUTE_SEED_SERIES = {
+    0.1: [("seed 1", f"{DILUTE}/medium-mass-38mm-0.1.series.csv"),
+          ("seed 2", f"{DILUTE}/medium-mass-38mm-0.1.seed2.series.csv")]
+    + [(f"seed {k}", f"{DILUTE_SEEDS}/medium.mass=0.1.seed{k}.series.csv") for k in (3, 4, 5)],
+    0.15: [("seed 1", f"{DILUTE}/medium-mass-38mm-0.15.series.csv"),
+           ("seed 2", f"{DILUTE}/medium-mass-38mm-0.15.seed2.series.csv")]
+    + [(f"seed {k}", f"{DILUTE_SEEDS}/medium.mass=0.15.seed{k}.series.csv") for k in range(3, 9)],
+    0.2: [("seed 1", f"{DILUTE}/dt-38mm-2.5e-06.series.csv")]
+    + [(f"seed {k}", f"{DILUTE_SEEDS}/medium.mass=0.2.seed{k}.series.csv") for k in range(3, 8)],
+}
 PAPER_MEDIUM_MASS = 0.2  # MODEL.md §2, the paper's m_apolar / m_polar
 
 # Fig. 5b, first look: the medium's velocity around polar rods against distance in the 63 mm box
@@ -772,13 +801,15 @@ def draw_dilute_choices(plt):
     dump = {}
     for label, relative, mass, colour, marker in DILUTE_MASS_TABLES:
         t = read_csv(relative)
+        t = t[np.isnan(column(t, "replicates", relative))]  # runs, not their seed groups
         if len(t) != len(mass):
-            raise TableError(f"{relative}: {len(t)} rows for the {len(mass)} masses {mass}")
+            raise TableError(f"{relative}: {len(t)} runs for the {len(mass)} masses {mass}")
+        joined = len(set(mass)) == len(mass)
         for ax, name in ((left, "D_r_C2_polar"), (middle, "P_polar")):
             y = column(t, name, relative).tolist()
             err = column(t, name + "_err", relative).tolist()
-            ax.errorbar(mass, y, err, color=colour, marker=marker, ls="-", lw=1, capsize=3,
-                        label=label)
+            ax.errorbar(mass, y, err, color=colour, marker=marker, ls="-" if joined else "none",
+                        lw=1, capsize=3, mfc=colour if joined else "none", label=label)
             dump[f"{name}: {label}"] = {"x": mass, "y": y, "err": err}
     for ax in (left, middle):
         ax.axvline(PAPER_MEDIUM_MASS, color="grey", lw=0.8, ls=":")
@@ -813,10 +844,32 @@ def draw_dilute_choices(plt):
     return fig, dump
 
 
+def draw_dilute_seeds(plt):
+    """The medium-mass turn run by run: P(t) of every seed, one panel per mass."""
+    fig, axes = plt.subplots(1, len(DILUTE_SEED_SERIES), figsize=(13.0, 4.2), sharey=True)
+    dump = {}
+    for ax, (mass, runs) in zip(axes, DILUTE_SEED_SERIES.items()):
+        for k, (label, relative) in enumerate(runs):
+            x, y = bin_means(read_csv(relative), "P_polar", relative, DILUTE_BIN)
+            ax.plot(x, y, color=f"C{k}", lw=1.1, label=label)
+            dump[f"P: {mass}: {label}"] = {"x": x.tolist(), "y": y.tolist()}
+        ax.axvspan(60, 180, color="grey", alpha=0.08, lw=0)
+        paper = " (the paper's)" if mass == PAPER_MEDIUM_MASS else ""
+        ax.set_title(f"medium rods of {mass:g} polar-rod masses{paper}", fontsize=10)
+        ax.set_xlabel("t (s; shaded: the 60–180 s window)")
+        ax.set_ylim(0, 1)
+        ax.legend(loc="lower right", ncol=3, fontsize=7)
+    axes[0].set_ylabel(f"P ({DILUTE_BIN} s means)")
+    fig.suptitle("The dilute point (φ_a = φ_p = 0.05, σ = 3.125, D_r = 0, 38 mm box, dt = 2.5 µs): "
+                 "each seed's global polar order either side of the turn", fontsize=10)
+    fig.tight_layout()
+    return fig, dump
+
+
 FIGURES = {"fig1c": draw_fig1c, "fig1c-series": draw_fig1c_series,
            "finite-size": draw_finite_size, "row38": draw_row38, "ct38": draw_ct38,
            "dense38": draw_dense38, "alignment": draw_alignment, "dilute": draw_dilute,
-           "dilute-choices": draw_dilute_choices,
+           "dilute-choices": draw_dilute_choices, "dilute-seeds": draw_dilute_seeds,
            "fig1f": draw_fig1f,
            "beads": draw_beads, "beads-light": draw_beads_light, "fig4a": draw_fig4a,
            "fig5b": draw_fig5b}

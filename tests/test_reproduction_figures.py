@@ -4,8 +4,9 @@ the tables, read here with the csv module (not the script's parser), and the PNG
 the 38 mm row's, Fig. 1f's and the bead medium's (heavy and light beads) points against the
 block means of their series tables, the 38 mm row's C(t) against its tables, its dense
 end's 5 s means against their series, what carries P (P_independent, flock_alignment)
-against each run's analysis summary, the dilute end's G(r) and P(t) against their tables, and
-its medium-mass and time-step points against their summaries.
+against each run's analysis summary, the dilute end's G(r) and P(t) against their tables, its
+medium-mass and time-step points against their summaries, and each seed's P(t) either side of
+the medium-mass turn against its series.
 
     /usr/bin/python3 tests/test_reproduction_figures.py SOURCE_DIR SCRATCH_DIR
 Exit 77 (skipped) without numpy or matplotlib.
@@ -311,3 +312,20 @@ assert same(curve["x"], [float(r[col["dt_s"]]) * 1e6 for r in rows])
 assert same(curve["y"], [float(r[col["D_r_C2_polar"]]) * 10.0 for r in rows])  # drawn in 0.1 rad²/s
 choices_checked += len(rows)
 print(f"checked {choices_checked} points of reproduction-dilute-choices.png against their summaries")
+
+# The same turn seed by seed: every run listed is drawn in its mass's panel as its series' 5 s
+# means, and its table is the run of that mass (its file names the mass; seed 1 at the paper's
+# 0.2 is the time-step scan's 2.5 µs run).
+seeds = drawn_figure("dilute-seeds")
+seeds_checked = 0
+for mass, runs in figures.DILUTE_SEED_SERIES.items():
+    for label, relative in runs:
+        # "0.1.s" is in 0.1.series and 0.1.seed3, not in 0.15.series.
+        names_its_mass = f"{mass:g}.s" in os.path.basename(relative)
+        assert names_its_mass or "dt-38mm-2.5e-06" in relative, relative
+        col, rows = read_table(os.path.join(source, relative))
+        assert are_bin_means(seeds[f"P: {mass}: {label}"]["y"],
+                             [float(r[col["P_polar"]]) for r in rows], figures.DILUTE_BIN), relative
+        seeds_checked += 1
+assert len(seeds) == seeds_checked, sorted(seeds)
+print(f"checked {seeds_checked} curves of reproduction-dilute-seeds.png against their series")
