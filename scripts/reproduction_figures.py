@@ -177,10 +177,10 @@ DILUTE_BIN = 5
 # What sets how hard the medium kicks (docs/reproduction.md, the dilute end): the φ_a = 0.05
 # point in the 38 mm box at several medium masses (seed 1; seed 2 at the two masses either side
 # of the turn; seeds 3-5 at those two and the paper's; seeds 6-8 at the turn and 6-7 at the
-# paper's) and at several time steps. Each run row of a summary is one run (the rows of seed groups that `analyze`
-# appends are skipped); the masses, in polar-rod masses (0: no medium), are those of its run rows
-# in order (the toml headers' commands). A table with several seeds at one mass is drawn as
-# points, not joined.
+# paper's) and at several time steps. Each run row of a summary is one run (the rows of seed
+# groups that `analyze` appends are skipped); the masses, in polar-rod masses (0: no medium),
+# are those of its run rows in order (the toml headers' commands). A table with several seeds
+# at one mass is drawn as points, not joined.
 DILUTE_MASS_TABLES = [
     ("seed 1", f"{DILUTE}/medium-mass-38mm-from60.summary.csv", [0.0, 0.05, 0.1, 0.15, 0.2, 0.4],
      "C0", "o"),
