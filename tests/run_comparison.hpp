@@ -1,19 +1,54 @@
 #pragma once
-// Comparing run directories and states bit for bit, for the tests of `rodsea run`.
+// The small run the tests of `rodsea run` step, and comparing run directories and states bit for
+// bit.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
 
+#include "rodsea/config/config_file.hpp"
 #include "rodsea/engine/body_state.hpp"
 #include "rodsea/io/checkpoint.hpp"
 #include "rodsea/io/trajectory_file.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
+#include "rodsea/run/run_driver.hpp"
 #include "rodsea/run/run_files.hpp"
 #include "scratch_dir.hpp"
 
 namespace rodsea {
+
+// 4 polar rods among apolar rods in a 20 mm box: ~50 bodies, thousands of steps per second.
+inline std::string small_config(double duration, double interval,
+                                const std::string& output_extra = "") {
+    std::ostringstream s;
+    s << "[box]\nside = 20.0\n"
+      << "[[species]]\nname = \"polar\"\nkind = \"polar_rod\"\ncount = 4\n"
+      << "[[species]]\nname = \"medium\"\nkind = \"apolar_rod\"\nlength = 2.5\n"
+      << "area_fraction = 0.15\n"
+      << "[time]\nduration = " << duration << "\n"
+      << "[output]\ninterval = " << interval << "\n"
+      << output_extra << "[run]\nseed = 11\n";
+    return s.str();
+}
+
+inline std::filesystem::path write_config(const ScratchDir& dir, const std::string& text) {
+    const auto path = dir.path() / "run.toml";
+    std::ofstream(path) << text;
+    return path;
+}
+
+// Runs `config` into `out` in this process (quiet); its exit code.
+inline int run_quietly(const std::string& config, const std::filesystem::path& out) {
+    RunOptions options;
+    options.out_dir = out;
+    options.quiet = true;
+    std::ostringstream log, err;
+    return start_run(load_config_string(config, "test"), options, log, err);
+}
 
 inline std::size_t line_count(const std::filesystem::path& path) {
     const std::string text = read_text(path);

@@ -17,6 +17,7 @@
 #include "rodsea/io/checkpoint.hpp"
 #include "rodsea/io/series_csv.hpp"
 #include "rodsea/io/trajectory_file.hpp"
+#include "rodsea/io/trajectory_reader.hpp"
 #include "rodsea/random.hpp"
 #include "rodsea/scenes/scenes.hpp"
 #include "scratch_dir.hpp"
@@ -167,13 +168,13 @@ TEST(TrajectoryFile, ReopenDropsFramesAfterTheCheckpoint) {
         t.close();
     }
     {
-        TrajectoryFile t = TrajectoryFile::reopen(path, 3, columns);
+        TrajectoryFile t = TrajectoryFile::reopen(path, 3, p, columns);
         EXPECT_EQ(t.frames(), 3u);
         t.append_frame(300, 0.3, b, {30.0});
         t.append_frame(400, 0.4, b, {40.0});
         t.close();
     }
-    EXPECT_THROW(TrajectoryFile::reopen(path, 9, columns), FileError);
+    EXPECT_THROW(TrajectoryFile::reopen(path, 9, p, columns), FileError);
     EXPECT_EQ(read_stored_config(path), "[box]\n");
 
     // Debian's h5py reads the H5MD layout; the script prints what the test compares.
@@ -202,6 +203,42 @@ print("radii", len(f["parameters/rodsea/species/0/sphere_radii"]), len(f["parame
     EXPECT_NE(output.find("unit mm mm s-1\n"), std::string::npos) << output;
     EXPECT_NE(output.find("edges 30.0 30.0 1.5 5\n"), std::string::npos) << output;
     EXPECT_NE(output.find("radii 13 9\n"), std::string::npos) << output;
+}
+
+// A continuation's file (rodsea run --continue) keeps its run's id and says which of the run's
+// frames is its first; reopened, it still says so. A run's first file says 0.
+TEST(TrajectoryFile, AContinuationKeepsItsRunIdAndFirstFrame) {
+    const ScratchDir dir("trajectory-segment");
+    const EngineParameters p = two_species();
+    const BodyState b = random_bodies(10, 3);
+    const std::vector<SeriesColumn> columns{{"polar_order_polar", "1"}};
+    const auto whole = dir.path() / "whole.h5", part = dir.path() / "part.h5";
+    std::string id;
+    {
+        TrajectoryFile t = TrajectoryFile::create(whole, p, b.species, "[box]\n", columns);
+        id = t.run_id();
+        EXPECT_EQ(t.first_frame(), 0u);
+    }
+    EXPECT_EQ(read_first_frame(whole), 0u);
+    {
+        TrajectoryFile t = TrajectoryFile::create(part, p, b.species, "[box]\n", columns,
+                                                  TrajectorySegment{id, 7});
+        EXPECT_EQ(t.first_frame(), 7u);
+        t.close();
+    }
+    {
+        // Reopened with no frame yet: the box edges come from the run's parameters.
+        TrajectoryFile t = TrajectoryFile::reopen(part, 0, p, columns);
+        EXPECT_EQ(t.first_frame(), 7u);
+        EXPECT_EQ(t.run_id(), id);
+        t.append_frame(700, 0.7, b, {0.5});
+        t.close();
+    }
+    EXPECT_EQ(read_first_frame(part), 7u);
+    EXPECT_EQ(read_run_id(part), id);
+    const TrajectoryReader r(part);
+    ASSERT_EQ(r.frames(), 1u);
+    EXPECT_EQ(r.steps()[0], 700);
 }
 
 // MDAnalysis, the readers our users already have, finds the frames (positions, velocities and

@@ -29,25 +29,6 @@
 namespace rodsea {
 namespace {
 
-// 4 polar rods among apolar rods in a 20 mm box: ~50 bodies, thousands of steps per second.
-std::string small_config(double duration, double interval, const std::string& output_extra = "") {
-    std::ostringstream s;
-    s << "[box]\nside = 20.0\n"
-      << "[[species]]\nname = \"polar\"\nkind = \"polar_rod\"\ncount = 4\n"
-      << "[[species]]\nname = \"medium\"\nkind = \"apolar_rod\"\nlength = 2.5\n"
-      << "area_fraction = 0.15\n"
-      << "[time]\nduration = " << duration << "\n"
-      << "[output]\ninterval = " << interval << "\n"
-      << output_extra << "[run]\nseed = 11\n";
-    return s.str();
-}
-
-std::filesystem::path write_config(const ScratchDir& dir, const std::string& text) {
-    const auto path = dir.path() / "run.toml";
-    std::ofstream(path) << text;
-    return path;
-}
-
 // The driver adds output, not physics: its final state is the engine's after the same steps
 // from the same built state, bit for bit, and it writes one frame per interval plus the first.
 TEST(RunWorkflow, DriverStateIsTheEnginesAndFramesFollowTheCadence) {
@@ -141,15 +122,6 @@ TEST(RunWorkflow, InterruptedAndResumedRunIsBitIdentical) {
     const ChildResult again = run_rodsea({"run", "--resume", a.string()}, dir.path());
     EXPECT_EQ(again.exit_code, kExitOk);
     EXPECT_NE(again.out.find("already complete"), std::string::npos) << again.out;
-}
-
-// Runs `config` into `out` in this process (quiet); its exit code.
-int run_quietly(const std::string& config, const std::filesystem::path& out) {
-    RunOptions options;
-    options.out_dir = out;
-    options.quiet = true;
-    std::ostringstream log, err;
-    return start_run(load_config_string(config, "test"), options, log, err);
 }
 
 int extend_quietly(const std::filesystem::path& dir, std::optional<double> duration,

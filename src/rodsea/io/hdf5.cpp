@@ -288,6 +288,25 @@ void write_attribute(const File& file, hid_t object, const std::string& name, st
     check(H5Awrite(attr.get(), H5T_NATIVE_INT32, &value), file, "cannot write attribute " + name);
 }
 
+void write_attribute(const File& file, hid_t object, const std::string& name, std::int64_t value) {
+    Handle space(H5Screate(H5S_SCALAR));
+    Handle attr(check(
+        H5Acreate2(object, name.c_str(), H5T_STD_I64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+        file, "cannot create attribute " + name));
+    check(H5Awrite(attr.get(), H5T_NATIVE_INT64, &value), file, "cannot write attribute " + name);
+}
+
+std::int64_t read_int64_attribute(const File& file, hid_t object, const std::string& name) {
+    Handle attr(check(H5Aopen(object, name.c_str(), H5P_DEFAULT), file, "no attribute " + name));
+    Handle type(H5Aget_type(attr.get()));
+    Handle space(H5Aget_space(attr.get()));
+    if (H5Tget_class(type.get()) != H5T_INTEGER || H5Sget_simple_extent_npoints(space.get()) != 1)
+        throw FileError(file.path().string(), "attribute " + name + " is not one integer");
+    std::int64_t value = 0;
+    check(H5Aread(attr.get(), H5T_NATIVE_INT64, &value), file, "cannot read attribute " + name);
+    return value;
+}
+
 std::string read_string_attribute(const File& file, hid_t object, const std::string& name) {
     Handle attr(check(H5Aopen(object, name.c_str(), H5P_DEFAULT), file, "no attribute " + name));
     Handle type(H5Aget_type(attr.get()));

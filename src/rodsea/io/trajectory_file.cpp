@@ -114,6 +114,17 @@ std::string stored_run_id(const h5::File& f) {
                : std::string();
 }
 
+// Absent in a run's first file and in files written before continuations existed.
+std::uint64_t stored_first_frame(const h5::File& f) {
+    h5::Handle rodsea = h5::open_group(f, f.id(), "/parameters/rodsea");
+    if (H5Aexists(rodsea.get(), "first_frame") <= 0) return 0;
+    const std::int64_t first = h5::read_int64_attribute(f, rodsea.get(), "first_frame");
+    if (first < 0)
+        throw FileError(f.path().string(), "/parameters/rodsea first_frame is " +
+                                               std::to_string(first) + "; allowed: 0 or more");
+    return static_cast<std::uint64_t>(first);
+}
+
 void write_species(const h5::File& f, hid_t parent, const EngineParameters& p) {
     h5::Handle all = h5::create_group(f, parent, "species");
     for (size_t s = 0; s < p.species.size(); ++s) {
@@ -150,6 +161,7 @@ struct TrajectoryFile::Impl {
     std::vector<float> scratch;
     std::uint64_t complete_frames = 0;
     std::string run_id;
+    std::uint64_t first_frame = 0;
     std::uint64_t reserved_end = 0;  // the file offset up to which reserve() claimed blocks
 };
 
@@ -162,7 +174,8 @@ TrajectoryFile TrajectoryFile::create(const std::filesystem::path& path,
                                       const EngineParameters& params,
                                       const std::vector<std::uint32_t>& species,
                                       const std::string& config_toml,
-                                      const std::vector<SeriesColumn>& columns) {
+                                      const std::vector<SeriesColumn>& columns,
+                                      const std::optional<TrajectorySegment>& segment) {
     auto impl = std::unique_ptr<Impl>(new Impl(h5::File::create(path)));
     const h5::File& f = impl->file;
     write_h5md_header(f);
@@ -195,8 +208,13 @@ TrajectoryFile TrajectoryFile::create(const std::filesystem::path& path,
     h5::Handle parameters = h5::create_group(f, f.id(), "parameters");
     h5::Handle rodsea = h5::create_group(f, parameters.get(), "rodsea");
     h5::write_attribute(f, rodsea.get(), "version", std::string(RODSEA_VERSION));
-    impl->run_id = new_run_id();
+    impl->run_id = segment ? segment->run_id : new_run_id();
     h5::write_attribute(f, rodsea.get(), "run_id", impl->run_id);
+    if (segment && segment->first_frame > 0) {
+        impl->first_frame = segment->first_frame;
+        h5::write_attribute(f, rodsea.get(), "first_frame",
+                            static_cast<std::int64_t>(segment->first_frame));
+    }
     h5::write_attribute(f, rodsea.get(), "units",
                         std::string("lengths mm, time s, velocities mm/s, angular velocities "
                                     "rad/s, masses in the config's arbitrary unit"));
@@ -207,6 +225,7 @@ TrajectoryFile TrajectoryFile::create(const std::filesystem::path& path,
 }
 
 TrajectoryFile TrajectoryFile::reopen(const std::filesystem::path& path, std::uint64_t frames,
+                                      const EngineParameters& params,
                                       const std::vector<SeriesColumn>& columns) {
     auto impl = std::unique_ptr<Impl>(new Impl(h5::File::open(path, true)));
     const h5::File& f = impl->file;
@@ -218,16 +237,14 @@ TrajectoryFile TrajectoryFile::reopen(const std::filesystem::path& path, std::ui
     {
         h5::Handle box = h5::open_group(f, bodies.get(), "box");
         impl->edges = Element::open(f, box.get(), "edges", frames);
-        h5::Handle edges = h5::open_group(f, box.get(), "edges");
-        const std::vector<double> rows = h5::read_doubles(f, edges.get(), "value");
-        if (rows.size() < 3) throw FileError(path.string(), "has no box edges to continue from");
-        impl->box_edges = {rows[0], rows[1], rows[2]};
+        impl->box_edges = {params.box.lx, params.box.ly, params.drive.gap};
     }
     h5::Handle observables = h5::open_group(f, f.id(), "observables");
     for (const SeriesColumn& c : columns)
         impl->series.push_back(Element::open(f, observables.get(), c.name, frames));
     impl->complete_frames = frames;
     impl->run_id = stored_run_id(f);
+    impl->first_frame = stored_first_frame(f);
     f.flush();
     return TrajectoryFile(std::move(impl));
 }
@@ -274,6 +291,10 @@ void TrajectoryFile::append_frame(std::uint64_t step, double time, const BodySta
 
 std::uint64_t TrajectoryFile::frames() const {
     return impl_->complete_frames;
+}
+
+std::uint64_t TrajectoryFile::first_frame() const {
+    return impl_->first_frame;
 }
 
 const std::string& TrajectoryFile::run_id() const {
@@ -360,6 +381,10 @@ std::string read_stored_config(const std::filesystem::path& path) {
 
 std::string read_run_id(const std::filesystem::path& path) {
     return stored_run_id(h5::File::open(path, false));
+}
+
+std::uint64_t read_first_frame(const std::filesystem::path& path) {
+    return stored_first_frame(h5::File::open(path, false));
 }
 
 }  // namespace rodsea

@@ -10,13 +10,15 @@
 //                               one frame per output interval; value is float32 [frames, N, 3|4]
 //   /particles/bodies/species   [N] int32 index into /parameters/rodsea/species (fixed in time)
 //   /observables/<name>/{step, time, value}   the scalar time series, one row per frame
-//   /parameters/rodsea          version, config (the full resolved TOML), units; species/<i>/...
-//                               with each species' sphere offsets and radii, mass and inertia
+//   /parameters/rodsea          version, config (the full resolved TOML), units, run_id,
+//                               first_frame; species/<i>/... with each species' sphere offsets
+//                               and radii, mass and inertia
 //
 // Every "value" and "time" carries a `unit` attribute (mm, mm s-1, rad s-1, s, ...).
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,16 +33,30 @@ struct SeriesColumn {
     std::string unit;
 };
 
+// Where a file's frames sit in their run. A run continued from its checkpoint alone in another
+// directory (rodsea run --continue) keeps its run id and writes a new file whose first frame is
+// frame `first_frame` of the whole run: the frames before it stay with the run's earlier files.
+struct TrajectorySegment {
+    std::string run_id;
+    std::uint64_t first_frame = 0;
+};
+
 class TrajectoryFile {
   public:
-    // Creates (or truncates) `path` and writes everything that does not change in time.
+    // Creates (or truncates) `path` and writes everything that does not change in time: a new
+    // run's first file (a new run id, first frame 0), or with `segment` the file that continues
+    // that run from that frame.
     static TrajectoryFile create(const std::filesystem::path& path, const EngineParameters& params,
                                  const std::vector<std::uint32_t>& species,
                                  const std::string& config_toml,
-                                 const std::vector<SeriesColumn>& columns);
-    // Reopens a file to continue after its first `frames` frames: later frames (written after
-    // the checkpoint that is being resumed) are dropped, so none is ever duplicated.
+                                 const std::vector<SeriesColumn>& columns,
+                                 const std::optional<TrajectorySegment>& segment = std::nullopt);
+    // Reopens a file to continue after its first `frames` frames (counted in this file, not
+    // from first_frame()): later frames (written after the checkpoint that is being resumed)
+    // are dropped, so none is ever duplicated.
+    // `params` are the run's (its box edges go on in every frame).
     static TrajectoryFile reopen(const std::filesystem::path& path, std::uint64_t frames,
+                                 const EngineParameters& params,
                                  const std::vector<SeriesColumn>& columns);
 
     TrajectoryFile(TrajectoryFile&&) noexcept;
@@ -51,7 +67,9 @@ class TrajectoryFile {
     // is written, so after a failure (a full disk) it still says what is complete.
     void append_frame(std::uint64_t step, double time, const BodyState& bodies,
                       const std::vector<double>& series_row);
-    std::uint64_t frames() const;
+    std::uint64_t frames() const;  // in this file
+    // The run's frame that is this file's first: 0 but in a continuation (TrajectorySegment).
+    std::uint64_t first_frame() const;
     // The identity of this trajectory (/parameters/rodsea attribute run_id: 32 random hex
     // digits drawn at create); a checkpoint carries it so that resume can refuse a checkpoint
     // copied from another run. Empty for a file written before run ids existed.
@@ -83,5 +101,7 @@ class TrajectoryFile {
 std::string read_stored_config(const std::filesystem::path& path);
 // A trajectory's run id (see TrajectoryFile::run_id), read without opening it for writing.
 std::string read_run_id(const std::filesystem::path& path);
+// A trajectory's first frame in its run (TrajectoryFile::first_frame), read likewise.
+std::uint64_t read_first_frame(const std::filesystem::path& path);
 
 }  // namespace rodsea

@@ -11,6 +11,7 @@
 #include "rodsea/engine/backend_factory.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/run/plan_report.hpp"
+#include "rodsea/run/run_continuation.hpp"
 #include "rodsea/run/run_driver.hpp"
 #include "rodsea/run/steady_stop.hpp"
 
@@ -21,7 +22,9 @@ const CommandSpec& run_command_spec() {
         "run",
         "CONFIG... [--out DIR] [--overwrite] [--threads N] [--backend cpu|gpu] [--quiet]  |  "
         "rodsea run --resume DIR... [--duration T] [--steady-samples N] [--threads N] "
-        "[--backend cpu|gpu] [--quiet]",
+        "[--backend cpu|gpu] [--quiet]  |  rodsea run --continue CHECKPOINT --out DIR "
+        "[--overwrite] [--duration T] [--steady-samples N] [--threads N] [--backend cpu|gpu] "
+        "[--quiet]",
         "start a simulation, or continue one from its checkpoint",
         "Reads CONFIG (TOML; every key in docs/config.md), checks all of it and the packing, "
         "prints the plan, builds the initial state (every body flat on the base, no overlaps) "
@@ -37,6 +40,11 @@ const CommandSpec& run_command_spec() {
         "duration (bit for bit the run given that duration from the start; config.toml and the "
         "stored config say the new one); --steady-samples changes time.steady_samples (stop when "
         "steady) likewise, 0 to run to the duration.\n"
+        "--continue goes on from a checkpoint alone, into a new directory, when the run's own "
+        "directory is not at hand (a checkpoint copied off a cluster's scratch or kept from a "
+        "machine given back): the same run, bit for bit on the same backend, whose new "
+        "trajectory.h5 holds its frames from the checkpoint on (the earlier ones stay with the "
+        "first directory; docs/running.md). It then resumes like any run directory.\n"
         "Several configs (or run directories after --resume) are stepped together as one "
         "ensemble, on a GPU in the same kernels: each run writes its own directory "
         "(out/<config name>, or DIR/<config name> with --out DIR) exactly as it would alone, "
@@ -54,9 +62,14 @@ const CommandSpec& run_command_spec() {
           "this session only (a run started on the GPU goes on on the CPU, and the other way)"},
          {"--resume", "DIR",
           "continue the run in DIR from its checkpoint.h5 (more directories may follow)"},
-         {"--duration", "T", "with --resume: the run's new duration, s (at least the time done)"},
+         {"--continue", "CHECKPOINT",
+          "continue the run of CHECKPOINT (a checkpoint.h5, or a run directory holding one) into "
+          "the new directory --out DIR"},
+         {"--duration", "T",
+          "with --resume or --continue: the run's new duration, s (at least the time done)"},
          {"--steady-samples", "N",
-          "with --resume: the run's new time.steady_samples (0: no stop when steady)"},
+          "with --resume or --continue: the run's new time.steady_samples (0: no stop when "
+          "steady; a continuation must have 0)"},
          {"--quiet", "", "no plan and no progress (errors are still printed)"}},
         ""};
     return spec;
@@ -92,6 +105,17 @@ std::filesystem::path run_directory(const std::filesystem::path& config, std::si
                       : std::filesystem::path(*out_flag) / config.stem();
 }
 
+// What --resume and --continue share: the run's new length, and this session's backend and threads.
+void read_length_flags(const Arguments& a, RunOptions& options) {
+    if (const auto t = a.value("--duration"))
+        options.duration = parse_number("--duration", *t, 0.0, 1e6, "s");
+    if (const auto n = a.value("--steady-samples"))
+        options.steady_samples = parse_count("--steady-samples", *n, 0, 1'000'000'000);
+    if (const auto b = a.value("--backend")) options.backend = backend_flag("--backend", *b);
+    if (const auto n = a.value("--threads"))
+        options.threads = static_cast<int>(parse_count("--threads", *n, 1, 1024));
+}
+
 }  // namespace
 
 int run_command(const std::vector<std::string>& words, std::ostream& out, std::ostream& err) {
@@ -101,6 +125,20 @@ int run_command(const std::vector<std::string>& words, std::ostream& out, std::o
     RunOptions options;
     options.quiet = a.has("--quiet");
     options.overwrite = a.has("--overwrite");
+    if (const auto checkpoint = a.value("--continue")) {
+        if (a.value("--resume") || !a.positional.empty())
+            throw InvalidParameter("--continue", *checkpoint,
+                                   "one checkpoint, with --out DIR (and --overwrite, --duration, "
+                                   "--steady-samples, --threads, --backend, --quiet at most)",
+                                   "the config comes from the checkpoint");
+        const auto out_dir = a.value("--out");
+        if (!out_dir)
+            throw InvalidParameter("--out", "none given", "the new directory of the continuation",
+                                   "rodsea run --continue CHECKPOINT --out DIR");
+        options.out_dir = *out_dir;
+        read_length_flags(a, options);
+        return continue_run(*checkpoint, options, out, err, stdout_is_terminal());
+    }
     if (const auto dir = a.value("--resume")) {
         if (a.value("--out") || options.overwrite)
             throw InvalidParameter("--resume", *dir,
@@ -110,18 +148,12 @@ int run_command(const std::vector<std::string>& words, std::ostream& out, std::o
         // Further directories after the first (a shell glob) are resumed together with it.
         std::vector<std::filesystem::path> dirs{*dir};
         dirs.insert(dirs.end(), a.positional.begin(), a.positional.end());
-        if (const auto t = a.value("--duration"))
-            options.duration = parse_number("--duration", *t, 0.0, 1e6, "s");
-        if (const auto n = a.value("--steady-samples"))
-            options.steady_samples = parse_count("--steady-samples", *n, 0, 1'000'000'000);
-        if (const auto b = a.value("--backend")) options.backend = backend_flag("--backend", *b);
-        if (const auto n = a.value("--threads"))
-            options.threads = static_cast<int>(parse_count("--threads", *n, 1, 1024));
+        read_length_flags(a, options);
         return resume_runs(dirs, options, out, err, stdout_is_terminal());
     }
     for (const char* flag : {"--duration", "--steady-samples"})
         if (a.value(flag))
-            throw InvalidParameter(flag, *a.value(flag), "only with --resume DIR",
+            throw InvalidParameter(flag, *a.value(flag), "only with --resume DIR or --continue",
                                    "a new run takes its length from CONFIG ([time])");
     if (a.positional.empty())
         throw InvalidParameter("CONFIG", "none given",

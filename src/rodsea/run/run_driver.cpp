@@ -25,6 +25,8 @@
 #include "rodsea/io/series_csv.hpp"
 #include "rodsea/io/trajectory_file.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
+#include "rodsea/run/checkpoint_checks.hpp"
+#include "rodsea/run/output_directory.hpp"
 #include "rodsea/run/plan_report.hpp"
 #include "rodsea/run/progress_file.hpp"
 #include "rodsea/run/run_lock.hpp"
@@ -52,68 +54,6 @@ void check_distinct(const std::vector<std::filesystem::path>& dirs) {
                 "(configs with the same file name go to the same directory: rename one)");
     }
 }
-
-bool is_empty_directory(const std::filesystem::path& dir) {
-    return std::filesystem::is_directory(dir) && std::filesystem::is_empty(dir);
-}
-
-// Refuses a directory that holds anything unless --overwrite.
-void check_output_directory(const std::filesystem::path& dir, bool overwrite) {
-    std::error_code ec;
-    if (!std::filesystem::exists(dir, ec)) return;
-    if (!std::filesystem::is_directory(dir, ec))
-        throw FileError(dir.string(), "exists and is not a directory");
-    if (is_empty_directory(dir) || overwrite) return;
-    // Without a checkpoint there is nothing --resume could continue.
-    const bool resumable = std::filesystem::exists(dir / kCheckpointFile, ec);
-    throw InvalidParameter(
-        "--out", dir.string(), "a new or empty directory",
-        resumable ? "it exists and is not empty: choose another --out, add --overwrite to "
-                    "replace its run files, or continue it with rodsea run --resume " +
-                        dir.string()
-                  : "it exists and is not empty, and has no checkpoint to resume (a run stopped "
-                    "before its first checkpoint?): choose another --out, or add --overwrite to "
-                    "start again there");
-}
-
-// Creates the directory; true when it did not exist.
-bool create_output_directory(const std::filesystem::path& dir) {
-    std::error_code ec;
-    const bool existed = std::filesystem::exists(dir, ec);
-    std::filesystem::create_directories(dir, ec);
-    if (ec) throw FileError(dir.string(), "cannot create the output directory: " + ec.message());
-    return !existed;
-}
-
-// --overwrite removes only the files a run writes and the analysis of them (rodsea analyze's
-// RUN_DIR/analysis/, which would otherwise describe the old run); anything else stays.
-void remove_run_files(const std::filesystem::path& dir) {
-    std::error_code ec;
-    for (const char* name :
-         {kConfigFile, kTrajectoryFile, kSeriesFile, kCheckpointFile, kProgressFile})
-        std::filesystem::remove(dir / name, ec);
-    std::filesystem::remove_all(dir / "analysis", ec);
-}
-
-// A start that fails before its first checkpoint (the build runs out of memory, a signal during
-// the build, a full disk at the first frame) leaves nothing to resume: a directory it created
-// goes with it.
-class RemoveUnlessStarted {
-  public:
-    RemoveUnlessStarted(std::filesystem::path dir, bool armed)
-        : dir_(std::move(dir)), armed_(armed) {}
-    RemoveUnlessStarted(const RemoveUnlessStarted&) = delete;
-    RemoveUnlessStarted& operator=(const RemoveUnlessStarted&) = delete;
-    ~RemoveUnlessStarted() {
-        std::error_code ignored;
-        if (armed_) std::filesystem::remove_all(dir_, ignored);
-    }
-    void started() { armed_ = false; }
-
-  private:
-    std::filesystem::path dir_;
-    bool armed_;
-};
 
 // Steps the ensemble until every session's run has ended, each as its session decides.
 // `codes[i]` receives session i's exit code. The progress follows the run with the most steps
@@ -300,22 +240,6 @@ class EnsembleLoop {
     std::uint64_t steps_per_run_ = 1;
 };
 
-// Everything about a checkpoint is checked against its plan before any file is touched.
-void check_checkpoint(const Checkpoint& c, const RunPlan& plan, const std::filesystem::path& path) {
-    std::uint64_t expected = 0;
-    for (long long n : plan.counts)
-        expected += static_cast<std::uint64_t>(n);
-    if (c.bodies.size() != expected)
-        throw FileError(path.string(), "holds " + std::to_string(c.bodies.size()) +
-                                           " bodies but its config asks for " +
-                                           std::to_string(expected));
-    const std::string interval = SeriesRecorder(plan).interval_problem(c.interval_accumulators);
-    if (!interval.empty())
-        throw FileError(
-            path.string(),
-            "damaged: dataset interval_accumulators (the time series' open interval): " + interval);
-}
-
 // The first line where two config texts differ, as "`a` here, `b` there".
 std::string first_difference(const std::string& here, const std::string& there) {
     std::istringstream a(here), b(there);
@@ -363,68 +287,27 @@ void check_belongs_here(const std::filesystem::path& dir, const Checkpoint& c,
     check_config(trajectory.string() + ":/parameters/rodsea/config",
                  read_stored_config(trajectory));
     if (std::filesystem::exists(config)) check_config(config, read_text_file(config));
+    // A continuation's file holds the run's frames from its first_frame on.
     const TrajectoryReader reader(trajectory);
-    if (reader.frames() < c.frames_written)
-        throw FileError(trajectory.string(), "holds " + std::to_string(reader.frames()) +
-                                                 " frames but the checkpoint " + "counts " +
-                                                 std::to_string(c.frames_written) +
-                                                 " (the file was replaced or damaged)");
-    if (c.frames_written > 0) {
+    const std::uint64_t first = read_first_frame(trajectory);
+    if (first > c.frames_written || reader.frames() < c.frames_written - first)
+        throw FileError(trajectory.string(),
+                        "holds frames " + std::to_string(first) + " to " +
+                            std::to_string(first + reader.frames()) +
+                            " (exclusive) of its run but the checkpoint counts " +
+                            std::to_string(c.frames_written) +
+                            " (the file was replaced or damaged)");
+    if (c.frames_written > first) {
         const std::uint64_t k = c.frames_written - 1;
         const std::uint64_t expected = std::min(k * plan.steps_per_output(), plan.total_steps());
-        const std::int64_t stored = reader.steps()[k];
+        const std::int64_t stored = reader.steps()[k - first];
         if (stored != static_cast<std::int64_t>(expected))
             throw FileError(trajectory.string(),
                             "frame " + std::to_string(k) + " is at step " + std::to_string(stored) +
                                 " where the checkpoint's config puts it at step " +
                                 std::to_string(expected));
     }
-    const double time = static_cast<double>(c.step) * plan.engine.dt;
-    std::optional<StateProblem> problem =
-        find_state_problem(plan.engine, c.bodies, time, StateOrigin::resumed);
-    if (!problem) problem = find_gross_overlap(plan.engine, c.bodies);
-    if (problem) {
-        const std::string dataset = problem->field.substr(0, problem->field.find('.'));
-        throw FileError(checkpoint.string(),
-                        "impossible state: dataset " + dataset + ", body " +
-                            std::to_string(problem->body) + " at step " + std::to_string(c.step) +
-                            ": " + problem->field + " " + problem->value +
-                            "; allowed: " + problem->allowed +
-                            (problem->detail.empty() ? "" : " (" + problem->detail + ")"));
-    }
-}
-
-// The plan of a run given a new length (--duration, --steady-samples), checked against what the
-// run has done.
-
-// The plan of a run given a new length (--duration, --steady-samples), checked against what the
-// run has done.
-RunPlan extended_plan(const Checkpoint& c, const RunOptions& options,
-                      const std::filesystem::path& path) {
-    RunPlan plan = with_run_length(c.config_toml, path.string() + " [config]", options.duration,
-                                   options.steady_samples);
-    check_steady_series(plan);
-    if (plan.total_steps() < c.step)
-        throw InvalidParameter("--duration", format_number(plan.control.duration) + " s",
-                               "at least the " +
-                                   format_number(static_cast<double>(c.step) * plan.engine.dt) +
-                                   " s already simulated");
-    return plan;
-}
-
-// Checked before anything is written: that the checkpoint counts the frames its (possibly
-// extended) plan has written by its step.
-void check_frames_counted(const Checkpoint& c, const RunPlan& plan, bool extending,
-                          const std::filesystem::path& path) {
-    const std::uint64_t due = frames_due(plan, c.step);
-    // An extension of a complete run that ended off the output grid drops that last frame.
-    const bool extra_last_frame = extending && c.complete && c.frames_written == due + 1;
-    if (c.step > plan.total_steps() ||
-        (c.frames_written != due && c.frames_written + 1 != due && !extra_last_frame))
-        throw FileError(path.string(), "counts " + std::to_string(c.frames_written) +
-                                           " frames at step " + std::to_string(c.step) +
-                                           ", where the run writes " + std::to_string(due) +
-                                           ": not a checkpoint of this run's config");
+    check_checkpoint_state(c, plan, checkpoint);
 }
 
 // Makes the checkpoint and config.toml those of the extended run. A complete run that ended off
@@ -450,7 +333,8 @@ struct ResumedRun {
     Checkpoint checkpoint;
     RunPlan plan;
     bool extending = false;
-    bool complete = false;  // nothing to do
+    bool complete = false;          // nothing to do
+    std::uint64_t first_frame = 0;  // of the run, in trajectory.h5 (a continuation's is not 0)
 };
 
 ResumedRun read_run(const std::filesystem::path& dir, const RunOptions& options) {
@@ -470,9 +354,13 @@ ResumedRun read_run(const std::filesystem::path& dir, const RunOptions& options)
     check_checkpoint(c, stored, checkpoint_path);
     check_belongs_here(dir, c, stored);
     run.extending = options.duration || options.steady_samples;
-    run.plan = run.extending ? extended_plan(c, options, checkpoint_path) : std::move(stored);
+    run.plan = run.extending
+                   ? extended_plan(c, options.duration, options.steady_samples, checkpoint_path)
+                   : std::move(stored);
     run.complete = c.complete && (!run.extending || run.plan.total_steps() == c.step);
     if (!run.complete) check_frames_counted(c, run.plan, run.extending, checkpoint_path);
+    run.first_frame = read_first_frame(dir / kTrajectoryFile);
+    if (run.first_frame > 0 && !run.complete) refuse_steady_stop(run.plan, dir.string());
     return run;
 }
 
@@ -746,14 +634,15 @@ std::vector<int> resume_each(const std::vector<std::filesystem::path>& dirs,
         const Checkpoint& c = run.checkpoint;
         const std::filesystem::path& dir = run.dir;
         const SeriesRecorder columns(plan);
-        SeriesCsv csv = SeriesCsv::reopen(dir / kSeriesFile, c.frames_written);
+        const std::uint64_t frames_here = c.frames_written - run.first_frame;
+        SeriesCsv csv = SeriesCsv::reopen(dir / kSeriesFile, frames_here);
         std::optional<SteadyStop> history;
         if (plan.control.steady_samples > 0) {
             history.emplace(plan, columns.columns());
             history->restore(TrajectoryReader(dir / kTrajectoryFile), c.frames_written);
         }
-        TrajectoryFile trajectory =
-            TrajectoryFile::reopen(dir / kTrajectoryFile, c.frames_written, columns.columns());
+        TrajectoryFile trajectory = TrajectoryFile::reopen(dir / kTrajectoryFile, frames_here,
+                                                           plan.engine, columns.columns());
         // An extension interrupted before every file said its new length is finished here.
         if (read_stored_config(dir / kTrajectoryFile) != plan.config_toml)
             trajectory.replace_config(plan.config_toml);

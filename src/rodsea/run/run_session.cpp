@@ -48,7 +48,7 @@ RunSession::RunSession(RunPlan plan, TrajectoryFile trajectory, SeriesCsv csv,
       wall_before_(wall_before),
       polar_column_(polar_order_column(plan_.engine)),
       frame_reserve_bytes_(2 * estimate_resources(plan_).frame_bytes + kMetadataReserve),
-      frames_written_(trajectory_.frames()) {}
+      frames_written_(trajectory_.first_frame() + trajectory_.frames()) {}
 
 void RunSession::name_in_messages() {
     who_ = dir_.string() + ": ";
@@ -312,8 +312,12 @@ int RunSession::stop_after_write_failure(const FileError& e, double steps_per_se
 
 void RunSession::report_end(std::ostream& out) const {
     const RunTotals& t = ensemble_->totals(system_);
+    const std::uint64_t first = trajectory_.first_frame();
     out << who_ << "done: " << step_count() << " steps, t = " << ensemble_->time(system_) << " s, "
-        << frames_written_ << " frames in " << (dir_ / kTrajectoryFile).string()
+        << frames_written_ - first << " frames in " << (dir_ / kTrajectoryFile).string()
+        << (first > 0 ? " (the run's frames " + std::to_string(first) + "-" +
+                            std::to_string(frames_written_ - 1) + ": a continuation)"
+                      : "")
         << "\n      this session: largest overlap " << t.max_overlap_fraction * 100
         << " % of a radius, unresolved contacts " << t.unresolved << ", most sweeps "
         << t.max_sweeps << "; wall time of the whole run " << format_duration(wall_seconds())

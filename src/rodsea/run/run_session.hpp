@@ -114,7 +114,7 @@ class RunSession {
     // must never run out of space half-way (see TrajectoryFile::reserve).
     static constexpr std::uint64_t kMetadataReserve = 64 * 1024;
     std::uint64_t frame_reserve_bytes_;
-    std::uint64_t frames_written_;
+    std::uint64_t frames_written_;  // by the run, in this directory and before it (first_frame)
     double last_polar_order_ = 0.0;
     std::optional<std::vector<double>> open_interval_at_end_;  // before the off-grid last row
     // The state at the last frame written, for a checkpoint after a blow-up.

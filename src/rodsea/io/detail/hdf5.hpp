@@ -67,7 +67,10 @@ void write_attribute(const File& file, hid_t object, const std::string& name,
                      const std::vector<std::int32_t>& values);
 void write_attribute(const File& file, hid_t object, const std::string& name, double value);
 void write_attribute(const File& file, hid_t object, const std::string& name, std::int32_t value);
+void write_attribute(const File& file, hid_t object, const std::string& name, std::int64_t value);
 std::string read_string_attribute(const File& file, hid_t object, const std::string& name);
+// A scalar integer attribute of any integer type that fits; FileError otherwise.
+std::int64_t read_int64_attribute(const File& file, hid_t object, const std::string& name);
 
 // Fixed-size datasets, written once. `dims` multiply to data.size().
 void write_dataset(const File& file, hid_t parent, const std::string& name,
