@@ -14,6 +14,7 @@
 #include "rodsea/config/config_file.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
 #include "rodsea/run/run_driver.hpp"
+#include "rodsea/run/run_lock.hpp"
 #include "scratch_dir.hpp"
 
 namespace rodsea {
@@ -82,6 +83,24 @@ TEST_F(AnalyzeCli, SteadyPolarOrderIsTheMeanOfTheRunsOwnSeries) {
     // they agree to float rounding (1e-6 relative in each angle).
     ASSERT_EQ(a.results[0].scalars[0].name, "P_polar");
     EXPECT_NEAR(a.results[0].scalars[0].estimate.mean, mean, 1e-5);
+}
+
+// A run that a process still writes (its lock held, as `rodsea run` holds it) is analysed as
+// far as it has gone, and the analysis says so, with where progress.txt puts the run; once no
+// process holds it, nothing is said.
+TEST_F(AnalyzeCli, ARunStillGoingIsAnalysedWithANoteThatSaysSo) {
+    AnalyzeRequest request;
+    request.observables = {"order"};
+    {
+        const RunDirectoryLock writer(mixture());
+        const PreparedRun run = prepare_run(mixture(), request);
+        EXPECT_NE(run.still_running.find("still going (t = 0.04 of 0.04 s)"), std::string::npos)
+            << run.still_running;
+        std::ostringstream log;
+        analyze_run(run, log, false);
+        EXPECT_NE(log.str().find("NOTE: the run is still going"), std::string::npos) << log.str();
+    }
+    EXPECT_EQ(prepare_run(mixture(), request).still_running, "");
 }
 
 // The column `name` of the table `table` of the observable `observable`, one value per row.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <ostream>
 #include <sstream>
 
@@ -16,6 +17,8 @@
 #include "rodsea/io/trajectory_file.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
 #include "rodsea/number_text.hpp"
+#include "rodsea/run/progress_file.hpp"
+#include "rodsea/run/run_lock.hpp"
 
 namespace rodsea {
 
@@ -34,6 +37,18 @@ std::vector<NamedSeries> recorded_order_series(const TrajectoryReader& reader,
         series.back().values.resize(frames);  // series() checked that it has every frame
     }
     return series;
+}
+
+// What a run still going says (its lock held; progress.txt for where it is), or "" for a run
+// that no process writes.
+std::string still_running(const fs::path& run_dir, double last_time) {
+    if (!run_directory_in_use(run_dir)) return "";
+    std::string where;
+    if (const std::optional<RunProgress> p = read_progress_file(run_dir))
+        where = " (t = " + format_number(p->time) + " of " + format_number(p->duration) + " s)";
+    return "the run is still going" + where +
+           ": this analysis covers its frames to t = " + format_number(last_time) +
+           " s; analyse it again once its progress.txt says state = done";
 }
 
 }  // namespace
@@ -57,6 +72,7 @@ PreparedRun prepare_run(const fs::path& run, const AnalyzeRequest& request) {
                             format_number(p.plan.control.output_interval) +
                             " s output grid, so it is not equally spaced with the others");
     p.times.resize(frames);
+    p.still_running = still_running(p.run_dir, p.times.back());
     p.setup.frame_interval = static_cast<double>(p.plan.steps_per_output()) * p.plan.engine.dt;
     for (std::size_t k = 1; k < frames; ++k)
         // Times are multiples of the output step: anything beyond rounding is not a rodsea run.
@@ -154,6 +170,7 @@ RunAnalysis analyze_run(const PreparedRun& run, std::ostream& log, bool quiet) {
         log << "\n";
         for (const std::string& s : run.skipped)
             log << "  skipped " << s << "\n";
+        if (!run.still_running.empty()) log << "  NOTE: " << run.still_running << "\n";
     }
     std::vector<std::unique_ptr<Observable>> observables;
     bool any_transient = false;

@@ -38,6 +38,9 @@ struct PreparedRun {
     SteadyWindow window;
     std::vector<double> times;  // s, every frame
     std::vector<std::string> observables, skipped;
+    // Non-empty while a rodsea process still writes the run (its directory's lock is held):
+    // where it stands, so that nobody takes an analysis of part of a run for the whole.
+    std::string still_running;
     // What the analysis depends on: the trajectory (its run id, frames and last step), the
     // observables, the window and every option, and rodsea's version. Equal keys give equal
     // analyses; empty for a trajectory without a run id (written before rodsea kept one).
