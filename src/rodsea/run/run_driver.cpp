@@ -18,7 +18,6 @@
 #include "rodsea/engine/backend_factory.hpp"
 #include "rodsea/engine/ensemble.hpp"
 #include "rodsea/engine/simulation.hpp"
-#include "rodsea/engine/state_check.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
 #include "rodsea/io/checkpoint.hpp"
@@ -290,13 +289,15 @@ void check_belongs_here(const std::filesystem::path& dir, const Checkpoint& c,
     // A continuation's file holds the run's frames from its first_frame on.
     const TrajectoryReader reader(trajectory);
     const std::uint64_t first = read_first_frame(trajectory);
-    if (first > c.frames_written || reader.frames() < c.frames_written - first)
-        throw FileError(trajectory.string(),
-                        "holds frames " + std::to_string(first) + " to " +
-                            std::to_string(first + reader.frames()) +
-                            " (exclusive) of its run but the checkpoint counts " +
-                            std::to_string(c.frames_written) +
-                            " (the file was replaced or damaged)");
+    if (first > c.frames_written || reader.frames() < c.frames_written - first) {
+        const std::string held = first == 0
+                                     ? std::to_string(reader.frames()) + " frames"
+                                     : "the run's frames " + std::to_string(first) + " to " +
+                                           std::to_string(first + reader.frames()) + " (exclusive)";
+        throw FileError(trajectory.string(), "holds " + held + " but the checkpoint counts " +
+                                                 std::to_string(c.frames_written) +
+                                                 " (the file was replaced or damaged)");
+    }
     if (c.frames_written > first) {
         const std::uint64_t k = c.frames_written - 1;
         const std::uint64_t expected = std::min(k * plan.steps_per_output(), plan.total_steps());
