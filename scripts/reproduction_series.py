@@ -2,6 +2,7 @@
 """Time series of a finished run, binned, small enough to commit beside a campaign's table.
 
     scripts/reproduction_series.py RUN_DIR... --out DIR [--bin SECONDS]
+    scripts/reproduction_series.py RUN_DIR --continues SERIES_CSV --out DIR [--bin SECONDS]
 
 Reads each run's analysis (RUN_DIR/analysis, written by `rodsea analyze` or `campaign collect`)
 and writes DIR/<point>.series.csv: per time bin (default 1 s) the means of P of the polar rods,
@@ -11,6 +12,11 @@ frames in the bin and whether the bin lies in the steady window (nan for what th
 have: Σ without a medium, bands where the analysis did not compute them). <point> is the run's
 campaign point (the name of the directory above seed<k>), or the run directory's name; a
 campaign's further replicates (seed<k>, k > 1) write DIR/<point>.seed<k>.series.csv.
+With --continues, RUN_DIR is a continuation (`rodsea run --continue`: its trajectory holds the
+run's frames from a checkpoint on) and SERIES_CSV the table of the run's earlier frames, written
+by this script with the same --bin: the two are joined into DIR/<SERIES_CSV's name>, the earlier
+table's bins before the continuation's first frame, then the continuation's; a bin that both hold
+in part gets the frame-weighted mean of the two, and steady is the continuation's analysis'.
 Units: time s; the rest are numbers (docs/analysis.md).
 """
 import argparse
@@ -78,11 +84,69 @@ def series(run, width):
     return rows
 
 
+HEADER = ["t_from", "t_to", "frames", "steady"] + [name for _, _, name in COLUMNS]
+
+
+def read_series(path, width):
+    """The rows of a series table this script wrote, checked against --bin."""
+    if not os.path.isfile(path):
+        fail(f"--continues {path}: missing")
+    with open(path, encoding="utf-8") as f:
+        f.readline()
+        header = f.readline().strip().split(",")
+        if header != HEADER:
+            fail(f"--continues {path}: not a series table of this script (columns {header})")
+        rows = [[float(v) for v in line.split(",")] for line in f if line.strip()]
+    for row in rows:
+        off_grid = abs(row[0] / width - round(row[0] / width)) > 1e-6
+        if abs(row[1] - row[0] - width) > 1e-9 * width or off_grid:
+            fail(f"--continues {path}: its bin {row[0]:g}-{row[1]:g} s is not on the --bin "
+                 f"{width:g} s grid")
+    return rows
+
+
+def join(earlier, later):
+    """`earlier`'s rows before `later`'s first bin, a shared bin merged, then `later`'s."""
+    if not later:
+        return earlier
+    start = later[0][0]
+    kept = [row for row in earlier if row[0] < start - 1e-9]
+    shared = [row for row in earlier if abs(row[0] - start) <= 1e-9]
+    if any(row[0] > start + 1e-9 for row in earlier):
+        fail(f"the earlier table goes past {start:g} s, where the continuation starts: is it "
+             "the table of the run this directory continues?")
+    first = list(later[0])
+    if shared:
+        old = shared[0]
+        n_old, n_new = old[2], first[2]
+        for c in range(4, len(HEADER)):
+            a, b = old[c], first[c]
+            if np.isnan(a) or np.isnan(b):
+                first[c] = b if np.isnan(a) else a
+            else:
+                first[c] = (n_old * a + n_new * b) / (n_old + n_new)
+        first[2] = int(n_old + n_new)
+    return kept + [first] + later[1:]
+
+
+def write_series(path, rows, comment):
+    with open(path + ".tmp", "w", encoding="utf-8") as f:
+        f.write(comment + "\n")
+        f.write(",".join(HEADER) + "\n")
+        for row in rows:
+            f.write(",".join(str(int(v)) if c in (2, 3) else f"{v:.6g}" for c, v in enumerate(row))
+                    + "\n")
+    os.replace(path + ".tmp", path)
+    print(path)
+
+
 def main(argv):
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("runs", nargs="+")
     p.add_argument("--out", required=True)
     p.add_argument("--bin", type=float, default=1.0, help="bin width, s (default 1)")
+    p.add_argument("--continues", metavar="SERIES_CSV",
+                   help="the series table of the run's earlier frames, which RUN_DIR continues")
     a = p.parse_args(argv)
     if not a.bin > 0:
         fail(f"--bin {a.bin}: must be > 0 s")
@@ -91,21 +155,22 @@ def main(argv):
         if names.count(name) > 1:
             fail(f"{name}.series.csv would be written by several runs: give them one at a time "
                  "with different --out")
+    if a.continues and len(a.runs) != 1:
+        fail("--continues joins one continuation to its run's earlier table: give one RUN_DIR")
+    earlier = read_series(a.continues, a.bin) if a.continues else None
     os.makedirs(a.out, exist_ok=True)
     for run in a.runs:
         rows = series(run, a.bin)
-        path = os.path.join(a.out, point_name(run) + ".series.csv")
-        header = ["t_from", "t_to", "frames", "steady"] + [name for _, _, name in COLUMNS]
-        with open(path + ".tmp", "w", encoding="utf-8") as f:
-            f.write(f"# {os.path.normpath(run)} binned by {a.bin:g} s: means per bin; units: "
-                    "t_from [s] t_to [s], the rest [1]; steady = 1 when the whole bin lies in "
-                    "the analysis' steady window\n")
-            f.write(",".join(header) + "\n")
-            for row in rows:
-                f.write(",".join(f"{v:.6g}" if isinstance(v, float) else str(v) for v in row)
-                        + "\n")
-        os.replace(path + ".tmp", path)
-        print(path)
+        comment = (f"# {os.path.normpath(run)} binned by {a.bin:g} s: means per bin; units: "
+                   "t_from [s] t_to [s], the rest [1]; steady = 1 when the whole bin lies in "
+                   "the analysis' steady window")
+        if earlier is None:
+            write_series(os.path.join(a.out, point_name(run) + ".series.csv"), rows, comment)
+            continue
+        comment += (f"; before {rows[0][0]:g} s from {os.path.normpath(a.continues)}, the run's "
+                    "earlier frames, which this directory continues")
+        write_series(os.path.join(a.out, os.path.basename(a.continues)), join(earlier, rows),
+                     comment)
 
 
 if __name__ == "__main__":

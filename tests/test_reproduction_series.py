@@ -1,0 +1,74 @@
+"""scripts/reproduction_series.py --continues on a run cut in two: a run's 100 frames (0-9.9 s,
+P and S known functions of time, steady from 5 s) analysed whole, and the same frames split at
+4.4 s into the run's first directory and its continuation (`rodsea run --continue`). The first
+part's table joined with the continuation must be the whole run's table: the same bins, frame
+counts, steady flags, and means to the tables' 6 digits (the bin that both parts hold in part,
+4-5 s, is the frame-weighted mean of the two partial means, which is the mean over its frames).
+A table that runs past the continuation's start is refused.
+
+    /usr/bin/python3 tests/test_reproduction_series.py SOURCE_DIR SCRATCH_DIR
+Exit 77 (skipped) without numpy.
+"""
+import os
+import shutil
+import subprocess
+import sys
+
+try:
+    import numpy as np
+except ImportError as e:
+    print(f"skipped: {e} (install python3-numpy)")
+    sys.exit(77)
+
+source, scratch = sys.argv[1], sys.argv[2]
+script = os.path.join(source, "scripts", "reproduction_series.py")
+shutil.rmtree(scratch, ignore_errors=True)
+TIMES = np.round(np.arange(100) * 0.1, 10)
+
+
+def write_run(run, frames):
+    """A run directory whose analysis holds `frames` of the run."""
+    os.makedirs(os.path.join(run, "analysis"))
+    with open(os.path.join(run, "analysis", "order_parameters.csv"), "w") as f:
+        f.write("# order_parameters; units: time [s] steady [1] P_polar [1] S_medium [1]\n")
+        f.write("time,steady,P_polar,S_medium\n")
+        for t in TIMES[frames]:
+            f.write(f"{t!r},{int(t >= 5.0)},{0.5 + 0.4 * np.sin(t)!r},{0.1 + 0.01 * t * t!r}\n")
+
+
+def run_script(*args):
+    return subprocess.run(["/usr/bin/python3", script, *args], capture_output=True, text=True)
+
+
+def table(path):
+    return np.genfromtxt(path, delimiter=",", skip_header=1, names=True)
+
+
+whole, first, rest = (os.path.join(scratch, n) for n in ("whole", "first", "rest"))
+write_run(whole, slice(0, 100))
+write_run(first, slice(0, 44))
+write_run(rest, slice(44, 100))
+for run, out in ((whole, "w"), (first, "p")):
+    r = run_script(run, "--out", os.path.join(scratch, out))
+    assert r.returncode == 0, r.stderr
+r = run_script(rest, "--continues", os.path.join(scratch, "p", "first.series.csv"), "--out",
+               os.path.join(scratch, "joined"))
+assert r.returncode == 0, r.stderr
+expected = table(os.path.join(scratch, "w", "whole.series.csv"))
+joined = table(os.path.join(scratch, "joined", "first.series.csv"))
+assert len(joined) == len(expected) == 10, (len(joined), len(expected))
+for name in ("t_from", "t_to", "frames", "steady"):
+    assert np.array_equal(joined[name], expected[name]), (name, joined[name], expected[name])
+for name in ("P_polar", "S_medium"):
+    # 6 significant digits in each table, and the joined bin's mean computed from two of them.
+    assert np.allclose(joined[name], expected[name], rtol=2e-6, atol=0), (name, joined[name],
+                                                                         expected[name])
+for name in ("Sigma", "N_m"):
+    assert np.isnan(joined[name]).all(), name
+
+# The whole run's table is no earlier part of the continuation: refused, nothing written.
+r = run_script(rest, "--continues", os.path.join(scratch, "w", "whole.series.csv"), "--out",
+               os.path.join(scratch, "refused"))
+assert r.returncode == 2 and "goes past 4 s" in r.stderr, (r.returncode, r.stderr)
+assert not os.path.exists(os.path.join(scratch, "refused", "whole.series.csv"))
+print("reproduction_series --continues: the joined table is the whole run's (10 bins)")
