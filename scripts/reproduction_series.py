@@ -17,6 +17,9 @@ run's frames from a checkpoint on) and SERIES_CSV the table of the run's earlier
 by this script with the same --bin: the two are joined into DIR/<SERIES_CSV's name>, the earlier
 table's bins before the continuation's first frame, then the continuation's; a bin that both hold
 in part gets the frame-weighted mean of the two, and steady is the continuation's analysis'.
+Every frame must be in exactly one of them (the earlier table made from the first directory's
+frames up to the checkpoint, as a run stopped by a signal leaves them): frames in both, or in
+neither, are refused.
 Units: time s; the rest are numbers (docs/analysis.md).
 """
 import argparse
@@ -105,20 +108,33 @@ def read_series(path, width):
     return rows
 
 
-def join(earlier, later):
-    """`earlier`'s rows before `later`'s first bin, a shared bin merged, then `later`'s."""
-    if not later:
-        return earlier
+def frames_per_bin(run, width):
+    """How many frames a full bin holds: the bin width over the run's output interval."""
+    time = read(os.path.join(run, "analysis", "order_parameters.csv"))["time"]
+    if len(time) < 2:
+        fail(f"{run}: --continues needs at least two frames to know the output interval")
+    return int(round(width / float(np.median(np.diff(time)))))
+
+
+def join(earlier, later, full):
+    """`earlier`'s rows before `later`'s first bin, a shared bin merged, then `later`'s. Each
+    frame of the run must be in exactly one of the two: `full` frames make a whole bin."""
     start = later[0][0]
+    if any(row[0] > start + 1e-9 for row in earlier):
+        fail(f"the earlier table goes past {start:g} s, where the continuation's first bin "
+             "starts: is it the table of the run this directory continues?")
     kept = [row for row in earlier if row[0] < start - 1e-9]
     shared = [row for row in earlier if abs(row[0] - start) <= 1e-9]
-    if any(row[0] > start + 1e-9 for row in earlier):
-        fail(f"the earlier table goes past {start:g} s, where the continuation starts: is it "
-             "the table of the run this directory continues?")
     first = list(later[0])
     if shared:
         old = shared[0]
         n_old, n_new = old[2], first[2]
+        if n_old + n_new != full:
+            fail(f"the bin {start:g}-{first[1]:g} s holds {n_old:g} frames in the earlier table "
+                 f"and {n_new:g} in the continuation, where it has {full}: "
+                 + ("the two share frames (was the earlier table made from frames past the "
+                    "checkpoint?)" if n_old + n_new > full else "frames are missing between "
+                    "them (the earlier table stops before the checkpoint?)"))
         for c in range(4, len(HEADER)):
             a, b = old[c], first[c]
             if np.isnan(a) or np.isnan(b):
@@ -126,6 +142,9 @@ def join(earlier, later):
             else:
                 first[c] = (n_old * a + n_new * b) / (n_old + n_new)
         first[2] = int(n_old + n_new)
+    elif not kept or abs(kept[-1][1] - start) > 1e-9 or kept[-1][2] != full or first[2] != full:
+        fail(f"frames are missing between the earlier table (to {kept[-1][1] if kept else 0:g} "
+             f"s) and the continuation (from {start:g} s)")
     return kept + [first] + later[1:]
 
 
@@ -169,8 +188,8 @@ def main(argv):
             continue
         comment += (f"; before {rows[0][0]:g} s from {os.path.normpath(a.continues)}, the run's "
                     "earlier frames, which this directory continues")
-        write_series(os.path.join(a.out, os.path.basename(a.continues)), join(earlier, rows),
-                     comment)
+        joined = join(earlier, rows, frames_per_bin(run, a.bin))
+        write_series(os.path.join(a.out, os.path.basename(a.continues)), joined, comment)
 
 
 if __name__ == "__main__":

@@ -4,7 +4,8 @@ P and S known functions of time, steady from 5 s) analysed whole, and the same f
 part's table joined with the continuation must be the whole run's table: the same bins, frame
 counts, steady flags, and means to the tables' 6 digits (the bin that both parts hold in part,
 4-5 s, is the frame-weighted mean of the two partial means, which is the mean over its frames).
-A table that runs past the continuation's start is refused.
+A table that runs past the continuation's start, shares frames with it or stops short of it is
+refused.
 
     /usr/bin/python3 tests/test_reproduction_series.py SOURCE_DIR SCRATCH_DIR
 Exit 77 (skipped) without numpy.
@@ -65,6 +66,17 @@ for name in ("P_polar", "S_medium"):
                                                                          expected[name])
 for name in ("Sigma", "N_m"):
     assert np.isnan(joined[name]).all(), name
+
+# An earlier table that shares frames with the continuation (to 4.6 s), or stops short of it (to
+# 4.1 s), would count frames twice or leave a hole in the shared bin: refused.
+for frames, name, why in ((slice(0, 47), "overlap", "share frames"),
+                          (slice(0, 42), "gap", "frames are missing")):
+    run = os.path.join(scratch, name)
+    write_run(run, frames)
+    assert run_script(run, "--out", os.path.join(scratch, name + "-table")).returncode == 0
+    table_path = os.path.join(scratch, name + "-table", name + ".series.csv")
+    r = run_script(rest, "--continues", table_path, "--out", os.path.join(scratch, name + "-joined"))
+    assert r.returncode == 2 and why in r.stderr, (name, r.returncode, r.stderr)
 
 # The whole run's table is no earlier part of the continuation: refused, nothing written.
 r = run_script(rest, "--continues", os.path.join(scratch, "w", "whole.series.csv"), "--out",

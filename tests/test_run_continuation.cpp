@@ -134,7 +134,8 @@ TEST(RunContinuation, AnInterruptedContinuationResumesAndContinuesAgain) {
 }
 
 // Refused before anything is written: a complete run without a longer --duration, a stop when
-// steady (it judges the whole series, which stays behind), an occupied --out, no checkpoint.
+// steady (it judges the whole series, which stays behind), the checkpoint's own directory or an
+// occupied one as --out, no checkpoint.
 TEST(RunContinuation, RefusalsComeBeforeAnyFileIsWritten) {
     const ScratchDir dir("run-continue-bad");
     const auto first = dir.path() / "first", out = dir.path() / "out";
@@ -156,6 +157,17 @@ TEST(RunContinuation, RefusalsComeBeforeAnyFileIsWritten) {
     EXPECT_FALSE(std::filesystem::exists(out));
     refused_as("--duration", [&] { continue_quietly(checkpoint, out, 0.005); });
     EXPECT_FALSE(std::filesystem::exists(out));
+
+    // Into its own directory, even with --overwrite, it would delete the frames it continues.
+    refused_as("--out", [&] {
+        RunOptions options;
+        options.out_dir = first;
+        options.overwrite = true;
+        options.duration = 0.02;
+        std::ostringstream log, err;
+        continue_run(checkpoint, options, log, err);
+    });
+    EXPECT_EQ(TrajectoryReader(first / kTrajectoryFile).frames(), 6u);  // 0.01 s / 2 ms + 1
 
     std::filesystem::create_directories(out);
     std::ofstream(out / "notes.txt") << "mine\n";

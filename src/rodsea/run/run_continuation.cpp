@@ -2,6 +2,7 @@
 
 #include <ostream>
 
+#include "rodsea/cli/stop_signal.hpp"
 #include "rodsea/config/config_file.hpp"
 #include "rodsea/engine/backend_factory.hpp"
 #include "rodsea/error.hpp"
@@ -25,6 +26,14 @@ std::filesystem::path checkpoint_file(const std::filesystem::path& given) {
     return std::filesystem::is_directory(given, ec) ? given / kCheckpointFile : given;
 }
 
+bool same_directory(const std::filesystem::path& a, const std::filesystem::path& b) {
+    std::error_code ec;
+    const std::filesystem::path ca = std::filesystem::weakly_canonical(a, ec);
+    if (ec) return a.lexically_normal() == b.lexically_normal();
+    const std::filesystem::path cb = std::filesystem::weakly_canonical(b, ec);
+    return ec ? a.lexically_normal() == b.lexically_normal() : ca == cb;
+}
+
 std::string seconds(std::uint64_t step, double dt) {
     return format_number(static_cast<double>(step) * dt) + " s";
 }
@@ -33,9 +42,17 @@ std::string seconds(std::uint64_t step, double dt) {
 
 int continue_run(const std::filesystem::path& given, const RunOptions& options, std::ostream& out,
                  std::ostream& err, bool progress_is_terminal) {
+    // A signal while the directory is being set up waits for it: the run then stops at once,
+    // with the checkpoint written here.
+    const StopSignalGuard signals;
     const std::filesystem::path path = checkpoint_file(given);
     const std::filesystem::path& dir = options.out_dir;
     if (!std::filesystem::exists(path)) throw FileError(path.string(), "no such checkpoint");
+    // --overwrite there would delete the frames the checkpoint continues.
+    if (same_directory(dir, path.parent_path().empty() ? "." : path.parent_path()))
+        throw InvalidParameter(
+            "--out", dir.string(), "a directory other than the checkpoint's",
+            "the run goes on in its own directory with rodsea run --resume " + dir.string());
     Checkpoint c = read_checkpoint(path);
     if (c.run_id.empty())
         throw FileError(path.string(),
@@ -63,7 +80,7 @@ int continue_run(const std::filesystem::path& given, const RunOptions& options, 
 
     const bool created = create_output_directory(dir);
     RemoveUnlessStarted cleanup(dir, created);
-    {
+    try {
         const RunDirectoryLock lock(dir);
         if (options.overwrite) remove_run_files(dir);
         // As an extension in place (run_driver.cpp: commit_extension): a complete run that ended
@@ -83,6 +100,11 @@ int continue_run(const std::filesystem::path& given, const RunOptions& options, 
         sync_file(dir / kTrajectoryFile);
         sync_file(dir / kSeriesFile);
         write_checkpoint(dir / kCheckpointFile, c);
+    } catch (...) {
+        // Without its checkpoint the directory could only be started again from t = 0, as a
+        // new run: the files written so far go (the directory too, when this made it).
+        if (!created) remove_run_files(dir);
+        throw;
     }
     cleanup.started();
     if (!options.quiet)

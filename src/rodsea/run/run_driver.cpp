@@ -606,9 +606,9 @@ std::vector<int> resume_each(const std::vector<std::filesystem::path>& dirs,
         if (!options.quiet) {
             out << "rodsea run --resume " << run.dir.string() << ": from step " << c.step << " of "
                 << plan.total_steps() << " (t = " << static_cast<double>(c.step) * plan.engine.dt
-                << " s of " << plan.control.duration << " s), " << c.frames_written
-                << " frames kept" << (run.extending ? "; extended, config.toml updated" : "")
-                << std::endl;
+                << " s of " << plan.control.duration << " s), "
+                << c.frames_written - run.first_frame << " frames kept"
+                << (run.extending ? "; extended, config.toml updated" : "") << std::endl;
             if (stepping.backend != plan.control.backend)
                 out << "backend: " << to_string(stepping.backend)
                     << " for this session (the run's config says "

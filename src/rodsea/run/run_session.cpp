@@ -296,7 +296,7 @@ int RunSession::stop_after_write_failure(const FileError& e, double steps_per_se
         << " (t = " << ensemble_->time(system_) << " s): " << e.what() << "\n";
     try {
         checkpoint(false);
-        err << "  checkpoint written (" << frames_written_
+        err << "  checkpoint written (" << frames_written_ - trajectory_.first_frame()
             << " complete frames are kept); make room (disk space, quota or file-size limit) and "
                "continue with: rodsea run --resume "
             << dir_.string() << "\n";
