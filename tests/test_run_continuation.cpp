@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "child_process.hpp"
+#include "rodsea/analyze/analyze_run.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/stored_run.hpp"
 #include "rodsea/run/run_continuation.hpp"
@@ -131,6 +132,57 @@ TEST(RunContinuation, AnInterruptedContinuationResumesAndContinuesAgain) {
     const std::string run_id = read_run_id(first / kTrajectoryFile);
     expect_continuation_of(continued, straight, first_frame, run_id);
     expect_continuation_of(again, straight, mid.frames_written, run_id);
+}
+
+// A run's first directory and its continuation, read together, are the run that never stopped:
+// every frame once, in order (the first directory's off-grid last frame, which the longer run
+// does not have, left out), and analysed as one they give its numbers to the last bit. Parts
+// with frames missing between them, or given twice, are refused; other runs are not joined.
+TEST(RunContinuation, ARunAndItsContinuationReadAndAnalyseAsTheWholeRun) {
+    const ScratchDir dir("run-continue-join");
+    const auto straight = dir.path() / "straight", first = dir.path() / "first",
+               continued = dir.path() / "continued", later = dir.path() / "later";
+    ASSERT_EQ(run_quietly(small_config(0.06, 0.004), straight), kExitOk);
+    ASSERT_EQ(run_quietly(small_config(0.021, 0.004), first), kExitOk);
+    ASSERT_EQ(continue_quietly(first, continued, 0.06), kExitOk);
+    ASSERT_EQ(continue_quietly(continued, later, 0.08), kExitOk);
+
+    const StoredRun whole = open_stored_run(straight);
+    const StoredRun joined = open_stored_run(std::vector<std::filesystem::path>{continued, first});
+    EXPECT_EQ(joined.run_dir, continued);
+    ASSERT_EQ(joined.parts.size(), 2u);
+    EXPECT_EQ(joined.parts.front(), first / kTrajectoryFile);
+    ASSERT_EQ(joined.frames(), whole.frames());  // 0.06 s / 4 ms + 1
+    EXPECT_EQ(joined.reader.steps(), whole.reader.steps());
+    EXPECT_EQ(joined.times(), whole.times());
+    for (std::size_t f = 0; f < whole.frames(); ++f)
+        EXPECT_TRUE(same_bits(joined.frame(f), whole.frame(f))) << "frame " << f;
+    EXPECT_EQ(joined.reader.series("polar_order_polar"), whole.reader.series("polar_order_polar"));
+
+    AnalyzeRequest request;
+    request.observables = {"order"};
+    request.from = 0.02;
+    std::ostringstream log;
+    const RunAnalysis a = analyze_run(
+        prepare_run(std::vector<std::filesystem::path>{first, continued}, request), log, true);
+    const RunAnalysis b = analyze_run(prepare_run(straight, request), log, true);
+    ASSERT_EQ(a.results.size(), b.results.size());
+    ASSERT_FALSE(a.results[0].scalars.empty());
+    for (std::size_t k = 0; k < a.results[0].scalars.size(); ++k) {
+        EXPECT_EQ(a.results[0].scalars[k].estimate.mean, b.results[0].scalars[k].estimate.mean);
+        EXPECT_EQ(a.results[0].scalars[k].estimate.error, b.results[0].scalars[k].estimate.error);
+    }
+
+    const auto groups = group_run_parts({first, straight, continued, later});
+    ASSERT_EQ(groups.size(), 2u);
+    EXPECT_EQ(groups[0], (std::vector<std::filesystem::path>{first, continued, later}));
+    EXPECT_EQ(groups[1], (std::vector<std::filesystem::path>{straight}));
+    EXPECT_THROW(open_stored_run(std::vector<std::filesystem::path>{first, later}), FileError);
+    EXPECT_THROW(open_stored_run(std::vector<std::filesystem::path>{first, continued, continued}),
+                 FileError);
+    EXPECT_THROW(open_stored_run(std::vector<std::filesystem::path>{first, straight}), FileError);
+    EXPECT_EQ(open_stored_run(std::vector<std::filesystem::path>{first, continued, later}).frames(),
+              21u);  // 0.08 s / 4 ms + 1
 }
 
 // Refused before anything is written: a complete run without a longer --duration, a stop when

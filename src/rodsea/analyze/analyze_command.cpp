@@ -11,6 +11,7 @@
 #include "rodsea/cli/arguments.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
+#include "rodsea/io/stored_run.hpp"
 
 namespace rodsea {
 
@@ -39,6 +40,9 @@ const CommandSpec& analyze_command_spec() {
         "analysis.h5: g(r,θ) and G(r,θ) maps with their bin edges; flock labels per frame\n"
         "summary.csv: one row: the run's parameters and every scalar (also for several runs: "
         "--table)\n"
+        "A run's first directory and its continuations (rodsea run --continue: the same run "
+        "id), given together, are one run: their frames are joined in order and its analysis "
+        "goes to the latest one's directory.\n"
         "Everything is checked for every run before any frame is read.",
         {{"--observables", "NAME,...",
           "comma-separated subset of: " + observable_names() +
@@ -126,10 +130,13 @@ int analyze_command(const std::vector<std::string>& args, std::ostream& out, std
     std::optional<std::filesystem::path> out_dir, table;
     if (const auto dir = words.value("--out")) out_dir = *dir;
     if (const auto file = words.value("--table")) table = *file;
-    const std::vector<std::filesystem::path> runs(words.positional.begin(), words.positional.end());
-    if (runs.empty())
+    const std::vector<std::filesystem::path> given(words.positional.begin(),
+                                                   words.positional.end());
+    if (given.empty())
         throw InvalidParameter("RUN_DIR", "none given",
                                "one or more run directories (see rodsea analyze --help)");
+    // A run's first directory and its continuations, given together, are analysed as one run.
+    const std::vector<std::vector<std::filesystem::path>> runs = group_run_parts(given);
     if (out_dir && runs.size() > 1)
         throw InvalidParameter("--out", out_dir->string(), "only with a single RUN_DIR",
                                "each of several runs writes into its own RUN_DIR/analysis");

@@ -54,11 +54,16 @@ std::string still_running(const fs::path& run_dir, double last_time) {
 }  // namespace
 
 PreparedRun prepare_run(const fs::path& run, const AnalyzeRequest& request) {
+    return prepare_run(std::vector<fs::path>{run}, request);
+}
+
+PreparedRun prepare_run(const std::vector<fs::path>& parts, const AnalyzeRequest& request) {
     PreparedRun p;
-    const StoredRun stored = open_stored_run(run);
+    const StoredRun stored = open_stored_run(parts);
     const TrajectoryReader& reader = stored.reader;
     p.run_dir = stored.run_dir;
     p.trajectory = stored.trajectory;
+    p.parts = stored.parts;
     p.plan = stored.plan;
     p.setup = analysis_setup(p.plan);
     p.setup.blocks = request.options.blocks;
@@ -130,8 +135,9 @@ PreparedRun prepare_run(const fs::path& run, const AnalyzeRequest& request) {
         // (A stream, not string +: GCC 12 warns falsely on the concatenation, -Werror=restrict.)
         std::ostringstream key;
         key << "rodsea " << RODSEA_VERSION << "|run " << run_id << "|frames " << frames
-            << "|last step " << reader.steps()[frames - 1] << "|window "
-            << (w.automatic ? std::string("automatic") : exact_number(w.from)) << "|observables";
+            << "|first step " << reader.steps()[0] << "|last step " << reader.steps()[frames - 1]
+            << "|window " << (w.automatic ? std::string("automatic") : exact_number(w.from))
+            << "|observables";
         for (const std::string& o : p.observables)
             key << " " << o;
         key << "|" << analysis_options_text(p.options);
@@ -149,7 +155,14 @@ RunAnalysis analyze_run(const PreparedRun& run, std::ostream& log, bool quiet) {
     if (!quiet) {
         log << "analyze " << run.run_dir.string() << ": " << frames << " frames, "
             << format_number(run.times.front()) << " to " << format_number(run.times.back())
-            << " s\n  steady window from " << format_number(run.window.from) << " s (frame "
+            << " s\n";
+        if (run.parts.size() > 1) {
+            log << "  one run in " << run.parts.size() << " directories, joined in order:";
+            for (const fs::path& part : run.parts)
+                log << " " << part.parent_path().string();
+            log << "\n";
+        }
+        log << "  steady window from " << format_number(run.window.from) << " s (frame "
             << run.window.first_frame << ", " << run.setup.steady_frames << " frames; ";
         if (run.window.automatic && !run.window.basis.empty()) {
             log << "automatic: the latest steady start of the order series, decided by "
@@ -180,7 +193,7 @@ RunAnalysis analyze_run(const PreparedRun& run, std::ostream& log, bool quiet) {
     }
     std::vector<double> seconds(observables.size(), 0.0);
     std::vector<std::size_t> computed(observables.size(), 0);
-    const StoredRun stored = open_stored_run(run.trajectory);
+    const StoredRun stored = open_stored_run(run.parts);
     const TrajectoryReader& reader = stored.reader;
     const std::size_t first = any_transient ? 0 : run.window.first_frame;
     std::size_t next_report = 1;

@@ -32,6 +32,7 @@ struct SteadyWindow {
 
 struct PreparedRun {
     std::filesystem::path run_dir, trajectory;
+    std::vector<std::filesystem::path> parts;  // every trajectory read, `trajectory` the last
     RunPlan plan;
     AnalysisSetup setup;
     AnalysisOptions options;  // resolved for this run
@@ -56,6 +57,10 @@ struct RunAnalysis {
 // Accepts a run directory or its trajectory.h5. Throws FileError (not a rodsea trajectory,
 // unreadable or truncated file) or InvalidParameter (window, observable, option).
 PreparedRun prepare_run(const std::filesystem::path& run, const AnalyzeRequest& request);
+// A run kept in several directories (its first and its continuations), analysed as one
+// (io/stored_run.hpp); its output goes to the latest part's directory.
+PreparedRun prepare_run(const std::vector<std::filesystem::path>& parts,
+                        const AnalyzeRequest& request);
 
 // Prints what it will do to `log`, then a progress line every 10 % of the frames (unless quiet).
 RunAnalysis analyze_run(const PreparedRun& run, std::ostream& log, bool quiet);

@@ -84,7 +84,89 @@ StoredRun open_stored_run(const fs::path& run) {
     const fs::path dir = fs::is_directory(run)              ? run
                          : trajectory.parent_path().empty() ? fs::path(".")
                                                             : trajectory.parent_path();
-    return StoredRun{dir, trajectory, std::move(plan), std::move(reader)};
+    return StoredRun{dir, trajectory, {trajectory}, std::move(plan), std::move(reader)};
+}
+
+StoredRun open_stored_run(const std::vector<fs::path>& given) {
+    if (given.size() == 1) return open_stored_run(given.front());
+    if (given.empty()) throw std::logic_error("open_stored_run: no parts");
+    struct Part {
+        fs::path trajectory;
+        std::uint64_t first_frame = 0;
+    };
+    std::vector<Part> parts;
+    std::string id;
+    for (const fs::path& run : given) {
+        const fs::path trajectory = trajectory_of(run);
+        const std::string its = read_run_id(trajectory);
+        if (its.empty() || (!id.empty() && its != id))
+            throw FileError(trajectory.string(),
+                            "is not a part of the run in " + given.front().string() + " (run id " +
+                                (its.empty() ? std::string("none") : its) +
+                                "): only a run's directories and its continuations read as one");
+        id = its;
+        parts.push_back({trajectory, read_first_frame(trajectory)});
+    }
+    std::sort(parts.begin(), parts.end(),
+              [](const Part& a, const Part& b) { return a.first_frame < b.first_frame; });
+    std::vector<StoredRun> stored;
+    for (const Part& part : parts)
+        stored.push_back(open_stored_run(part.trajectory));
+    // A run's parts differ at most in their length (a continuation given --duration).
+    const RunControl& last = stored.back().plan.control;
+    const auto normalised = [&](const StoredRun& r) {
+        return with_run_length(r.plan.config_toml, r.trajectory.string(), last.duration,
+                               last.steady_samples)
+            .config_toml;
+    };
+    const std::string config = normalised(stored.back());
+    std::vector<TrajectoryReader> readers;
+    std::vector<std::uint64_t> keep;
+    std::vector<fs::path> paths;
+    for (std::size_t k = 0; k < stored.size(); ++k) {
+        const std::string where = parts[k].trajectory.string();
+        if (normalised(stored[k]) != config)
+            throw FileError(where, "holds another config than " + parts.back().trajectory.string() +
+                                       " beyond the run's length: not a part of the same run");
+        std::uint64_t frames = stored[k].frames();
+        if (k + 1 < stored.size()) {
+            const std::uint64_t next = parts[k + 1].first_frame;
+            if (next == parts[k].first_frame)
+                throw FileError(where, "starts at the run's frame " + std::to_string(next) +
+                                           ", as " + parts[k + 1].trajectory.string() +
+                                           " does: give each part of the run once");
+            if (next > parts[k].first_frame + frames)
+                throw FileError(where, "ends at the run's frame " +
+                                           std::to_string(parts[k].first_frame + frames - 1) +
+                                           " and the next part, " +
+                                           parts[k + 1].trajectory.string() + ", starts at frame " +
+                                           std::to_string(next) +
+                                           ": the frames between are in none of the parts given");
+            frames = next - parts[k].first_frame;
+        }
+        keep.push_back(frames);
+        readers.push_back(std::move(stored[k].reader));
+        paths.push_back(parts[k].trajectory);
+    }
+    StoredRun& latest = stored.back();
+    return StoredRun{latest.run_dir, latest.trajectory, std::move(paths), std::move(latest.plan),
+                     TrajectoryReader::joined(std::move(readers), keep)};
+}
+
+std::vector<std::vector<fs::path>> group_run_parts(const std::vector<fs::path>& runs) {
+    std::vector<std::vector<fs::path>> groups;
+    std::vector<std::string> ids;
+    for (const fs::path& run : runs) {
+        const std::string id = read_run_id(trajectory_of(run));
+        const auto same = id.empty() ? ids.end() : std::find(ids.begin(), ids.end(), id);
+        if (same != ids.end()) {
+            groups[static_cast<std::size_t>(same - ids.begin())].push_back(run);
+            continue;
+        }
+        groups.push_back({run});
+        ids.push_back(id);
+    }
+    return groups;
 }
 
 std::size_t select_frame(const StoredRun& run, std::optional<long long> frame,

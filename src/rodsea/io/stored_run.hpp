@@ -14,6 +14,9 @@ namespace rodsea {
 
 struct StoredRun {
     std::filesystem::path run_dir, trajectory;
+    // Every trajectory the frames come from, in the run's order (more than one for a run read
+    // with its continuations); `trajectory` is the last.
+    std::vector<std::filesystem::path> parts;
     RunPlan plan;
     TrajectoryReader reader;
 
@@ -32,6 +35,18 @@ struct StoredRun {
 // Accepts a run directory or its trajectory.h5. Throws FileError for a missing file, one that
 // is not a rodsea trajectory, or one without frames.
 StoredRun open_stored_run(const std::filesystem::path& run_or_trajectory);
+// One run kept in several directories (its first and its continuations, rodsea run --continue,
+// in any order) read as one: its frames in order, each once, under the latest part's config
+// (run_dir and trajectory are the latest part's, where the run goes on). Throws FileError when
+// the parts are not of one run (run ids, configs other than in their length), when frames are
+// missing between two of them, or when two start at the same frame.
+StoredRun open_stored_run(const std::vector<std::filesystem::path>& parts);
+
+// `runs` (directories or trajectories) grouped into runs: those of one run id (a run's first
+// directory and its continuations) form one group, the others one each, in the order each group's
+// first appears.
+std::vector<std::vector<std::filesystem::path>> group_run_parts(
+    const std::vector<std::filesystem::path>& runs);
 
 // The frame a user asked for: --frame N (0-based; negative counts from the end, -1 the last)
 // or --time T (the frame nearest T, s), or the last frame when neither is given. Throws

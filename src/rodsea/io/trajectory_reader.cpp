@@ -40,13 +40,25 @@ std::vector<float> read_frame(const h5::File& f, const std::string& name, std::u
 
 }  // namespace
 
+// The files the frames come from: one, or a run's directories joined (joined()), each holding
+// the reader's frames [first, first + count) as its own 0 .. count − 1.
 struct TrajectoryReader::Impl {
-    h5::File file;
+    struct Part {
+        h5::File file;
+        std::uint64_t first = 0, count = 0;
+    };
+    std::vector<Part> parts;
+
+    const Part& part_of(std::uint64_t index) const {
+        for (const Part& p : parts)
+            if (index < p.first + p.count) return p;
+        return parts.back();
+    }
 };
 
-TrajectoryReader::TrajectoryReader(const std::filesystem::path& path)
-    : impl_(new Impl{h5::File::open(path, false)}) {
-    const h5::File& f = impl_->file;
+TrajectoryReader::TrajectoryReader(const std::filesystem::path& path) : impl_(new Impl) {
+    impl_->parts.push_back({h5::File::open(path, false), 0, 0});
+    const h5::File& f = impl_->parts.front().file;
     if (!h5::exists(f.id(), "h5md") || !h5::exists(f.id(), "particles/bodies/position"))
         throw FileError(path.string(), "not a rodsea trajectory (no H5MD /particles/bodies)");
     h5::Handle position = h5::open_group(f, f.id(), "particles/bodies/position");
@@ -97,16 +109,49 @@ TrajectoryReader::TrajectoryReader(const std::filesystem::path& path)
                                        std::to_string(n) + ", " + std::to_string(width) +
                                        "] (frames, bodies, components)");
     }
+    impl_->parts.front().count = frames;
+}
+
+TrajectoryReader TrajectoryReader::joined(std::vector<TrajectoryReader> parts,
+                                          const std::vector<std::uint64_t>& keep) {
+    if (parts.empty() || keep.size() != parts.size())
+        throw std::logic_error("TrajectoryReader::joined: one count per part");
+    TrajectoryReader all;
+    all.impl_ = std::make_unique<Impl>();
+    all.species_ = parts.front().species_;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        TrajectoryReader& part = parts[k];
+        const std::string where = part.impl_->parts.front().file.path().string();
+        if (part.impl_->parts.size() != 1 || keep[k] > part.frames())
+            throw std::logic_error("TrajectoryReader::joined: a part holds fewer frames than kept");
+        if (part.species_ != all.species_)
+            throw FileError(where, "holds other bodies (/particles/bodies/species) than " +
+                                       parts.front().impl_->parts.front().file.path().string() +
+                                       ": not a part of the same run");
+        if (keep[k] > 0 && !all.steps_.empty() && part.steps_.front() <= all.steps_.back())
+            throw FileError(where, "its first frame, at step " +
+                                       std::to_string(part.steps_.front()) +
+                                       ", does not follow the earlier part's last, at step " +
+                                       std::to_string(all.steps_.back()));
+        const auto n = static_cast<std::ptrdiff_t>(keep[k]);
+        all.impl_->parts.push_back(
+            {std::move(part.impl_->parts.front().file), all.steps_.size(), keep[k]});
+        all.steps_.insert(all.steps_.end(), part.steps_.begin(), part.steps_.begin() + n);
+        all.times_.insert(all.times_.end(), part.times_.begin(), part.times_.begin() + n);
+    }
+    return all;
 }
 
 TrajectoryReader::TrajectoryReader(TrajectoryReader&&) noexcept = default;
 TrajectoryReader::~TrajectoryReader() = default;
 
 BodyState TrajectoryReader::frame(std::uint64_t index) const {
-    const h5::File& f = impl_->file;
+    const Impl::Part& part = impl_->part_of(index);
+    const h5::File& f = part.file;
     if (index >= frames())
         throw FileError(f.path().string(), "frame " + std::to_string(index) + " of " +
                                                std::to_string(frames()) + " requested");
+    index -= part.first;
     const std::vector<std::uint32_t>& species = species_;
     const size_t n = species.size();
     const auto x = read_frame(f, "particles/bodies/position/value", index, n, 3);
@@ -121,18 +166,21 @@ BodyState TrajectoryReader::frame(std::uint64_t index) const {
     return b;
 }
 
-std::vector<double> TrajectoryReader::series(const std::string& column) const {
-    const h5::File& f = impl_->file;
+namespace {
+
+// The first `frames` rows of a time-series column of one file, checked.
+std::vector<double> part_series(const h5::File& f, std::uint64_t frames,
+                                const std::string& column) {
     const std::string group = "observables/" + column;
     if (!h5::exists(f.id(), group))
         throw FileError(f.path().string(), "no time-series column " + column);
     h5::Handle g = h5::open_group(f, f.id(), group);
     std::vector<double> values = h5::read_doubles(f, g.get(), "value");
     const std::string dataset = "/" + group + "/value";
-    if (values.size() < frames())
+    if (values.size() < frames)
         throw FileError(f.path().string(), dataset + " has " + std::to_string(values.size()) +
-                                               " rows for " + std::to_string(frames()) + " frames");
-    values.resize(frames());
+                                               " rows for " + std::to_string(frames) + " frames");
+    values.resize(frames);
     // Order parameters lie in [0, 1]; every other column but the mean velocities (signed) is a
     // rate, a count, an energy or an overlap: never negative.
     const bool order =
@@ -150,8 +198,19 @@ std::vector<double> TrajectoryReader::series(const std::string& column) const {
     return values;
 }
 
+}  // namespace
+
+std::vector<double> TrajectoryReader::series(const std::string& column) const {
+    std::vector<double> all;
+    for (const Impl::Part& part : impl_->parts) {
+        const std::vector<double> values = part_series(part.file, part.count, column);
+        all.insert(all.end(), values.begin(), values.end());
+    }
+    return all;
+}
+
 std::vector<std::string> TrajectoryReader::series_names() const {
-    const h5::File& f = impl_->file;
+    const h5::File& f = impl_->parts.front().file;
     std::vector<std::string> names;
     if (!h5::exists(f.id(), "observables")) return names;
     h5::Handle g = h5::open_group(f, f.id(), "observables");
@@ -171,7 +230,9 @@ std::vector<std::string> TrajectoryReader::series_names() const {
 }
 
 bool TrajectoryReader::has_series(const std::string& column) const {
-    return h5::exists(impl_->file.id(), "observables/" + column);
+    for (const Impl::Part& part : impl_->parts)
+        if (!h5::exists(part.file.id(), "observables/" + column)) return false;
+    return true;
 }
 
 }  // namespace rodsea

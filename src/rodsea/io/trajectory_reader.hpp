@@ -7,6 +7,7 @@
 // is finite. Values within a frame are checked against the run's config by StoredRun::frame
 // (engine/state_check.hpp). Every failure is a FileError naming the file, the dataset, and the
 // frame, body or row with its value.
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -20,6 +21,13 @@ namespace rodsea {
 class TrajectoryReader {
   public:
     explicit TrajectoryReader(const std::filesystem::path& path);
+    // One run kept in several files, read as one: a run's first directory and its
+    // continuations (rodsea run --continue), in the run's order, the first `keep[k]` frames of
+    // `parts[k]` (a file may hold frames the next one holds again). Throws FileError naming the
+    // later file when its frames do not follow the earlier ones' (steps not increasing) or the
+    // files hold different bodies.
+    static TrajectoryReader joined(std::vector<TrajectoryReader> parts,
+                                   const std::vector<std::uint64_t>& keep);
     TrajectoryReader(TrajectoryReader&&) noexcept;
     ~TrajectoryReader();
 
@@ -33,6 +41,7 @@ class TrajectoryReader {
     std::vector<std::string> series_names() const;
 
   private:
+    TrajectoryReader() = default;
     struct Impl;
     std::unique_ptr<Impl> impl_;
     std::vector<std::int64_t> steps_;
