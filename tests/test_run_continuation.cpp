@@ -177,6 +177,8 @@ TEST(RunContinuation, ARunAndItsContinuationReadAndAnalyseAsTheWholeRun) {
     ASSERT_EQ(groups.size(), 2u);
     EXPECT_EQ(groups[0], (std::vector<std::filesystem::path>{first, continued, later}));
     EXPECT_EQ(groups[1], (std::vector<std::filesystem::path>{straight}));
+    // A directory of the run given twice (as a copy would be) is read apart, not joined.
+    EXPECT_EQ(group_run_parts({first, continued, continued}).size(), 2u);
     EXPECT_THROW(open_stored_run(std::vector<std::filesystem::path>{first, later}), FileError);
     EXPECT_THROW(open_stored_run(std::vector<std::filesystem::path>{first, continued, continued}),
                  FileError);

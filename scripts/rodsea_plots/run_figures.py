@@ -379,7 +379,11 @@ def motion_along_axis(a, log, max_pairs=20):
             positions, orientations = bodies["position/value"], bodies["orientation/value"]
             times = bodies["position/time"][()]
             edges = bodies["box/edges/value"]
-            first = int(a.json["steady_state"].get("first_frame", 0))
+            # By time, not by frame index: the analysis of a run joined from several directories
+            # counts frames over all of them, and this file holds the latest part's.
+            from_s = a.json["steady_state"].get("from_s")
+            first = (int(np.searchsorted(times, float(from_s) - 1e-9)) if from_s is not None
+                     else int(a.json["steady_state"].get("first_frame", 0)))
             frames = positions.shape[0]
             if rods.size == 0 or frames - first < 2:
                 return None

@@ -123,6 +123,14 @@ Json observable_json(const ObservableResults& r, const fs::path& out_dir) {
 
 // Each order series' own steady start, its independent samples in the window and whether it
 // drifts there.
+// The trajectories a run was read from: one, or a run's directories joined in order.
+Json part_paths(const std::vector<std::filesystem::path>& parts) {
+    Json paths = Json::array();
+    for (const std::filesystem::path& p : parts)
+        paths.push_back(p.string());
+    return paths;
+}
+
 Json window_series_json(const PreparedRun& run) {
     Json series = Json::array();
     for (const SeriesStart& s : run.window.series)
@@ -144,6 +152,7 @@ void write_analysis_files(const RunAnalysis& a, const fs::path& out_dir) {
         {"run",
          {{"directory", a.run.run_dir.string()},
           {"trajectory", a.run.trajectory.string()},
+          {"parts", part_paths(a.run.parts)},
           {"frames", a.run.times.size()},
           {"first_time_s", a.run.times.front()},
           {"last_time_s", a.run.times.back()},

@@ -159,7 +159,7 @@ RunAnalysis analyze_run(const PreparedRun& run, std::ostream& log, bool quiet) {
         if (run.parts.size() > 1) {
             log << "  one run in " << run.parts.size() << " directories, joined in order:";
             for (const fs::path& part : run.parts)
-                log << " " << part.parent_path().string();
+                log << " " << (part.has_parent_path() ? part.parent_path() : part).string();
             log << "\n";
         }
         log << "  steady window from " << format_number(run.window.from) << " s (frame "

@@ -154,17 +154,31 @@ StoredRun open_stored_run(const std::vector<fs::path>& given) {
 }
 
 std::vector<std::vector<fs::path>> group_run_parts(const std::vector<fs::path>& runs) {
+    struct Group {
+        std::string id;
+        std::vector<std::uint64_t> first_frames;
+    };
     std::vector<std::vector<fs::path>> groups;
-    std::vector<std::string> ids;
+    std::vector<Group> keys;
     for (const fs::path& run : runs) {
-        const std::string id = read_run_id(trajectory_of(run));
-        const auto same = id.empty() ? ids.end() : std::find(ids.begin(), ids.end(), id);
-        if (same != ids.end()) {
-            groups[static_cast<std::size_t>(same - ids.begin())].push_back(run);
+        const fs::path trajectory = trajectory_of(run);
+        const std::string id = read_run_id(trajectory);
+        const std::uint64_t first = read_first_frame(trajectory);
+        // Two directories of one run that start at the same frame are copies, or two
+        // continuations of one checkpoint: each is read apart, not joined.
+        const auto joins = [&](const Group& g) {
+            return !id.empty() && g.id == id &&
+                   std::find(g.first_frames.begin(), g.first_frames.end(), first) ==
+                       g.first_frames.end();
+        };
+        const auto same = std::find_if(keys.begin(), keys.end(), joins);
+        if (same != keys.end()) {
+            groups[static_cast<std::size_t>(same - keys.begin())].push_back(run);
+            same->first_frames.push_back(first);
             continue;
         }
         groups.push_back({run});
-        ids.push_back(id);
+        keys.push_back({id, {first}});
     }
     return groups;
 }

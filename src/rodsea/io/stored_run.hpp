@@ -44,7 +44,8 @@ StoredRun open_stored_run(const std::vector<std::filesystem::path>& parts);
 
 // `runs` (directories or trajectories) grouped into runs: those of one run id (a run's first
 // directory and its continuations) form one group, the others one each, in the order each group's
-// first appears.
+// first appears. Directories of one run that start at the same frame (a copy, two continuations
+// of one checkpoint) go to different groups.
 std::vector<std::vector<std::filesystem::path>> group_run_parts(
     const std::vector<std::filesystem::path>& runs);
 

@@ -119,6 +119,7 @@ TrajectoryReader TrajectoryReader::joined(std::vector<TrajectoryReader> parts,
     TrajectoryReader all;
     all.impl_ = std::make_unique<Impl>();
     all.species_ = parts.front().species_;
+    const std::string first_path = parts.front().impl_->parts.front().file.path().string();
     for (std::size_t k = 0; k < parts.size(); ++k) {
         TrajectoryReader& part = parts[k];
         const std::string where = part.impl_->parts.front().file.path().string();
@@ -126,8 +127,7 @@ TrajectoryReader TrajectoryReader::joined(std::vector<TrajectoryReader> parts,
             throw std::logic_error("TrajectoryReader::joined: a part holds fewer frames than kept");
         if (part.species_ != all.species_)
             throw FileError(where, "holds other bodies (/particles/bodies/species) than " +
-                                       parts.front().impl_->parts.front().file.path().string() +
-                                       ": not a part of the same run");
+                                       first_path + ": not a part of the same run");
         if (keep[k] > 0 && !all.steps_.empty() && part.steps_.front() <= all.steps_.back())
             throw FileError(where, "its first frame, at step " +
                                        std::to_string(part.steps_.front()) +
