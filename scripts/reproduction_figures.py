@@ -136,7 +136,8 @@ ALIGNMENT_NOISE = [(float(d), f"{ALIGNMENT}/fig1f-38mm-D_r{d}-seed2-from30.summa
 # line style), and P(t) in 5 s means of 1 s series tables (label, table, colour, line style):
 # the row's runs with the medium from the random start; the same rods without the medium
 # (dilute-order/polar-only-*.toml, seed 2 to 360 s); the 88 mm box with medium rods of a quarter
-# of the mass (light-medium-88mm.toml), of half (half-mass-medium-88mm.toml) and of 0.15
+# of the mass (light-medium-88mm.toml), of half (half-mass-medium-88mm.toml; seed 2,
+# medium-mass-88mm-seed2.toml) and of 0.15
 # polar-rod masses (medium-mass-88mm.toml) and, P(t) only (stopped at 70 s), from an aligned
 # start (aligned-88mm.toml).
 DILUTE = f"{DATA}/dilute-order"
@@ -157,6 +158,8 @@ DILUTE_CORRELATIONS = [
      "-"),
     ("88 mm, half-mass medium",
      f"{DILUTE}/half-mass-medium-88mm-from60.pair_correlation_polar.csv", "C1", "--"),
+    ("88 mm, half-mass medium, seed 2",
+     f"{DILUTE}/medium-mass-88mm-0.1-seed2-from60.pair_correlation_polar.csv", "C5", "--"),
     ("88 mm, medium of 0.15 masses",
      f"{DILUTE}/medium-mass-88mm-0.15-from60.pair_correlation_polar.csv", "C1", ":"),
 ]
@@ -171,6 +174,8 @@ DILUTE_SERIES = [
     ("88 mm, with medium, aligned start", f"{DILUTE}/aligned-88mm.series.csv", "C2", "-"),
     ("88 mm, light medium", f"{DILUTE}/light-medium-88mm.series.csv", "C1", "-"),
     ("88 mm, half-mass medium", f"{DILUTE}/half-mass-medium-88mm.series.csv", "C1", "--"),
+    ("88 mm, half-mass medium, seed 2", f"{DILUTE}/medium-mass-88mm-0.1.seed2.series.csv", "C5",
+     "--"),
     ("88 mm, medium of 0.15 masses", f"{DILUTE}/medium-mass-88mm-0.15.series.csv", "C1", ":"),
 ]
 DILUTE_BIN = 5
