@@ -12,9 +12,9 @@
 #include "child_process.hpp"
 #include "rodsea/analyze/analyze_run.hpp"
 #include "rodsea/config/config_file.hpp"
+#include "rodsea/io/run_lock.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
 #include "rodsea/run/run_driver.hpp"
-#include "rodsea/run/run_lock.hpp"
 #include "scratch_dir.hpp"
 
 namespace rodsea {

@@ -11,8 +11,8 @@
 #include "child_process.hpp"
 #include "local_slurm_cluster.hpp"
 #include "rodsea/io/checkpoint.hpp"
+#include "rodsea/io/run_lock.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
-#include "rodsea/run/run_lock.hpp"
 #include "run_comparison.hpp"
 #include "scratch_dir.hpp"
 

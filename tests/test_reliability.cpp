@@ -22,9 +22,9 @@
 #include "rodsea/engine/state_check.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/checkpoint.hpp"
+#include "rodsea/io/progress_file.hpp"
 #include "rodsea/io/stored_run.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
-#include "rodsea/run/progress_file.hpp"
 #include "rodsea/run/run_driver.hpp"
 #include "scratch_dir.hpp"
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "rodsea/error.hpp"
-#include "rodsea/run/run_lock.hpp"
+#include "rodsea/io/run_lock.hpp"
 #include "scratch_dir.hpp"
 
 namespace fs = std::filesystem;

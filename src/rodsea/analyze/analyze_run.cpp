@@ -13,12 +13,12 @@
 #include "rodsea/analyze/structure_series.hpp"
 #include "rodsea/cli/progress.hpp"
 #include "rodsea/error.hpp"
+#include "rodsea/io/progress_file.hpp"
+#include "rodsea/io/run_lock.hpp"
 #include "rodsea/io/stored_run.hpp"
 #include "rodsea/io/trajectory_file.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
 #include "rodsea/number_text.hpp"
-#include "rodsea/run/progress_file.hpp"
-#include "rodsea/run/run_lock.hpp"
 
 namespace rodsea {
 

@@ -5,7 +5,7 @@
 
 #include "rodsea/cli/exit_codes.hpp"
 #include "rodsea/cli/progress.hpp"
-#include "rodsea/run/run_lock.hpp"
+#include "rodsea/io/run_lock.hpp"
 
 namespace rodsea {
 

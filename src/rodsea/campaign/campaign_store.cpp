@@ -9,9 +9,9 @@
 #include "rodsea/cli/arguments.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
+#include "rodsea/io/run_lock.hpp"
 #include "rodsea/number_text.hpp"
 #include "rodsea/run/run_driver.hpp"
-#include "rodsea/run/run_lock.hpp"
 
 namespace rodsea {
 

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "rodsea/campaign/campaign_points.hpp"
-#include "rodsea/run/progress_file.hpp"
+#include "rodsea/io/progress_file.hpp"
 
 namespace rodsea {
 

@@ -1,7 +1,7 @@
 #include "rodsea/run/output_directory.hpp"
 
 #include "rodsea/error.hpp"
-#include "rodsea/run/progress_file.hpp"
+#include "rodsea/io/progress_file.hpp"
 #include "rodsea/run/run_files.hpp"
 
 namespace rodsea {

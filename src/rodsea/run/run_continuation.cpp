@@ -8,12 +8,12 @@
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
 #include "rodsea/io/checkpoint.hpp"
+#include "rodsea/io/run_lock.hpp"
 #include "rodsea/io/series_csv.hpp"
 #include "rodsea/io/trajectory_file.hpp"
 #include "rodsea/run/checkpoint_checks.hpp"
 #include "rodsea/run/output_directory.hpp"
 #include "rodsea/run/plan_report.hpp"
-#include "rodsea/run/run_lock.hpp"
 #include "rodsea/run/run_session.hpp"
 #include "rodsea/run/series_recorder.hpp"
 

@@ -9,8 +9,8 @@
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
 #include "rodsea/io/checkpoint.hpp"
+#include "rodsea/io/progress_file.hpp"
 #include "rodsea/run/plan_report.hpp"
-#include "rodsea/run/progress_file.hpp"
 
 namespace rodsea {
 

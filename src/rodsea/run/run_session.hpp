@@ -19,10 +19,10 @@
 #include "rodsea/config/run_plan.hpp"
 #include "rodsea/engine/ensemble.hpp"
 #include "rodsea/error.hpp"
+#include "rodsea/io/run_lock.hpp"
 #include "rodsea/io/series_csv.hpp"
 #include "rodsea/io/trajectory_file.hpp"
 #include "rodsea/run/run_files.hpp"
-#include "rodsea/run/run_lock.hpp"
 #include "rodsea/run/series_recorder.hpp"
 #include "rodsea/run/steady_stop.hpp"
 

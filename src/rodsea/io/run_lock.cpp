@@ -1,4 +1,4 @@
-#include "rodsea/run/run_lock.hpp"
+#include "rodsea/io/run_lock.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>

@@ -1,4 +1,4 @@
-#include "rodsea/run/progress_file.hpp"
+#include "rodsea/io/progress_file.hpp"
 
 #include <algorithm>
 #include <chrono>
