@@ -75,7 +75,8 @@ for frames, name, why in ((slice(0, 47), "overlap", "share frames"),
     write_run(run, frames)
     assert run_script(run, "--out", os.path.join(scratch, name + "-table")).returncode == 0
     table_path = os.path.join(scratch, name + "-table", name + ".series.csv")
-    r = run_script(rest, "--continues", table_path, "--out", os.path.join(scratch, name + "-joined"))
+    r = run_script(rest, "--continues", table_path, "--out",
+                   os.path.join(scratch, name + "-joined"))
     assert r.returncode == 2 and why in r.stderr, (name, r.returncode, r.stderr)
 
 # The whole run's table is no earlier part of the continuation: refused, nothing written.
