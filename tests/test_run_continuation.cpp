@@ -11,6 +11,7 @@
 #include "child_process.hpp"
 #include "rodsea/analyze/analyze_run.hpp"
 #include "rodsea/error.hpp"
+#include "rodsea/io/run_lock.hpp"
 #include "rodsea/io/stored_run.hpp"
 #include "rodsea/run/run_continuation.hpp"
 #include "run_comparison.hpp"
@@ -188,8 +189,8 @@ TEST(RunContinuation, ARunAndItsContinuationReadAndAnalyseAsTheWholeRun) {
 }
 
 // Refused before anything is written: a complete run without a longer --duration, a stop when
-// steady (it judges the whole series, which stays behind), the checkpoint's own directory or an
-// occupied one as --out, no checkpoint.
+// steady (it judges the whole series, which stays behind), the checkpoint's own directory, an
+// occupied one or one where a run is going as --out, no checkpoint.
 TEST(RunContinuation, RefusalsComeBeforeAnyFileIsWritten) {
     const ScratchDir dir("run-continue-bad");
     const auto first = dir.path() / "first", out = dir.path() / "out";
@@ -222,6 +223,22 @@ TEST(RunContinuation, RefusalsComeBeforeAnyFileIsWritten) {
         continue_run(checkpoint, options, log, err);
     });
     EXPECT_EQ(TrajectoryReader(first / kTrajectoryFile).frames(), 6u);  // 0.01 s / 2 ms + 1
+
+    // --overwrite of a directory where a run is still going: refused by its lock, before any of
+    // its files is removed.
+    const auto busy = dir.path() / "busy";
+    ASSERT_EQ(run_quietly(small_config(0.01, 0.002), busy), kExitOk);
+    {
+        const RunDirectoryLock running(busy);
+        RunOptions options;
+        options.out_dir = busy;
+        options.overwrite = true;
+        options.duration = 0.02;
+        std::ostringstream log, err;
+        EXPECT_THROW(continue_run(checkpoint, options, log, err), InvalidParameter);
+    }
+    EXPECT_EQ(TrajectoryReader(busy / kTrajectoryFile).frames(), 6u);
+    EXPECT_TRUE(std::filesystem::exists(busy / kCheckpointFile));
 
     std::filesystem::create_directories(out);
     std::ofstream(out / "notes.txt") << "mine\n";

@@ -38,6 +38,30 @@ std::string seconds(std::uint64_t step, double dt) {
     return format_number(static_cast<double>(step) * dt) + " s";
 }
 
+// Writes DIR's files for the continuation of `c` under `plan`: config.toml, a trajectory and a
+// CSV holding no frame yet, and the checkpoint last. A failure removes what it wrote (without its
+// checkpoint the directory could only start again from t = 0, as a new run); the directory goes
+// too when this command made it (the caller's RemoveUnlessStarted).
+void write_continuation(const std::filesystem::path& dir, const RunPlan& plan, const Checkpoint& c,
+                        bool created, bool overwrite) {
+    try {
+        if (overwrite) remove_run_files(dir);
+        const SeriesRecorder recorder(plan);
+        write_file_atomically(dir / kConfigFile, plan.config_toml);
+        TrajectoryFile::create(dir / kTrajectoryFile, plan.engine, c.bodies.species,
+                               plan.config_toml, recorder.columns(),
+                               TrajectorySegment{c.run_id, c.frames_written})
+            .close();
+        SeriesCsv::create(dir / kSeriesFile, recorder.columns()).flush();
+        sync_file(dir / kTrajectoryFile);
+        sync_file(dir / kSeriesFile);
+        write_checkpoint(dir / kCheckpointFile, c);
+    } catch (...) {
+        if (!created) remove_run_files(dir);
+        throw;
+    }
+}
+
 }  // namespace
 
 int continue_run(const std::filesystem::path& given, const RunOptions& options, std::ostream& out,
@@ -78,33 +102,20 @@ int continue_run(const std::filesystem::path& given, const RunOptions& options, 
     require_usable_backend(options.backend.value_or(plan.control.backend),
                            options.backend ? "--backend" : "run.backend");
 
+    // As an extension in place (run_driver.cpp: commit_extension): a complete run that ended off
+    // the output grid wrote a last frame that the longer run does not have.
+    if (extending && c.complete && c.frames_written == frames_due(plan, c.step) + 1)
+        --c.frames_written;
+    c.complete = false;
+    c.config_toml = plan.config_toml;
+    c.extending_from.clear();
+
     const bool created = create_output_directory(dir);
     RemoveUnlessStarted cleanup(dir, created);
-    try {
+    {
+        // Taken before anything is removed: a run still going in DIR refuses this, untouched.
         const RunDirectoryLock lock(dir);
-        if (options.overwrite) remove_run_files(dir);
-        // As an extension in place (run_driver.cpp: commit_extension): a complete run that ended
-        // off the output grid wrote a last frame that the longer run does not have.
-        if (extending && c.complete && c.frames_written == frames_due(plan, c.step) + 1)
-            --c.frames_written;
-        c.complete = false;
-        c.config_toml = plan.config_toml;
-        c.extending_from.clear();
-        const SeriesRecorder recorder(plan);
-        write_file_atomically(dir / kConfigFile, plan.config_toml);
-        TrajectoryFile::create(dir / kTrajectoryFile, plan.engine, c.bodies.species,
-                               plan.config_toml, recorder.columns(),
-                               TrajectorySegment{c.run_id, c.frames_written})
-            .close();
-        SeriesCsv::create(dir / kSeriesFile, recorder.columns()).flush();
-        sync_file(dir / kTrajectoryFile);
-        sync_file(dir / kSeriesFile);
-        write_checkpoint(dir / kCheckpointFile, c);
-    } catch (...) {
-        // Without its checkpoint the directory could only be started again from t = 0, as a
-        // new run: the files written so far go (the directory too, when this made it).
-        if (!created) remove_run_files(dir);
-        throw;
+        write_continuation(dir, plan, c, created, options.overwrite);
     }
     cleanup.started();
     if (!options.quiet)
