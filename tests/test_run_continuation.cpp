@@ -22,9 +22,11 @@ namespace {
 
 int continue_quietly(const std::filesystem::path& checkpoint, const std::filesystem::path& out,
                      std::optional<double> duration = std::nullopt,
-                     std::optional<long long> steady_samples = std::nullopt) {
+                     std::optional<long long> steady_samples = std::nullopt,
+                     bool overwrite = false) {
     RunOptions options;
     options.out_dir = out;
+    options.overwrite = overwrite;
     options.quiet = true;
     options.duration = duration;
     options.steady_samples = steady_samples;
@@ -214,14 +216,7 @@ TEST(RunContinuation, RefusalsComeBeforeAnyFileIsWritten) {
     EXPECT_FALSE(std::filesystem::exists(out));
 
     // Into its own directory, even with --overwrite, it would delete the frames it continues.
-    refused_as("--out", [&] {
-        RunOptions options;
-        options.out_dir = first;
-        options.overwrite = true;
-        options.duration = 0.02;
-        std::ostringstream log, err;
-        continue_run(checkpoint, options, log, err);
-    });
+    refused_as("--out", [&] { continue_quietly(checkpoint, first, 0.02, std::nullopt, true); });
     EXPECT_EQ(TrajectoryReader(first / kTrajectoryFile).frames(), 6u);  // 0.01 s / 2 ms + 1
 
     // --overwrite of a directory where a run is still going: refused by its lock, before any of
@@ -230,12 +225,8 @@ TEST(RunContinuation, RefusalsComeBeforeAnyFileIsWritten) {
     ASSERT_EQ(run_quietly(small_config(0.01, 0.002), busy), kExitOk);
     {
         const RunDirectoryLock running(busy);
-        RunOptions options;
-        options.out_dir = busy;
-        options.overwrite = true;
-        options.duration = 0.02;
-        std::ostringstream log, err;
-        EXPECT_THROW(continue_run(checkpoint, options, log, err), InvalidParameter);
+        EXPECT_THROW(continue_quietly(checkpoint, busy, 0.02, std::nullopt, true),
+                     InvalidParameter);
     }
     EXPECT_EQ(TrajectoryReader(busy / kTrajectoryFile).frames(), 6u);
     EXPECT_TRUE(std::filesystem::exists(busy / kCheckpointFile));

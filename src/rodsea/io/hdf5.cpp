@@ -272,28 +272,26 @@ void write_attribute(const File& file, hid_t object, const std::string& name,
           "cannot write attribute " + name);
 }
 
-void write_attribute(const File& file, hid_t object, const std::string& name, double value) {
+// One number as a scalar attribute: stored as `file_type`, given as `memory_type`.
+void write_scalar_attribute(const File& file, hid_t object, const std::string& name,
+                            hid_t file_type, hid_t memory_type, const void* value) {
     Handle space(H5Screate(H5S_SCALAR));
-    Handle attr(check(
-        H5Acreate2(object, name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
-        file, "cannot create attribute " + name));
-    check(H5Awrite(attr.get(), H5T_NATIVE_DOUBLE, &value), file, "cannot write attribute " + name);
+    Handle attr(
+        check(H5Acreate2(object, name.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+              file, "cannot create attribute " + name));
+    check(H5Awrite(attr.get(), memory_type, value), file, "cannot write attribute " + name);
+}
+
+void write_attribute(const File& file, hid_t object, const std::string& name, double value) {
+    write_scalar_attribute(file, object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value);
 }
 
 void write_attribute(const File& file, hid_t object, const std::string& name, std::int32_t value) {
-    Handle space(H5Screate(H5S_SCALAR));
-    Handle attr(check(
-        H5Acreate2(object, name.c_str(), H5T_STD_I32LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
-        file, "cannot create attribute " + name));
-    check(H5Awrite(attr.get(), H5T_NATIVE_INT32, &value), file, "cannot write attribute " + name);
+    write_scalar_attribute(file, object, name, H5T_STD_I32LE, H5T_NATIVE_INT32, &value);
 }
 
 void write_attribute(const File& file, hid_t object, const std::string& name, std::int64_t value) {
-    Handle space(H5Screate(H5S_SCALAR));
-    Handle attr(check(
-        H5Acreate2(object, name.c_str(), H5T_STD_I64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
-        file, "cannot create attribute " + name));
-    check(H5Awrite(attr.get(), H5T_NATIVE_INT64, &value), file, "cannot write attribute " + name);
+    write_scalar_attribute(file, object, name, H5T_STD_I64LE, H5T_NATIVE_INT64, &value);
 }
 
 std::int64_t read_int64_attribute(const File& file, hid_t object, const std::string& name) {

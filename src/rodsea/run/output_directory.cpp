@@ -14,6 +14,12 @@ bool is_empty_directory(const std::filesystem::path& dir) {
 
 }  // namespace
 
+std::filesystem::path directory_key(const std::filesystem::path& dir) {
+    std::error_code ec;
+    std::filesystem::path key = std::filesystem::weakly_canonical(dir, ec);
+    return ec ? dir.lexically_normal() : key;
+}
+
 void check_output_directory(const std::filesystem::path& dir, bool overwrite) {
     std::error_code ec;
     if (!std::filesystem::exists(dir, ec)) return;

@@ -7,6 +7,9 @@
 
 namespace rodsea {
 
+// The same path for two spellings of one directory (relative, with `..`, through a link), for
+// comparing directories; the lexical form where the file system cannot tell.
+std::filesystem::path directory_key(const std::filesystem::path& dir);
 // Refuses (InvalidParameter naming --out) a directory that holds anything unless `overwrite`;
 // FileError for a path that is not a directory.
 void check_output_directory(const std::filesystem::path& dir, bool overwrite);

@@ -26,14 +26,6 @@ std::filesystem::path checkpoint_file(const std::filesystem::path& given) {
     return std::filesystem::is_directory(given, ec) ? given / kCheckpointFile : given;
 }
 
-bool same_directory(const std::filesystem::path& a, const std::filesystem::path& b) {
-    std::error_code ec;
-    const std::filesystem::path ca = std::filesystem::weakly_canonical(a, ec);
-    if (ec) return a.lexically_normal() == b.lexically_normal();
-    const std::filesystem::path cb = std::filesystem::weakly_canonical(b, ec);
-    return ec ? a.lexically_normal() == b.lexically_normal() : ca == cb;
-}
-
 std::string seconds(std::uint64_t step, double dt) {
     return format_number(static_cast<double>(step) * dt) + " s";
 }
@@ -73,7 +65,7 @@ int continue_run(const std::filesystem::path& given, const RunOptions& options, 
     const std::filesystem::path& dir = options.out_dir;
     if (!std::filesystem::exists(path)) throw FileError(path.string(), "no such checkpoint");
     // --overwrite there would delete the frames the checkpoint continues.
-    if (same_directory(dir, path.parent_path().empty() ? "." : path.parent_path()))
+    if (directory_key(dir) == directory_key(path.parent_path().empty() ? "." : path.parent_path()))
         throw InvalidParameter(
             "--out", dir.string(), "a directory other than the checkpoint's",
             "the run goes on in its own directory with rodsea run --resume " + dir.string());

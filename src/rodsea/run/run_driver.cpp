@@ -43,10 +43,7 @@ namespace {
 void check_distinct(const std::vector<std::filesystem::path>& dirs) {
     std::set<std::filesystem::path> seen;
     for (const std::filesystem::path& dir : dirs) {
-        std::error_code ec;
-        std::filesystem::path key = std::filesystem::weakly_canonical(dir, ec);
-        if (ec) key = dir.lexically_normal();
-        if (!seen.insert(key).second)
+        if (!seen.insert(directory_key(dir)).second)
             throw InvalidParameter(
                 "run directory", dir.string(), "each run's own directory",
                 "two runs of one command would write the same directory "
