@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <sstream>
 
 #include "child_process.hpp"
+#include "hdf5_poke.hpp"
 #include "rodsea/analyze/analyze_run.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/run_lock.hpp"
@@ -188,6 +190,42 @@ TEST(RunContinuation, ARunAndItsContinuationReadAndAnalyseAsTheWholeRun) {
     EXPECT_THROW(open_stored_run(std::vector<std::filesystem::path>{first, straight}), FileError);
     EXPECT_EQ(open_stored_run(std::vector<std::filesystem::path>{first, continued, later}).frames(),
               21u);  // 0.08 s / 4 ms + 1
+}
+
+// A damaged frame of a run read with its continuation is named in the file that holds it, by
+// that file's own index, whichever part it is in: the file to repair or discard.
+TEST(RunContinuation, ADamagedFrameOfAJoinedRunIsNamedInItsOwnFile) {
+    const ScratchDir dir("run-continue-damaged");
+    const auto first = dir.path() / "first", continued = dir.path() / "continued";
+    ASSERT_EQ(run_quietly(small_config(0.02, 0.004), first), kExitOk);
+    ASSERT_EQ(continue_quietly(first, continued, 0.04), kExitOk);
+    const std::uint64_t offset = read_first_frame(continued / kTrajectoryFile);
+    const std::uint64_t values_per_frame =
+        3 * TrajectoryReader(first / kTrajectoryFile).frame(0).size();
+    poke_hdf5((first / kTrajectoryFile).string(), "/particles/bodies/position/value",
+              2 * values_per_frame, std::numeric_limits<float>::quiet_NaN());
+    poke_hdf5((continued / kTrajectoryFile).string(), "/particles/bodies/position/value",
+              values_per_frame, std::numeric_limits<float>::quiet_NaN());
+
+    const StoredRun run = open_stored_run(std::vector<std::filesystem::path>{first, continued});
+    const auto message_of = [&run](std::size_t frame) {
+        try {
+            (void)run.frame(frame);
+        } catch (const FileError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    const std::string in_first = message_of(2), in_continued = message_of(offset + 1);
+    EXPECT_NE(in_first.find((first / kTrajectoryFile).string()), std::string::npos) << in_first;
+    EXPECT_NE(in_first.find("position/value, frame 2 (t = "), std::string::npos) << in_first;
+    EXPECT_NE(in_continued.find((continued / kTrajectoryFile).string()), std::string::npos)
+        << in_continued;
+    EXPECT_NE(in_continued.find("position/value, frame 1 (the run's frame " +
+                                std::to_string(offset + 1) + ", t = "),
+              std::string::npos)
+        << in_continued;
+    EXPECT_NO_THROW((void)run.frame(offset));  // the frames around them read as they were
 }
 
 // Refused before anything is written: a complete run without a longer --duration, a stop when

@@ -49,11 +49,15 @@ BodyState StoredRun::frame(std::size_t k) const {
         const std::string field = p->field.substr(0, p->field.find('.'));
         const std::string dataset = field == "species" ? "/particles/bodies/species"
                                                        : "/particles/bodies/" + field + "/value";
-        throw FileError(trajectory.string(), dataset + ", frame " + std::to_string(k) +
-                                                 " (t = " + format_number(time) + " s), body " +
-                                                 std::to_string(p->body) + ": " + p->field + " " +
-                                                 p->value + "; allowed: " + p->allowed +
-                                                 (p->detail.empty() ? "" : " (" + p->detail + ")"));
+        // A joined run's frame is named in the part that holds it, by that file's own index.
+        const TrajectoryReader::FrameSource source = reader.source_of(k);
+        const std::string run_frame =
+            source.index == k ? "" : "the run's frame " + std::to_string(k) + ", ";
+        throw FileError(source.file.string(),
+                        dataset + ", frame " + std::to_string(source.index) + " (" + run_frame +
+                            "t = " + format_number(time) + " s), body " + std::to_string(p->body) +
+                            ": " + p->field + " " + p->value + "; allowed: " + p->allowed +
+                            (p->detail.empty() ? "" : " (" + p->detail + ")"));
     }
     return bodies;
 }

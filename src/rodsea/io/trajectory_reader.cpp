@@ -142,6 +142,11 @@ TrajectoryReader TrajectoryReader::joined(std::vector<TrajectoryReader> parts,
     return all;
 }
 
+TrajectoryReader::FrameSource TrajectoryReader::source_of(std::uint64_t index) const {
+    const Impl::Part& part = impl_->part_of(index);
+    return {part.file.path(), index - part.first};
+}
+
 TrajectoryReader::TrajectoryReader(TrajectoryReader&&) noexcept = default;
 TrajectoryReader::~TrajectoryReader() = default;
 

@@ -35,6 +35,13 @@ class TrajectoryReader {
     const std::vector<std::int64_t>& steps() const { return steps_; }
     const std::vector<double>& times() const { return times_; }
     BodyState frame(std::uint64_t index) const;
+    // Where frame `index` is stored: the file (one of a joined run's parts) and its index there,
+    // for messages about a frame to name the file that holds it.
+    struct FrameSource {
+        std::filesystem::path file;
+        std::uint64_t index;
+    };
+    FrameSource source_of(std::uint64_t index) const;
     std::vector<double> series(const std::string& column) const;
     bool has_series(const std::string& column) const;
     // The time-series columns the file holds, in the file's (alphabetical) order.
