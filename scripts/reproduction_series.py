@@ -16,7 +16,8 @@ With --continues, RUN_DIR is a continuation (`rodsea run --continue`: its trajec
 run's frames from a checkpoint on) and SERIES_CSV the table of the run's earlier frames, written
 by this script with the same --bin: the two are joined into DIR/<SERIES_CSV's name>, the earlier
 table's bins before the continuation's first frame, then the continuation's; a bin that both hold
-in part gets the frame-weighted mean of the two, and steady is the continuation's analysis'.
+in part gets the frame-weighted mean of the two, and steady is the continuation's analysis' (0
+for the earlier table's bins and the shared one, which that analysis did not see whole).
 Every frame must be in exactly one of them (the earlier table made from the first directory's
 frames up to the checkpoint, as a run stopped by a signal leaves them): frames in both, or in
 neither, are refused.
@@ -123,7 +124,8 @@ def join(earlier, later, full):
     if any(row[0] > start + 1e-9 for row in earlier):
         fail(f"the earlier table goes past {start:g} s, where the continuation's first bin "
              "starts: is it the table of the run this directory continues?")
-    kept = [row for row in earlier if row[0] < start - 1e-9]
+    # The earlier table's steady flags are its own analysis' window, not the continuation's.
+    kept = [list(row[:3]) + [0] + list(row[4:]) for row in earlier if row[0] < start - 1e-9]
     shared = [row for row in earlier if abs(row[0] - start) <= 1e-9]
     first = list(later[0])
     if shared:
@@ -142,6 +144,7 @@ def join(earlier, later, full):
             else:
                 first[c] = (n_old * a + n_new * b) / (n_old + n_new)
         first[2] = int(n_old + n_new)
+        first[3] = 0
     elif not kept or abs(kept[-1][1] - start) > 1e-9 or kept[-1][2] != full or first[2] != full:
         fail(f"frames are missing between the earlier table (to {kept[-1][1] if kept else 0:g} "
              f"s) and the continuation (from {start:g} s)")

@@ -2,8 +2,9 @@
 P and S known functions of time, steady from 5 s) analysed whole, and the same frames split at
 4.4 s into the run's first directory and its continuation (`rodsea run --continue`). The first
 part's table joined with the continuation must be the whole run's table: the same bins, frame
-counts, steady flags, and means to the tables' 6 digits (the bin that both parts hold in part,
-4-5 s, is the frame-weighted mean of the two partial means, which is the mean over its frames).
+counts, steady flags (the continuation's, whatever window the first part was analysed with), and
+means to the tables' 6 digits (the bin that both parts hold in part, 4-5 s, is the frame-weighted
+mean of the two partial means, which is the mean over its frames).
 A table that runs past the continuation's start, shares frames with it or stops short of it is
 refused.
 
@@ -27,14 +28,14 @@ shutil.rmtree(scratch, ignore_errors=True)
 TIMES = np.round(np.arange(100) * 0.1, 10)
 
 
-def write_run(run, frames):
-    """A run directory whose analysis holds `frames` of the run."""
+def write_run(run, frames, steady_from=5.0):
+    """A run directory whose analysis holds `frames` of the run, steady from `steady_from` s."""
     os.makedirs(os.path.join(run, "analysis"))
     with open(os.path.join(run, "analysis", "order_parameters.csv"), "w") as f:
         f.write("# order_parameters; units: time [s] steady [1] P_polar [1] S_medium [1]\n")
         f.write("time,steady,P_polar,S_medium\n")
         for t in TIMES[frames]:
-            f.write(f"{t!r},{int(t >= 5.0)},{0.5 + 0.4 * np.sin(t)!r},{0.1 + 0.01 * t * t!r}\n")
+            f.write(f"{t!r},{int(t >= steady_from)},{0.5 + 0.4 * np.sin(t)!r},{0.1 + 0.01 * t * t!r}\n")
 
 
 def run_script(*args):
@@ -47,7 +48,9 @@ def table(path):
 
 whole, first, rest = (os.path.join(scratch, n) for n in ("whole", "first", "rest"))
 write_run(whole, slice(0, 100))
-write_run(first, slice(0, 44))
+# The first part analysed with a window of its own (from 1 s): the joined table's steady flags
+# are the continuation's analysis', so the whole run's.
+write_run(first, slice(0, 44), steady_from=1.0)
 write_run(rest, slice(44, 100))
 for run, out in ((whole, "w"), (first, "p")):
     r = run_script(run, "--out", os.path.join(scratch, out))
