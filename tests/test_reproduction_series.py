@@ -35,7 +35,8 @@ def write_run(run, frames, steady_from=5.0):
         f.write("# order_parameters; units: time [s] steady [1] P_polar [1] S_medium [1]\n")
         f.write("time,steady,P_polar,S_medium\n")
         for t in TIMES[frames]:
-            f.write(f"{t!r},{int(t >= steady_from)},{0.5 + 0.4 * np.sin(t)!r},{0.1 + 0.01 * t * t!r}\n")
+            p, s = 0.5 + 0.4 * np.sin(t), 0.1 + 0.01 * t * t
+            f.write(f"{t!r},{int(t >= steady_from)},{p!r},{s!r}\n")
 
 
 def run_script(*args):
