@@ -33,6 +33,9 @@ struct ChildOptions {
     long long file_size_limit = -1;        // bytes, RLIMIT_FSIZE; < 0 for none
     std::function<bool()> interrupt_when;  // polled every 10 ms; a signal once it returns true
     int interrupt_signal = SIGINT;         // the signal interrupt_when sends
+    // To the child's process group, as Ctrl-C at a terminal signals every process of the
+    // foreground job (a campaign runner and the runs it started), rather than to the child alone.
+    bool interrupt_group = false;
     double timeout_seconds = 120.0;
 };
 
@@ -50,6 +53,7 @@ inline ChildResult run_rodsea(const std::vector<std::string>& args,
     const pid_t pid = fork();
     if (pid < 0) throw std::runtime_error("fork failed");
     if (pid == 0) {
+        if (options.interrupt_group) ::setpgid(0, 0);
         if (!std::freopen(out_path.c_str(), "w", stdout) ||
             !std::freopen(err_path.c_str(), "w", stderr))
             _exit(125);
@@ -61,22 +65,25 @@ inline ChildResult run_rodsea(const std::vector<std::string>& args,
         execv(argv[0], argv.data());
         _exit(126);
     }
+    // Here too, so that the group exists before any signal is sent to it.
+    if (options.interrupt_group) ::setpgid(pid, pid);
     ChildResult result;
     const auto start = std::chrono::steady_clock::now();
     int status = 0;
     // Whatever happens in this process, the child does not outlive the test.
     struct Reaper {
         pid_t pid;
+        bool group;  // and the processes it started, when it leads a group of its own
         bool done = false;
         ~Reaper() {
             if (done) return;
-            kill(pid, SIGKILL);
+            kill(group ? -pid : pid, SIGKILL);
             waitpid(pid, nullptr, 0);
         }
-    } reaper{pid};
+    } reaper{pid, options.interrupt_group};
     while (waitpid(pid, &status, WNOHANG) == 0) {
         if (options.interrupt_when && !result.interrupted && options.interrupt_when()) {
-            kill(pid, options.interrupt_signal);
+            kill(options.interrupt_group ? -pid : pid, options.interrupt_signal);
             result.interrupted = true;
         }
         if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >

@@ -551,6 +551,50 @@ TEST(Campaign, AnEnsembleRunnerMakesTheRunsTheLocalExecutorMakes) {
 // record, not the run: the ensemble runner names it and runs the run to the end, and the campaign
 // counts it done. (A point added to a finished campaign, as a
 // campaign's directory must be the campaign's before its runs' logs can be tampered with.)
+// Ctrl-C at a terminal signals the whole foreground job: the runner and each of its runs, and the
+// runner passes the signal on, so each run gets it twice. Killed by the repeat, a run would lose
+// everything since its last checkpoint while the runner reported it written: here there is no
+// earlier checkpoint (they come every 30 min of wall time), so each run's checkpoint must be the
+// one written at the step it stopped, which its progress file names.
+TEST(Campaign, CtrlCAtTheTerminalStopsEveryRunAtACheckpointThoughEachGetsTheSignalTwice) {
+    const ScratchDir scratch("campaign-ctrl-c");
+    const fs::path file = scratch.path() / "long.toml";
+    std::string campaign = ensemble_campaign("[0.1, 0.3]");
+    campaign.replace(campaign.find("duration = 0.3"), 14, "duration = 60.0");
+    std::ofstream(file) << campaign;
+    const fs::path runs = scratch.path() / "long" / "runs";
+    const std::vector<std::string> points{"medium.area_fraction=0.1", "medium.area_fraction=0.3"};
+    const auto step_of = [](const std::string& progress) {
+        const std::size_t at = progress.find("\nstep = ");
+        return at == std::string::npos ? std::uint64_t{0} : std::stoull(progress.substr(at + 8));
+    };
+    ChildOptions ctrl_c;
+    ctrl_c.interrupt_group = true;
+    ctrl_c.interrupt_when = [&] {
+        for (const std::string& p : points) {
+            const std::string text = read_file(runs / p / "seed1" / "progress.txt");
+            if (text.find("state = running") == std::string::npos || step_of(text) == 0)
+                return false;
+        }
+        return true;
+    };
+    const ChildResult stopped = run_rodsea({"campaign", "run", file.string(), "--out",
+                                            (scratch.path() / "long").string(), "--jobs", "2"},
+                                           scratch.path(), ctrl_c);
+    ASSERT_TRUE(stopped.interrupted) << stopped.out << stopped.err;
+    ASSERT_EQ(stopped.exit_code, 130) << stopped.out << stopped.err;
+    EXPECT_EQ(count_of(stopped.out, "(checkpoint written)"), 2) << stopped.out;
+    EXPECT_EQ(count_of(stopped.out, "was killed by signal"), 0) << stopped.out;
+    for (const std::string& p : points) {
+        const fs::path run = runs / p / "seed1";
+        const std::string progress = read_file(run / "progress.txt");
+        EXPECT_NE(progress.find("state = stopped"), std::string::npos) << p << "\n" << progress;
+        ASSERT_TRUE(fs::exists(run / "checkpoint.h5")) << p;
+        EXPECT_EQ(read_checkpoint(run / "checkpoint.h5").step, step_of(progress)) << p;
+        EXPECT_GT(step_of(progress), 0u) << p;
+    }
+}
+
 TEST(Campaign, AnEnsembleRunnerRunsOnWhenARunsLogCannotBeWritten) {
     const ScratchDir scratch("campaign-ensemble-log");
     const fs::path file = scratch.path() / "together.toml";

@@ -85,6 +85,10 @@ pid_t spawn(const fs::path& executable, const std::vector<std::string>& words,
     return pid;
 }
 
+bool is_stop_signal(int signal) {
+    return signal == SIGINT || signal == SIGTERM || signal == SIGHUP;
+}
+
 std::string log_since(const fs::path& log, std::streamoff from) {
     std::ifstream in(log, std::ios::binary);
     in.seekg(from);
@@ -151,7 +155,10 @@ int run_campaign_locally(const CampaignPaths& paths, const CampaignGrid& grid,
         const auto it = active.find(pid);
         if (it == active.end()) continue;
         const CampaignRun& run = grid.runs[it->second.run];
-        const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        // A run exits 130 or 143 itself once its checkpoint is written; killed by the signal, it
+        // did not write one, and 128 + the signal is the same number.
+        const bool killed = WIFSIGNALED(status);
+        const int code = killed ? 128 + WTERMSIG(status) : WEXITSTATUS(status);
         const double seconds =
             std::chrono::duration<double>(Clock::now() - it->second.started).count();
         if (code == kExitOk) {
@@ -159,9 +166,16 @@ int run_campaign_locally(const CampaignPaths& paths, const CampaignGrid& grid,
             if (!o.quiet)
                 out << "campaign: done " << run.id << " in " << format_duration(seconds) << " ("
                     << tally.done << "/" << tally.mine << " done)" << std::endl;
-        } else if (code == kExitInterrupted || code == kExitTerminated) {
+        } else if (!killed && (code == kExitInterrupted || code == kExitTerminated)) {
             if (!o.quiet)
                 out << "campaign: stopped " << run.id << " (checkpoint written)" << std::endl;
+        } else if (killed && stop_signal != 0 && is_stop_signal(WTERMSIG(status))) {
+            // Stopping was asked for, so it is no failure; only the checkpoint is older.
+            if (!o.quiet)
+                out << "campaign: " << run.id << " was killed by signal " << WTERMSIG(status)
+                    << " before it wrote its checkpoint; the next `campaign run` resumes it from "
+                       "its last checkpoint"
+                    << std::endl;
         } else {
             const std::string message = log_since(paths.log(run), it->second.log_start);
             const bool retry = judge_failure(paths, run, code, message, max_failures, o.quiet, out);

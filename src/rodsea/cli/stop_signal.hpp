@@ -1,7 +1,10 @@
 #pragma once
 // SIGINT, SIGTERM and SIGHUP ask a run to stop at the end of the current step (the handler only
-// sets a flag; the run loop writes the checkpoint). SIGXFSZ is ignored so that a file-size limit
-// shows up as a failed write, handled like a full disk, instead of killing the process.
+// sets a flag; the run loop writes the checkpoint). Another one within a second is the same
+// request delivered twice (to a terminal's process group, passed on by a campaign runner) and is
+// ignored; a later one kills the process, as the default action does. SIGXFSZ is ignored so that
+// a file-size limit shows up as a failed write, handled like a full disk, instead of killing the
+// process.
 namespace rodsea {
 
 // Installs the handlers for its lifetime and restores the previous ones afterwards. Guards nest:
