@@ -20,7 +20,9 @@ in part gets the frame-weighted mean of the two, and steady is the continuation'
 for the earlier table's bins and the shared one, which that analysis did not see whole).
 Every frame must be in exactly one of them (the earlier table made from the first directory's
 frames up to the checkpoint, as a run stopped by a signal leaves them): frames in both, or in
-neither, are refused.
+neither, are refused. Where the first directory holds frames past the checkpoint (a run killed
+or crashed after it), give all the run's directories to one `rodsea analyze` and this script
+the latest (without --continues): that analysis keeps each frame from the part that continues it.
 Units: time s; the rest are numbers (docs/analysis.md).
 """
 import argparse
@@ -123,7 +125,9 @@ def join(earlier, later, full):
     start = later[0][0]
     if any(row[0] > start + 1e-9 for row in earlier):
         fail(f"the earlier table goes past {start:g} s, where the continuation's first bin "
-             "starts: is it the table of the run this directory continues?")
+             "starts: is it the table of the run this directory continues? (if the first "
+             "directory holds frames past the checkpoint, analyse all the run's directories "
+             "with one `rodsea analyze` and give this script the latest, without --continues)")
     # The earlier table's steady flags are its own analysis' window, not the continuation's.
     kept = [list(row[:3]) + [0] + list(row[4:]) for row in earlier if row[0] < start - 1e-9]
     shared = [row for row in earlier if abs(row[0] - start) <= 1e-9]

@@ -5,12 +5,14 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <thread>
 
 #include "child_process.hpp"
 #include "local_slurm_cluster.hpp"
 #include "rodsea/io/checkpoint.hpp"
+#include "rodsea/io/progress_file.hpp"
 #include "rodsea/io/run_lock.hpp"
 #include "rodsea/io/trajectory_reader.hpp"
 #include "run_comparison.hpp"
@@ -564,17 +566,12 @@ TEST(Campaign, CtrlCAtTheTerminalStopsEveryRunAtACheckpointThoughEachGetsTheSign
     std::ofstream(file) << campaign;
     const fs::path runs = scratch.path() / "long" / "runs";
     const std::vector<std::string> points{"medium.area_fraction=0.1", "medium.area_fraction=0.3"};
-    const auto step_of = [](const std::string& progress) {
-        const std::size_t at = progress.find("\nstep = ");
-        return at == std::string::npos ? std::uint64_t{0} : std::stoull(progress.substr(at + 8));
-    };
     ChildOptions ctrl_c;
     ctrl_c.interrupt_group = true;
     ctrl_c.interrupt_when = [&] {
         for (const std::string& p : points) {
-            const std::string text = read_file(runs / p / "seed1" / "progress.txt");
-            if (text.find("state = running") == std::string::npos || step_of(text) == 0)
-                return false;
+            const std::optional<RunProgress> progress = read_progress_file(runs / p / "seed1");
+            if (!progress || progress->state != "running" || progress->step == 0) return false;
         }
         return true;
     };
@@ -587,11 +584,12 @@ TEST(Campaign, CtrlCAtTheTerminalStopsEveryRunAtACheckpointThoughEachGetsTheSign
     EXPECT_EQ(count_of(stopped.out, "was killed by signal"), 0) << stopped.out;
     for (const std::string& p : points) {
         const fs::path run = runs / p / "seed1";
-        const std::string progress = read_file(run / "progress.txt");
-        EXPECT_NE(progress.find("state = stopped"), std::string::npos) << p << "\n" << progress;
+        const std::optional<RunProgress> progress = read_progress_file(run);
+        ASSERT_TRUE(progress) << p;
+        EXPECT_EQ(progress->state, "stopped") << p;
         ASSERT_TRUE(fs::exists(run / "checkpoint.h5")) << p;
-        EXPECT_EQ(read_checkpoint(run / "checkpoint.h5").step, step_of(progress)) << p;
-        EXPECT_GT(step_of(progress), 0u) << p;
+        EXPECT_EQ(read_checkpoint(run / "checkpoint.h5").step, progress->step) << p;
+        EXPECT_GT(progress->step, 0u) << p;
     }
 }
 
