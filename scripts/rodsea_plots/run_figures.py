@@ -105,7 +105,7 @@ class Analysis:
         return int(self.json["steady_state"].get("frames") or 0)
 
     def describe(self):
-        """One line naming the run and its control parameters, under each figure's title."""
+        """Two lines naming the run and its control parameters, under each figure's title."""
         p = self.json["parameters"]
         parts = [str(self.json.get("run", {}).get("directory", self.dir))]
         def number(s, key, spec):
@@ -121,7 +121,9 @@ class Analysis:
                          f"({kind} = {number(s, 'length_mm', '.3g')} mm)")
         if finite(p.get("noise_epsilon_per_mm")):
             parts.append(f"ε = {p['noise_epsilon_per_mm']:.3g} 1/mm")
-        return " · ".join(parts)
+        # The directory on a line of its own: beside the parameters it overflowed the narrow
+        # polar maps' titles.
+        return parts[0] + "\n" + " · ".join(parts[1:])
 
 
 def value_text(scalar, unit=None):
