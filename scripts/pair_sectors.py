@@ -16,7 +16,7 @@ scatter (bins of one map are averaged over the same frames, so this error is a l
 g = 1 is no correlation: along > across beyond contact is a longitudinal flock, across > along
 a transverse one.
 
-Exit codes: 0 done; 2 bad input (nothing printed).
+Exit codes: 0 done; 1 h5py missing; 2 bad input (nothing printed).
 """
 import argparse
 import json
@@ -50,7 +50,12 @@ def locate(path):
 
 
 def read_map(h5_path):
-    import h5py
+    try:
+        import h5py
+    except ImportError:
+        sys.stderr.write("pair_sectors.py: needs h5py: install it with ./scripts/install-deps.sh "
+                         "(Debian's python3-h5py)\n")
+        sys.exit(1)
     with h5py.File(h5_path, "r") as f:
         if "maps/g_r_theta/value" not in f:
             fail(f"{h5_path}: no g(r,θ) map (analyse with --observables corotating)")

@@ -96,11 +96,10 @@ if len(lines) == 2:
     check(abs(float(row["g_along"]) - (1 + 3 * share)) < 5e-4 * (1 + 3 * share),
           f"one shell over 4.5–9 mm: along {row['g_along']}")
 
-for bad, why in ((["--shells", "0,30"], "shells past the map"),
-                 (["--shells", "5,2"], "decreasing shells"),
-                 (["--half-width", "60"], "overlapping sectors"),
-                 ([os.path.join(scratch, "missing")], "no analysis")):
-    args = bad if bad[0].startswith(os.sep) else [analysis, *bad]
+for args, why in (([analysis, "--shells", "0,30"], "shells past the map"),
+                  ([analysis, "--shells", "5,2"], "decreasing shells"),
+                  ([analysis, "--half-width", "60"], "overlapping sectors"),
+                  ([analysis, os.path.join(scratch, "missing")], "one input without an analysis")):
     out = run(*args)
     check(out.returncode == 2 and out.stdout == "" and out.stderr,
           f"{why}: exit {out.returncode}, stdout {out.stdout!r}, stderr {out.stderr!r}")
