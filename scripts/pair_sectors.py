@@ -7,7 +7,8 @@ maximum of g; docs/reproduction.md, Fig. 4a).
 
     scripts/pair_sectors.py ANALYSIS... [--shells R0,R1,...] [--half-width DEG]
 
-ANALYSIS is a run's analysis directory (RUN_DIR/analysis, or RUN_DIR) or its analysis.h5. For
+ANALYSIS is a run's analysis directory (RUN_DIR/analysis, or RUN_DIR), its analysis.json or
+its analysis.h5, read and checked as `rodsea plot` reads them (scripts/rodsea_plots). For
 each shell [R_i, R_i+1) (mm; default: steps of half the polar rod's length, read from the
 analysis, up to the map's range) it prints, as CSV on stdout: the mean g over the bins within
 --half-width degrees (default 30) of the axis, ahead (θ = 0, the way the rods move) and behind
@@ -16,10 +17,10 @@ scatter (bins of one map are averaged over the same frames, so this error is a l
 g = 1 is no correlation: along > across beyond contact is a longitudinal flock, across > along
 a transverse one.
 
-Exit codes: 0 done; 1 h5py missing; 2 bad input (nothing printed).
+Exit codes: 0 done; 1 a Python module missing; 2 bad input; 74 a file that cannot be read
+(nothing is printed unless every input was read).
 """
 import argparse
-import json
 import os
 import sys
 
@@ -27,55 +28,26 @@ sys.dont_write_bytecode = True  # keep the source tree clean of __pycache__
 
 import numpy as np
 
-EXIT_BAD_INPUT = 2
+from rodsea_plots.common import PlotError, finite
+from rodsea_plots.inputs import RunInput, classify
+from rodsea_plots.run_figures import Analysis, read_map
 
 
-def fail(message):
-    sys.stderr.write(f"pair_sectors.py: {message}\n")
-    sys.exit(EXIT_BAD_INPUT)
-
-
-def locate(path):
-    """(analysis.h5, analysis.json or None) of a run's analysis, however the user names it."""
-    if os.path.isdir(path):
-        inner = os.path.join(path, "analysis")
-        directory = inner if os.path.isfile(os.path.join(inner, "analysis.h5")) else path
-        h5 = os.path.join(directory, "analysis.h5")
-    else:
-        h5, directory = path, os.path.dirname(path) or "."
-    if not os.path.isfile(h5):
-        fail(f"{path}: no analysis.h5 (run `rodsea analyze RUN_DIR --observables corotating`)")
-    js = os.path.join(directory, "analysis.json")
-    return h5, js if os.path.isfile(js) else None
-
-
-def read_map(h5_path):
-    try:
-        import h5py
-    except ImportError:
-        sys.stderr.write("pair_sectors.py: needs h5py: install it with ./scripts/install-deps.sh "
-                         "(Debian's python3-h5py)\n")
-        sys.exit(1)
-    with h5py.File(h5_path, "r") as f:
-        if "maps/g_r_theta/value" not in f:
-            fail(f"{h5_path}: no g(r,θ) map (analyse with --observables corotating)")
-        group = f["maps/g_r_theta"]
-        g = np.asarray(group["value"], dtype=float)
-        r_edges = np.asarray(group["r_edges"], dtype=float)
-        theta_edges = np.asarray(group["theta_edges"], dtype=float)
-    if g.shape != (len(r_edges) - 1, len(theta_edges) - 1):
-        fail(f"{h5_path}: g(r,θ) is {g.shape}, its edges say "
-             f"{(len(r_edges) - 1, len(theta_edges) - 1)}")
-    return g, r_edges, theta_edges
-
-
-def polar_length(json_path):
-    if json_path is None:
-        return None
-    with open(json_path) as f:
-        species = json.load(f).get("parameters", {}).get("species", [])
-    lengths = [s.get("length_mm") for s in species if s.get("kind") == "polar_rod"]
-    return float(lengths[0]) if lengths and lengths[0] else None
+def load(path):
+    """(g, r_edges, theta_edges, polar rod length or None) of one run's analysis."""
+    if path.endswith(".h5"):  # an analysis.h5 stands for the analysis.json beside it
+        path = os.path.join(os.path.dirname(path) or ".", "analysis.json")
+    run = classify(path)
+    if not isinstance(run, RunInput):
+        raise PlotError(f"{path}: not a run's analysis (a table or campaign has no g(r,θ) map)")
+    analysis = Analysis(run.analysis_dir)
+    if analysis.observable("corotating") is None:
+        raise PlotError(f"{analysis.path}: no g(r,θ) map "
+                        "(run `rodsea analyze RUN_DIR --observables corotating`)")
+    g, r_edges, theta_edges = read_map(analysis, "g_r_theta")
+    lengths = [s.get("length_mm") for s in analysis.polar]
+    length = lengths[0] if lengths and finite(lengths[0]) and lengths[0] > 0 else None
+    return g, r_edges, theta_edges, length
 
 
 def sector_masks(theta_edges, half_width):
@@ -127,22 +99,27 @@ def parse(argv):
     return a
 
 
+def measure(path, args):
+    g, r_edges, theta_edges, length = load(path)
+    shells = args.shells
+    if shells is None:
+        if length is None:
+            raise PlotError(f"{path}: no polar rod length in its analysis.json; give --shells")
+        shells = list(np.arange(0.0, r_edges[-1] + 1e-9, length / 2))
+    if shells[-1] > r_edges[-1] + 1e-9:
+        raise PlotError(f"{path}: --shells reach {shells[-1]} mm, the map only {r_edges[-1]:g} mm")
+    return shell_means(g, r_edges, theta_edges, shells, np.radians(args.half_width))
+
+
 def main(argv):
     args = parse(argv)
     inputs = []
     for path in args.analyses:  # every input is read before anything is printed
-        h5, js = locate(path)
-        g, r_edges, theta_edges = read_map(h5)
-        shells = args.shells
-        if shells is None:
-            length = polar_length(js)
-            if length is None:
-                fail(f"{path}: no polar rod length in analysis.json; give --shells")
-            shells = list(np.arange(0.0, r_edges[-1] + 1e-9, length / 2))
-        if shells[-1] > r_edges[-1] + 1e-9:
-            fail(f"{path}: --shells reach {shells[-1]} mm, the map only {r_edges[-1]:g} mm")
-        inputs.append((path, shell_means(g, r_edges, theta_edges, shells,
-                                         np.radians(args.half_width))))
+        try:
+            inputs.append((path, measure(path, args)))
+        except PlotError as e:
+            sys.stderr.write(f"pair_sectors.py: {e}\n")
+            return e.code
     names = ("along", "ahead", "behind", "across")
     print("analysis,r_from_mm,r_to_mm," + ",".join(f"g_{n},g_{n}_error" for n in names))
     for path, rows in inputs:

@@ -7,7 +7,7 @@ for 0 ≤ r < 2.25 mm. Within 30° sectors the fraction of bins that carry the v
 the bin centres (8 of the 12 bins in each 30° sector lie within 20°), so the script must print
 exactly: ahead 1 + 2·8/12, behind 1 + 4·8/12, along their mean, across 1 + 8/12 near contact
 and 1 beyond. The default shells (half the polar rod's length, from analysis.json) and explicit
-ones must agree; bad input must print nothing and exit 2.
+ones must agree; bad input must print nothing and exit 2 (74 for a path that does not exist).
 
     /usr/bin/python3 tests/test_pair_sectors.py SOURCE_DIR SCRATCH_DIR
 Exit 77 (skipped) without numpy or h5py.
@@ -55,7 +55,9 @@ def write_analysis(directory):
         f["maps/g_r_theta/r_edges"] = r_edges
         f["maps/g_r_theta/theta_edges"] = theta_edges
     with open(os.path.join(directory, "analysis.json"), "w") as f:
-        json.dump({"parameters": {"species": [{"kind": "apolar_rod", "length_mm": 2.5},
+        json.dump({"observables": {"corotating": {"maps": {"g_r_theta": {"file": "analysis.h5"}}}},
+                   "steady_state": {},
+                   "parameters": {"species": [{"kind": "apolar_rod", "length_mm": 2.5},
                                               {"kind": "polar_rod", "length_mm": 4.5}]}}, f)
 
 
@@ -96,12 +98,14 @@ if len(lines) == 2:
     check(abs(float(row["g_along"]) - (1 + 3 * share)) < 5e-4 * (1 + 3 * share),
           f"one shell over 4.5–9 mm: along {row['g_along']}")
 
-for args, why in (([analysis, "--shells", "0,30"], "shells past the map"),
-                  ([analysis, "--shells", "5,2"], "decreasing shells"),
-                  ([analysis, "--half-width", "60"], "overlapping sectors"),
-                  ([analysis, os.path.join(scratch, "missing")], "one input without an analysis")):
+# 2: bad input; 74: a file that cannot be read (rodsea plot's codes, whose readers it shares)
+for args, code, why in (([analysis, "--shells", "0,30"], 2, "shells past the map"),
+                        ([analysis, "--shells", "5,2"], 2, "decreasing shells"),
+                        ([analysis, "--half-width", "60"], 2, "overlapping sectors"),
+                        ([analysis, os.path.join(scratch, "missing")], 74,
+                         "one input without an analysis")):
     out = run(*args)
-    check(out.returncode == 2 and out.stdout == "" and out.stderr,
+    check(out.returncode == code and out.stdout == "" and out.stderr,
           f"{why}: exit {out.returncode}, stdout {out.stdout!r}, stderr {out.stderr!r}")
 
 for f in failures:
