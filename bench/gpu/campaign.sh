@@ -15,6 +15,11 @@
 # nothing, so a run goes on only within the same call. The prebuilt rodsea must be this tree's
 # (`campaign status` takes the directory's --scale and --duration since 027b470).
 #
+# ANALYZE="OPTIONS[|OPTIONS...]" then analyses every run on the device, where its trajectory is,
+# once per '|'-separated set of `rodsea analyze` options, into RUN/analysis-1, -2, ...; their
+# tables and analysis.json come back in analysis.tar.gz (analysis.h5 too, where under 8 MB), e.g.
+#   ANALYZE="--observables medium_velocity --from 1|--observables medium_velocity --from 1 --param medium_velocity.lag=10"
+#
 # BACKEND=cpu runs the same on the host's cores (to check the script where no GPU is).
 set -uo pipefail
 cd "$(dirname "$0")/../.." || exit 2
@@ -53,4 +58,28 @@ for run in "$dir"/runs/*/*/; do
   done
 done
 [ ${#files[@]} -gt 0 ] && tar -czf "$out/runs.tar.gz" "${files[@]}" && ls -la "$out/runs.tar.gz"
+
+if [ -n "${ANALYZE:-}" ]; then
+  tables=()
+  IFS='|' read -r -a analyses <<<"$ANALYZE"
+  for run in "$dir"/runs/*/*/; do
+    [ -f "${run}trajectory.h5" ] || continue
+    for k in "${!analyses[@]}"; do
+      into="${run}analysis-$((k + 1))"
+      # Word splitting of the options is wanted: each set is a command line's tail.
+      # shellcheck disable=SC2086
+      echo "rodsea analyze $run ${analyses[$k]} --out $into" | tee -a "$log"
+      "$rodsea" analyze "$run" ${analyses[$k]} --out "$into" --quiet >>"$log" 2>&1 ||
+        echo "analysis $((k + 1)) of $run failed: exit $?" | tee -a "$log"
+      for f in "$into"/*; do
+        case "$f" in
+        *.h5) [ "$(stat -c %s "$f")" -lt 8000000 ] && tables+=("$f") ;;
+        *) [ -f "$f" ] && tables+=("$f") ;;
+        esac
+      done
+    done
+  done
+  [ ${#tables[@]} -gt 0 ] && tar -czf "$out/analysis.tar.gz" "${tables[@]}" &&
+    ls -la "$out/analysis.tar.gz"
+fi
 [ "$status" = 0 ] || [ "$status" = 124 ]
