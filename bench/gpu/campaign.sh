@@ -16,8 +16,9 @@
 # (`campaign status` takes the directory's --scale and --duration since 027b470).
 #
 # ANALYZE="OPTIONS[|OPTIONS...]" then analyses every run on the device, where its trajectory is,
-# once per '|'-separated set of `rodsea analyze` options, into RUN/analysis-1, -2, ...; their
-# tables and analysis.json come back in analysis.tar.gz (analysis.h5 too, where under 8 MB), e.g.
+# once per '|'-separated set of `rodsea analyze` options, into RUN/analysis-1, -2, ... (all at
+# once, one process each); their tables and analysis.json come back in analysis.tar.gz
+# (analysis.h5 too, where under 8 MB), e.g.
 #   ANALYZE="--observables medium_velocity --from 1|--observables medium_velocity --from 1 --param medium_velocity.lag=10"
 #
 # BACKEND=cpu runs the same on the host's cores (to check the script where no GPU is).
@@ -60,26 +61,34 @@ done
 [ ${#files[@]} -gt 0 ] && tar -czf "$out/runs.tar.gz" "${files[@]}" && ls -la "$out/runs.tar.gz"
 
 if [ -n "${ANALYZE:-}" ]; then
-  tables=()
   IFS='|' read -r -a analyses <<<"$ANALYZE"
+  # All at once: each is one process, and the device has far more cores than analyses.
+  intos=()
   for run in "$dir"/runs/*/*/; do
     [ -f "${run}trajectory.h5" ] || continue
     for k in "${!analyses[@]}"; do
       into="${run}analysis-$((k + 1))"
+      intos+=("$into")
+      echo "rodsea analyze $run ${analyses[$k]} --out $into" | tee -a "$log"
       # Word splitting of the options is wanted: each set is a command line's tail.
       # shellcheck disable=SC2086
-      echo "rodsea analyze $run ${analyses[$k]} --out $into" | tee -a "$log"
-      "$rodsea" analyze "$run" ${analyses[$k]} --out "$into" --quiet >>"$log" 2>&1 ||
-        echo "analysis $((k + 1)) of $run failed: exit $?" | tee -a "$log"
-      for f in "$into"/*; do
-        case "$f" in
-        *.h5) [ "$(stat -c %s "$f")" -lt 8000000 ] && tables+=("$f") ;;
-        *) [ -f "$f" ] && tables+=("$f") ;;
-        esac
-      done
+      { "$rodsea" analyze "$run" ${analyses[$k]} --out "$into" --quiet >"$into.log" 2>&1 ||
+        echo "analysis failed: exit $?" >>"$into.log"; } &
+    done
+  done
+  wait
+  tables=()
+  for into in "${intos[@]}"; do
+    [ -s "$into.log" ] && { echo "$into:"; cat "$into.log"; } | tee -a "$log"
+    for f in "$into"/*; do
+      case "$f" in
+      *.h5) [ "$(stat -c %s "$f")" -lt 8000000 ] && tables+=("$f") ;;
+      *) [ -f "$f" ] && tables+=("$f") ;;
+      esac
     done
   done
   [ ${#tables[@]} -gt 0 ] && tar -czf "$out/analysis.tar.gz" "${tables[@]}" &&
     ls -la "$out/analysis.tar.gz"
 fi
+
 [ "$status" = 0 ] || [ "$status" = 124 ]
