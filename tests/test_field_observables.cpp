@@ -122,6 +122,26 @@ TEST(FieldsObservable, MapsThatWouldNotFitInMemoryAreRefusedByKey) {
     EXPECT_NO_THROW(check_field_series_memory(setup, resolved(setup, o)));
 }
 
+TEST(FieldsObservable, DefaultRadiiFitABoxNarrowerThanTwoPolarRods) {
+    // A 16 mm box (L/2 = 8 mm) is under 2 ℓ_p = 9 mm, the unclamped default of defects.pair: a
+    // run this small must still be analysable for any observable, defects included, with the
+    // radius cut to L/2 as every other automatic radius is; a value the user gives is not cut.
+    const AnalysisSetup setup = make_setup(16.0, {{1.0, 1.0, 0.0, 0}, {2.0, 2.0, 0.0, 1}}, 1);
+    const AnalysisOptions o = resolved(setup);
+    EXPECT_EQ(o.field_cell, 4.5);
+    EXPECT_EQ(o.defect_link, 4.5);
+    EXPECT_EQ(o.defect_pair, 8.0);
+    AnalysisOptions given;
+    given.defect_pair = 9.0;
+    try {
+        resolved(setup, given);
+        FAIL() << "accepted";
+    } catch (const InvalidParameter& e) {
+        EXPECT_NE(std::string(e.what()).find("defects.pair"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("L/2 = 8"), std::string::npos) << e.what();
+    }
+}
+
 // Medium rods at the centres of 2 mm cells whose axes follow a ± pair summed over periodic
 // images (periodic, so exactly two defects on the torus), the pair at (xp, y) and (xm, y).
 std::vector<Body> medium_with_pair(double side, double xp, double xm, double y) {

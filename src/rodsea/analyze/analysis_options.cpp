@@ -148,7 +148,7 @@ std::vector<KeySpec> make_keys() {
                  "averages that agitation out and leaves the flow"),
         real("fields", "cell")
             .unit("mm")
-            .def_text("ℓ_p")
+            .def_text("min(L/2, ℓ_p)")
             .range(closed(0.01, 1e6))
             .doc("cell side of the coarse-grained fields (cloud-in-cell weights) and of the "
                  "director grid the defects are found on"),
@@ -164,12 +164,12 @@ std::vector<KeySpec> make_keys() {
                  "φ_p / (φ_p + φ_medium), exceeds this; the interface is that contour"),
         real("defects", "link")
             .unit("mm")
-            .def_text("fields.cell")
+            .def_text("min(L/2, fields.cell)")
             .range(closed(1e-3, 1e6))
             .doc("farthest a defect moves between frames and keeps its track"),
         real("defects", "pair")
             .unit("mm")
-            .def_text("2 fields.cell")
+            .def_text("min(L/2, 2 fields.cell)")
             .range(closed(1e-3, 1e6))
             .doc("farthest apart a ± pair is created or annihilated"),
         integer("", "blocks")
@@ -232,9 +232,11 @@ AnalysisOptions automatic_analysis_options(AnalysisOptions o, const AnalysisSetu
     pick(o.flock_eps, 0.5 * lp);
     pick(o.segregation_cell, 2.0 * lp);
     pick(o.medium_r_max, std::min(half, std::max(o.medium_distance, o.medium_bin)));
-    pick(o.field_cell, lp);
-    pick(o.defect_link, o.field_cell);
-    pick(o.defect_pair, 2.0 * o.field_cell);
+    // Clamped like the radii above: a small box must not fail on a default the user never set,
+    // for an observable not asked for.
+    pick(o.field_cell, std::min(half, lp));
+    pick(o.defect_link, std::min(half, o.field_cell));
+    pick(o.defect_pair, std::min(half, 2.0 * o.field_cell));
     return o;
 }
 

@@ -35,11 +35,11 @@ struct AnalysisOptions {
     double medium_r_max = kAuto;     // mm; auto: min(L/2, d)
     double medium_bin = 1.0;         // mm
     int medium_lag = 0;              // frames; 0: the instantaneous velocities
-    double field_cell = kAuto;       // mm; auto: ℓ_p
+    double field_cell = kAuto;       // mm; auto: min(L/2, ℓ_p)
     int field_every = 1;             // maps of every k-th frame kept
     double interface_level = 0.5;    // polar share of the local area fraction
-    double defect_link = kAuto;      // mm; auto: fields.cell
-    double defect_pair = kAuto;      // mm; auto: 2 fields.cell
+    double defect_link = kAuto;      // mm; auto: min(L/2, fields.cell)
+    double defect_pair = kAuto;      // mm; auto: min(L/2, 2 fields.cell)
     int blocks = 4;                  // time blocks for window-average error bars
 };
 
