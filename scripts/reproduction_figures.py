@@ -224,6 +224,12 @@ FIG5B_PROFILES = [
     for phi in ("0.05", "0.20", "0.50")
 ]
 
+# Fig. 5b at the paper's d = 100 mm: the 214 mm box on an H100, t = 1-11.6 s (fig5b-gpu/). Each
+# time base of the velocities (`medium_velocity.lag`): (label, file infix).
+FIG5B_GPU = f"{DATA}/fig5b-gpu"
+FIG5B_GPU_PHI = ("0.05", "0.20", "0.50")
+FIG5B_GPU_LAGS = [("instantaneous", ""), ("over 0.1 s", "lag0.1s_"), ("over 1 s", "lag1s_")]
+
 
 class TableError(Exception):
     pass
@@ -626,6 +632,46 @@ def draw_fig5b(plt):
     return fig, dump
 
 
+def draw_fig5b_gpu(plt):
+    """At the paper's d in a 214 mm box: the medium's mean velocity along the rods' axis against r
+    (the flow the rods drive, from 1 s displacements), and the comoving-frame speed at d against
+    φ_a for each time base of the velocities (what MODEL.md reads as the paper's |v|)."""
+    fig, (along, at_d) = plt.subplots(1, 2, figsize=(10.0, 3.8))
+    dump = {}
+    for phi, colour in zip(FIG5B_GPU_PHI, ("C0", "C1", "C2")):
+        relative = f"{FIG5B_GPU}/medium_velocity_lag1s_phi_a{phi}.csv"
+        t = read_csv(relative)
+        keep = column(t, "pairs", relative) > 0
+        r = column(t, "r", relative)[keep]
+        v = column(t, "v_along", relative)[keep]
+        along.plot(r, v, color=colour, lw=1.4, label=f"φ_a = {phi}")
+        dump[f"v_along over 1 s: φ_a = {phi}"] = {"x": r.tolist(), "y": v.tolist()}
+    along.axhline(0.0, color="0.6", lw=0.8)
+    along.axvline(100.0, color="0.6", lw=0.8, ls=":")
+    along.set_xscale("log")
+    along.set_xlabel("distance from a polar rod, r (mm)")
+    along.set_ylabel("medium velocity along the rod's axis,\nfrom 1 s displacements (mm/s)")
+    along.legend(loc="upper right", fontsize=8)
+    phis = [float(phi) for phi in FIG5B_GPU_PHI]
+    for (label, infix), marker in zip(FIG5B_GPU_LAGS, ("o", "s", "^")):
+        means, errors = [], []
+        for phi in FIG5B_GPU_PHI:
+            relative = f"{FIG5B_GPU}/medium_velocity_{infix}phi_a{phi}.summary.csv"
+            t = read_csv(relative)
+            means.append(float(column(t, "medium_speed_at_d", relative)[0]))
+            errors.append(float(column(t, "medium_speed_at_d_err", relative)[0]))
+        at_d.errorbar(phis, means, yerr=errors, marker=marker, capsize=3, lw=1.2, label=label)
+        dump[f"speed at d: {label}"] = {"x": phis, "y": means, "err": errors}
+    at_d.set_ylim(bottom=0.0)
+    at_d.set_xlabel("medium area fraction φ_a")
+    at_d.set_ylabel("|v_j − v_i| at d = 100 mm (mm/s)")
+    at_d.legend(loc="lower right", fontsize=8, title="velocities", title_fontsize=8)
+    fig.suptitle("Medium around polar rods at the paper's d: 214 mm box (H100), φ_p = 0.05, "
+                 "D_r = 0, t = 1–11.6 s", fontsize=10)
+    fig.tight_layout()
+    return fig, dump
+
+
 def bin_means(t, name, relative, width):
     """`name` in means of `width` consecutive 1 s bins of a series table, at the bins' middles
     (a shorter remainder at the end is left out)."""
@@ -878,7 +924,7 @@ FIGURES = {"fig1c": draw_fig1c, "fig1c-series": draw_fig1c_series,
            "dilute-choices": draw_dilute_choices, "dilute-seeds": draw_dilute_seeds,
            "fig1f": draw_fig1f,
            "beads": draw_beads, "beads-light": draw_beads_light, "fig4a": draw_fig4a,
-           "fig5b": draw_fig5b}
+           "fig5b": draw_fig5b, "fig5b-gpu": draw_fig5b_gpu}
 
 
 def main(argv):

@@ -329,3 +329,33 @@ for mass, runs in figures.DILUTE_SEED_SERIES.items():
         seeds_checked += 1
 assert len(seeds) == seeds_checked, sorted(seeds)
 print(f"checked {seeds_checked} curves of reproduction-dilute-seeds.png against their series")
+
+# Fig. 5b at the paper's d: each point is its summary's comoving-frame speed at d with its error,
+# one curve per time base of the velocities, and each profile is its table's v_along wherever the
+# shell holds pairs.
+fig5b = drawn_figure("fig5b-gpu")
+fig5b_checked = 0
+for label, infix in figures.FIG5B_GPU_LAGS:
+    means, errors = [], []
+    for phi in figures.FIG5B_GPU_PHI:
+        col, rows = read_table(os.path.join(
+            source, f"{figures.FIG5B_GPU}/medium_velocity_{infix}phi_a{phi}.summary.csv"))
+        assert len(rows) == 1, (label, phi)
+        means.append(float(rows[0][col["medium_speed_at_d"]]))
+        errors.append(float(rows[0][col["medium_speed_at_d_err"]]))
+    curve = fig5b[f"speed at d: {label}"]
+    assert same(curve["x"], [float(phi) for phi in figures.FIG5B_GPU_PHI]), label
+    assert same(curve["y"], means) and same(curve["err"], errors), label
+    fig5b_checked += len(means)
+for phi in figures.FIG5B_GPU_PHI:
+    col, rows = read_table(os.path.join(
+        source, f"{figures.FIG5B_GPU}/medium_velocity_lag1s_phi_a{phi}.csv"))
+    kept = [r for r in rows if float(r[col["pairs"]]) > 0]
+    curve = fig5b[f"v_along over 1 s: φ_a = {phi}"]
+    assert same(curve["x"], [float(r[col["r"]]) for r in kept]), phi
+    assert same(curve["y"], [float(r[col["v_along"]]) for r in kept]), phi
+    # The profile reaches the paper's d = 100 mm: the box was chosen for it.
+    assert curve["x"][-1] >= 100.0, curve["x"][-1]
+    fig5b_checked += 1
+print(f"checked {fig5b_checked} points and profiles of reproduction-fig5b-gpu.png against their "
+      "tables")
