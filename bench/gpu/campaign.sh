@@ -35,6 +35,7 @@ mkdir -p "$out"
 }
 export LD_LIBRARY_PATH="$PWD/.gpu-prebuilt/lib:$PWD/.gpu-prebuilt${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 rodsea=.gpu-prebuilt/rodsea
+[ -f .gpu-prebuilt/fonts/fonts.conf ] && export FONTCONFIG_FILE="$PWD/.gpu-prebuilt/fonts/fonts.conf"
 dir=${CAMPAIGN_DIR:-out/device-campaign}
 log=$out/campaign.log
 echo "prebuilt rodsea of $(tr '\n' ' ' <.gpu-prebuilt/commit)" | tee "$log"

@@ -8,7 +8,9 @@
 #
 #   bench/gpu/prebuild.sh --cli     also the whole `rodsea` command (from build/, configured with
 #                                   CUDA found) and the Debian libraries it links (HDF5, FFTW,
-#                                   Cairo, toml++ and theirs; ~35 MB) in .gpu-prebuilt/lib, for
+#                                   Cairo, toml++ and theirs; ~35 MB) in .gpu-prebuilt/lib, and
+#                                   the DejaVu fonts its pictures need in .gpu-prebuilt/fonts
+#                                   (there: FONTCONFIG_FILE=.gpu-prebuilt/fonts/fonts.conf), for
 #                                   runs and campaigns on the device:
 #   run(command="LD_LIBRARY_PATH=.gpu-prebuilt/lib .gpu-prebuilt/rodsea campaign run ... --backend gpu",
 #       carry=[".gpu-prebuilt"])
@@ -19,7 +21,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 mode=${1:-}
-case "$mode" in "" | --cli | --cli-only) ;; *) sed -n 2,18p "$0" >&2; exit 2 ;; esac
+case "$mode" in "" | --cli | --cli-only) ;; *) sed -n 2,20p "$0" >&2; exit 2 ;; esac
 rm -rf .gpu-prebuilt
 mkdir -p .gpu-prebuilt
 if [ "$mode" != --cli-only ]; then
@@ -42,6 +44,21 @@ if [ -n "$mode" ]; then
   ldd build/rodsea | awk '$3 ~ /^\// {print $3}' |
     grep -vE "/(libc|libm|libstdc\+\+|libgcc_s|ld-linux[^/]*|libpthread|libdl|librt|libresolv)\.so" |
     while read -r lib; do cp -L "$lib" .gpu-prebuilt/lib/; done
+  # The device has no fonts and no fontconfig setup: without these a picture made there
+  # (`rodsea render`, `movie`) writes its φ and σ as empty boxes.
+  # FONTCONFIG_FILE=.gpu-prebuilt/fonts/fonts.conf there (campaign.sh sets it).
+  mkdir -p .gpu-prebuilt/fonts
+  for face in "DejaVu Sans" "DejaVu Sans:bold"; do
+    cp "$(fc-match -f '%{file}' "$face")" .gpu-prebuilt/fonts/
+  done
+  cat >.gpu-prebuilt/fonts/fonts.conf <<'CONF'
+<?xml version="1.0"?>
+<!DOCTYPE fontconfig SYSTEM "urn:fontconfig:fonts.dtd">
+<fontconfig>
+  <dir prefix="relative">.</dir>
+  <cachedir>/tmp/rodsea-fontconfig</cachedir>
+</fontconfig>
+CONF
 fi
 git rev-parse HEAD >.gpu-prebuilt/commit
 git diff --quiet HEAD || echo "(with uncommitted changes)" >>.gpu-prebuilt/commit
