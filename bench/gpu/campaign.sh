@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # A campaign's runs stepped on the device machine's GPU as one ensemble, for as long as a lease
-# allows, with the whole `rodsea` command that `bench/gpu/prebuild.sh --cli` put in .gpu-prebuilt/:
+# allows, with the whole `rodsea` command that `bench/gpu/prebuild.sh --cli` (or --cli-only) put in
+# .gpu-prebuilt/:
 #
 #   bench/gpu/campaign.sh CAMPAIGN [campaign run options: --scale F --duration T ...]
 #   run(command="bench/gpu/campaign.sh ...", carry=[".gpu-prebuilt"])
@@ -12,25 +13,27 @@
 # (every run's config.toml, progress.txt and timeseries.csv). A run continues only with its
 # trajectory.h5 (the checkpoint continues the frames it holds), and a large box's trajectory is
 # far over what comes back: the trajectories and checkpoints stay on the device, which keeps
-# nothing, so a run goes on only within the same call. The prebuilt rodsea must be this tree's
+# nothing, so a run goes on only within the same lease (the same command again, while the machine
+# is still warm, continues every run from its checkpoint). The prebuilt rodsea must be this tree's
 # (`campaign status` takes the directory's --scale and --duration since 027b470).
 #
 # ANALYZE="OPTIONS[|OPTIONS...]" then analyses every run on the device, where its trajectory is,
-# once per '|'-separated set of `rodsea analyze` options, into RUN/analysis-1, -2, ... (all at
-# once, one process each); their tables and analysis.json come back in analysis.tar.gz
-# (analysis.h5 too, where under 8 MB), e.g.
+# once per '|'-separated set of `rodsea analyze` options (newlines count as spaces), into
+# RUN/analysis-1, -2, ... (all at once, one process each); their tables and analysis.json come
+# back in analysis.tar.gz (analysis.h5 too, where under 8 MB), and a failed analysis makes the
+# script exit 1 after everything else is done, e.g.
 #   ANALYZE="--observables medium_velocity --from 1|--observables medium_velocity --from 1 --param medium_velocity.lag=10"
 #
 # BACKEND=cpu runs the same on the host's cores (to check the script where no GPU is).
 set -uo pipefail
 cd "$(dirname "$0")/../.." || exit 2
-[ $# -ge 1 ] || { sed -n 2,18p "$0"; exit 2; }
+[ $# -ge 1 ] || { sed -n 2,27p "$0"; exit 2; }
 campaign=$1
 shift
 out=${OUT:-bench/gpu/out}
 mkdir -p "$out"
 [ -x .gpu-prebuilt/rodsea ] || {
-  echo "no .gpu-prebuilt/rodsea: run bench/gpu/prebuild.sh --cli here and carry .gpu-prebuilt" >&2
+  echo "no .gpu-prebuilt/rodsea: run bench/gpu/prebuild.sh --cli-only here and carry .gpu-prebuilt" >&2
   exit 2
 }
 export LD_LIBRARY_PATH="$PWD/.gpu-prebuilt/lib:$PWD/.gpu-prebuilt${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
@@ -61,9 +64,11 @@ for run in "$dir"/runs/*/*/; do
 done
 [ ${#files[@]} -gt 0 ] && tar -czf "$out/runs.tar.gz" "${files[@]}" && ls -la "$out/runs.tar.gz"
 
+analyses_failed=0
 if [ -n "${ANALYZE:-}" ]; then
-  IFS='|' read -r -a analyses <<<"$ANALYZE"
-  # All at once: each is one process, and the device has far more cores than analyses.
+  # read stops at a newline: a value written over several lines is one line of options.
+  IFS='|' read -r -a analyses <<<"${ANALYZE//$'\n'/ }"
+  # All at once: each is one process, and the device has 16 cores.
   intos=()
   for run in "$dir"/runs/*/*/; do
     [ -f "${run}trajectory.h5" ] || continue
@@ -81,6 +86,7 @@ if [ -n "${ANALYZE:-}" ]; then
   tables=()
   for into in "${intos[@]}"; do
     [ -s "$into.log" ] && { echo "$into:"; cat "$into.log"; } | tee -a "$log"
+    grep -q "^analysis failed" "$into.log" 2>/dev/null && analyses_failed=1
     for f in "$into"/*; do
       case "$f" in
       *.h5) [ "$(stat -c %s "$f")" -lt 8000000 ] && tables+=("$f") ;;
@@ -92,4 +98,5 @@ if [ -n "${ANALYZE:-}" ]; then
     ls -la "$out/analysis.tar.gz"
 fi
 
+[ "$analyses_failed" = 0 ] || exit 1
 [ "$status" = 0 ] || [ "$status" = 124 ]

@@ -17,26 +17,31 @@
 #   bench/gpu/prebuild.sh --cli-only  the `rodsea` command and its libraries alone: a lease that only
 #                                   runs campaigns (bench/gpu/campaign.sh) needs neither the tests
 #                                   nor the benchmarks, whose CUDA build takes a 2-core machine
-#                                   tens of minutes
+#                                   tens of minutes (this takes seconds where build/ is current)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 mode=${1:-}
 case "$mode" in "" | --cli | --cli-only) ;; *) sed -n 2,20p "$0" >&2; exit 2 ;; esac
-rm -rf .gpu-prebuilt
-mkdir -p .gpu-prebuilt
+# Everything is built before the old .gpu-prebuilt/ goes: a failed build leaves it as it was.
 if [ "$mode" != --cli-only ]; then
   cmake -S . -B build-gpu -G Ninja -DCMAKE_BUILD_TYPE=Release -DRODSEA_ENGINE_ONLY=ON \
     -DRODSEA_CUDA=ON -DRODSEA_BUILD_TESTS=ON -DRODSEA_BUILD_BENCHMARKS=ON >/dev/null
   cmake --build build-gpu --target rodsea_gpu_bench rodsea_gpu_validate rodsea_engine_tests \
     rodsea_cuda_tests
-  cp build-gpu/bench/gpu/rodsea_gpu_bench build-gpu/bench/gpu/rodsea_gpu_validate \
-    build-gpu/tests/rodsea_engine_tests build-gpu/tests/rodsea_cuda_tests .gpu-prebuilt/
-  cp "$(ldd build-gpu/bench/gpu/rodsea_gpu_bench | awk '/libgomp/ {print $3}')" .gpu-prebuilt/
 fi
 if [ -n "$mode" ]; then
   cmake --build build --target rodsea
   [ -f build/src/librodsea_gpu.a ] ||
     { echo "build/ has no CUDA: configure it where nvcc is found" >&2; exit 1; }
+fi
+rm -rf .gpu-prebuilt
+mkdir -p .gpu-prebuilt
+if [ "$mode" != --cli-only ]; then
+  cp build-gpu/bench/gpu/rodsea_gpu_bench build-gpu/bench/gpu/rodsea_gpu_validate \
+    build-gpu/tests/rodsea_engine_tests build-gpu/tests/rodsea_cuda_tests .gpu-prebuilt/
+  cp "$(ldd build-gpu/bench/gpu/rodsea_gpu_bench | awk '/libgomp/ {print $3}')" .gpu-prebuilt/
+fi
+if [ -n "$mode" ]; then
   cp build/rodsea .gpu-prebuilt/
   mkdir -p .gpu-prebuilt/lib
   # Every library it links but the C and C++ runtimes, which the device's own system provides
