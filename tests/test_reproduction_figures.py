@@ -332,7 +332,7 @@ print(f"checked {seeds_checked} curves of reproduction-dilute-seeds.png against 
 
 # Fig. 5b at the paper's d: each point is its summary's comoving-frame speed at d with its error,
 # one curve per time base of the velocities, and each profile is its table's v_along wherever the
-# shell holds pairs.
+# shell holds enough pairs.
 fig5b = drawn_figure("fig5b-gpu")
 fig5b_checked = 0
 for label, infix in figures.FIG5B_GPU_LAGS:
@@ -350,7 +350,7 @@ for label, infix in figures.FIG5B_GPU_LAGS:
 for phi in figures.FIG5B_GPU_PHI:
     col, rows = read_table(os.path.join(
         source, f"{figures.FIG5B_GPU}/medium_velocity_lag1s_phi_a{phi}.csv"))
-    kept = [r for r in rows if float(r[col["pairs"]]) > 0]
+    kept = [r for r in rows if float(r[col["pairs"]]) >= figures.FIG5B_GPU_MIN_PAIRS]
     curve = fig5b[f"v_along over 1 s: φ_a = {phi}"]
     assert same(curve["x"], [float(r[col["r"]]) for r in kept]), phi
     assert same(curve["y"], [float(r[col["v_along"]]) for r in kept]), phi
