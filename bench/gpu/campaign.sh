@@ -10,11 +10,13 @@
 # run write its checkpoint (exit 124 from timeout, then), and their record comes back in $OUT
 # (or bench/gpu/out) in two files, as the device returns eight at most: campaign.log (the plan,
 # the progress with the ensemble's steps/s, and `campaign status` at the end) and runs.tar.gz
-# (every run's config.toml, progress.txt and timeseries.csv). A run continues only with its
-# trajectory.h5 (the checkpoint continues the frames it holds), and a large box's trajectory is
-# far over what comes back: the trajectories and checkpoints stay on the device, which keeps
-# nothing, so a run goes on only within the same lease (the same command again, while the machine
-# is still warm, continues every run from its checkpoint). The prebuilt rodsea must be this tree's
+# (every run's config.toml, progress.txt, timeseries.csv and checkpoint.h5). A large box's
+# trajectory is far over what comes back and stays on the device, which keeps nothing: the same
+# command again, while the machine is still warm, continues every run in place; after that, a
+# run goes on from its checkpoint alone (a few MB), in a later lease or on the CPU, with
+# `rodsea run --continue RUN/checkpoint.h5 --out DIR` (docs/running.md), its earlier frames lost.
+# Where the checkpoints would take runs.tar.gz over 15 MB they stay behind, as the log says.
+# The prebuilt rodsea must be this tree's
 # (`campaign status` takes the directory's --scale and --duration since 027b470).
 #
 # ANALYZE="OPTIONS[|OPTIONS...]" then analyses every run on the device, where its trajectory is,
@@ -27,7 +29,7 @@
 # BACKEND=cpu runs the same on the host's cores (to check the script where no GPU is).
 set -uo pipefail
 cd "$(dirname "$0")/../.." || exit 2
-[ $# -ge 1 ] || { sed -n 2,27p "$0"; exit 2; }
+[ $# -ge 1 ] || { sed -n 2,29p "$0"; exit 2; }
 campaign=$1
 shift
 out=${OUT:-bench/gpu/out}
@@ -62,7 +64,19 @@ for run in "$dir"/runs/*/*/; do
     [ -f "$run$f" ] && files+=("$run$f")
   done
 done
-[ ${#files[@]} -gt 0 ] && tar -czf "$out/runs.tar.gz" "${files[@]}" && ls -la "$out/runs.tar.gz"
+if [ ${#files[@]} -gt 0 ]; then
+  checkpoints=()
+  for run in "$dir"/runs/*/*/; do
+    [ -f "${run}checkpoint.h5" ] && checkpoints+=("${run}checkpoint.h5")
+  done
+  tar -czf "$out/runs.tar.gz" "${files[@]}" "${checkpoints[@]}"
+  # The device returns files of 16 MiB at most.
+  if [ "$(stat -c %s "$out/runs.tar.gz")" -gt 15000000 ]; then
+    echo "runs.tar.gz without the checkpoints: with them it is over 15 MB" | tee -a "$log"
+    tar -czf "$out/runs.tar.gz" "${files[@]}"
+  fi
+  ls -la "$out/runs.tar.gz"
+fi
 
 analyses_failed=0
 if [ -n "${ANALYZE:-}" ]; then
