@@ -107,6 +107,10 @@ FIG4A_BLOCK = 5.0
 FIG4A_88MM = [(sigma, f"{DATA}/fig4a-88mm/medium.area_fraction=0.75,medium.aspect_ratio={sigma:g}"
                ".series.csv", window)
               for sigma, window in ((1.25, None), (3.125, (30.0, 60.0)), (5.625, (40.0, 60.0)))]
+# A second seed of σ = 5.625 in the 88 mm box, run 60 s: (σ, series table, window of its P),
+# drawn like FIG4A_88MM's runs (dash-dotted in time, a diamond against σ).
+FIG4A_88MM_SEED2 = (5.625, f"{DATA}/fig4a-88mm/medium.area_fraction=0.75,medium.aspect_ratio=5.625"
+                    ".seed2.series.csv", (40.0, 60.0))
 # A second seed of σ = 5.625 in the 38 mm box, run 45 s: its P over FIG4A_SEED2_WINDOW.
 FIG4A_SEED2 = (5.625, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspect_ratio=5.625"
                ".seed2.series.csv")
@@ -569,6 +573,17 @@ def draw_fig4a(plt):
         dump.setdefault("P, 88 mm", {"x": [], "y": [], "err": []})
         for key, value in (("x", sigma), ("y", y), ("err", err)):
             dump["P, 88 mm"][key].append(value)
+    sigma, relative, window = FIG4A_88MM_SEED2
+    t = read_csv(relative)
+    middle = 0.5 * (column(t, "t_from", relative) + column(t, "t_to", relative))
+    p = column(t, "P_polar", relative)
+    series.plot(middle, p, color=f"C{k_of[sigma]}", lw=1.0, ls="-.",
+                label=f"σ = {sigma:g}, 88 mm box, seed 2")
+    dump[f"P(t): σ = {sigma:g}, 88 mm, seed 2"] = {"x": middle.tolist(), "y": p.tolist()}
+    _, y, err, _ = window_points([(sigma, relative)], window, FIG4A_BLOCK)[0]
+    points.errorbar([sigma], [y], yerr=[err], fmt="D", ms=6, mfc="none", capsize=3, color="C3",
+                    label=f"P, 88 mm box, seed 2 ({window[0]:g}–{window[1]:g} s)")
+    dump["P, 88 mm, seed 2"] = {"x": [sigma], "y": [y], "err": [err]}
     points.legend(loc="best", fontsize=7)
     series.legend(loc="best", fontsize=7)
     draw_fig4a_bands(fig.axes[2], dump)
@@ -584,6 +599,8 @@ def draw_fig4a_bands(ax, dump):
             for sigma, relative in FIG4A]
     runs += [(f"σ = {sigma:g}, 88 mm", relative, f"C{k_of[sigma]}", "--", 98)
              for sigma, relative, _ in FIG4A_88MM]
+    sigma, relative, _ = FIG4A_88MM_SEED2
+    runs.append((f"σ = {sigma:g}, 88 mm, seed 2", relative, f"C{k_of[sigma]}", "-.", 98))
     floors = set()
     for label, relative, colour, style, rods in runs:
         if not os.path.isfile(os.path.join(ROOT, relative)):

@@ -217,12 +217,21 @@ for sigma, relative, window in figures.FIG4A_88MM:
 if expected_88mm:
     check_points("fig4a 88 mm", list(zip(fig4a["P, 88 mm"]["x"], fig4a["P, 88 mm"]["y"])),
                  expected_88mm, 1)
+# Its second seed of σ = 5.625 likewise: P(t) its table's, the diamond its window's block mean.
+sigma, relative, window = figures.FIG4A_88MM_SEED2
+col, rows = read_table(os.path.join(source, relative))
+assert same(fig4a[f"P(t): σ = {sigma:g}, 88 mm, seed 2"]["y"],
+            [float(r[col["P_polar"]]) for r in rows])
+check_points("fig4a 88 mm seed 2",
+             list(zip(fig4a["P, 88 mm, seed 2"]["x"], fig4a["P, 88 mm, seed 2"]["y"])),
+             [(sigma, block_mean(os.path.join(source, relative), "P_polar", *window, block=5.0))], 1)
 
 # Fig. 4a's third panel: every longitudinal band drawn is its table's column, read here with the
 # csv module, and a run whose table has the column is drawn.
 bands_checked = 0
 band_runs = [(f"σ = {sigma:g}, 38 mm", relative) for sigma, relative in figures.FIG4A]
 band_runs += [(f"σ = {sigma:g}, 88 mm", relative) for sigma, relative, _ in figures.FIG4A_88MM]
+band_runs.append((f"σ = {figures.FIG4A_88MM_SEED2[0]:g}, 88 mm, seed 2", figures.FIG4A_88MM_SEED2[1]))
 for label, relative in band_runs:
     path = os.path.join(source, relative)
     if not os.path.isfile(path):
