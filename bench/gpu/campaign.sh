@@ -8,8 +8,9 @@
 #
 # The runs are stopped after CAMPAIGN_LIMIT seconds (default 240) with SIGINT, which makes every
 # run write its checkpoint (exit 124 from timeout, then), and their record comes back in $OUT
-# (or bench/gpu/out) in two files, as the device returns eight at most: campaign.log (the plan,
-# the progress with the ensemble's steps/s, and `campaign status` at the end) and runs.tar.gz
+# (or bench/gpu/out) in two files (three with ANALYZE), as the device returns eight at most:
+# campaign.log (the plan, the progress with the ensemble's steps/s, and `campaign status` at the
+# end) and runs.tar.gz
 # (every run's config.toml, progress.txt, timeseries.csv and checkpoint.h5). A large box's
 # trajectory is far over what comes back and stays on the device, which keeps nothing: the same
 # command again, while the machine is still warm, continues every run in place; after that, a
@@ -29,7 +30,7 @@
 # BACKEND=cpu runs the same on the host's cores (to check the script where no GPU is).
 set -uo pipefail
 cd "$(dirname "$0")/../.." || exit 2
-[ $# -ge 1 ] || { sed -n 2,29p "$0"; exit 2; }
+[ $# -ge 1 ] || { sed -n 2,30p "$0"; exit 2; }
 campaign=$1
 shift
 out=${OUT:-bench/gpu/out}
