@@ -53,9 +53,9 @@ if [ -n "$mode" ]; then
   # (`rodsea render`, `movie`) writes its φ and σ as empty boxes.
   # FONTCONFIG_FILE=.gpu-prebuilt/fonts/fonts.conf there (campaign.sh sets it).
   mkdir -p .gpu-prebuilt/fonts
-  for face in "DejaVu Sans" "DejaVu Sans:bold"; do
-    cp "$(fc-match -f '%{file}' "$face")" .gpu-prebuilt/fonts/
-  done
+  # fonts-dejavu-core, which scripts/install-deps.sh installs for `rodsea render`.
+  cp /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf \
+    /usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf .gpu-prebuilt/fonts/
   cat >.gpu-prebuilt/fonts/fonts.conf <<'CONF'
 <?xml version="1.0"?>
 <!DOCTYPE fontconfig SYSTEM "urn:fontconfig:fonts.dtd">
