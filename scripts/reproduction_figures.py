@@ -101,16 +101,16 @@ FIG4A = [(sigma, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspect_rat
           ".series.csv") for sigma in (1.25, 3.125, 5.625)]
 FIG4A_WINDOW = (30.0, 60.0)
 FIG4A_BLOCK = 5.0
-# The same points in the 88 mm box (98 polar rods): (σ, series table, window of its P): their
-# P(t) and S(t) beside the 38 mm runs', and P over each one's own window; a run still in its
-# transient (window None) is drawn in time only.
+# The same points in the 88 mm box (98 polar rods): (σ, series table, window of its P, seed's
+# label suffix): their P(t) and S(t) beside the 38 mm runs', and P over each one's own window; a
+# run still in its transient (window None) is drawn in time only. Seed 2 of σ = 5.625 is drawn
+# dash-dotted and as a diamond (FIG4A_88MM_STYLE: P(t), S(t), marker).
 FIG4A_88MM = [(sigma, f"{DATA}/fig4a-88mm/medium.area_fraction=0.75,medium.aspect_ratio={sigma:g}"
-               ".series.csv", window)
-              for sigma, window in ((1.25, None), (3.125, (30.0, 60.0)), (5.625, (40.0, 60.0)))]
-# A second seed of σ = 5.625 in the 88 mm box, run 60 s: (σ, series table, window of its P),
-# drawn like FIG4A_88MM's runs (dash-dotted in time, a diamond against σ).
-FIG4A_88MM_SEED2 = (5.625, f"{DATA}/fig4a-88mm/medium.area_fraction=0.75,medium.aspect_ratio=5.625"
-                    ".seed2.series.csv", (40.0, 60.0))
+               f"{'.seed2' if seed else ''}.series.csv", window, seed)
+              for sigma, window, seed in ((1.25, None, ""), (3.125, (30.0, 60.0), ""),
+                                          (5.625, (40.0, 60.0), ""),
+                                          (5.625, (40.0, 60.0), ", seed 2"))]
+FIG4A_88MM_STYLE = {"": ("--", ":", "o"), ", seed 2": ("-.", (0, (1, 3)), "D")}
 # A second seed of σ = 5.625 in the 38 mm box, run 45 s: its P over FIG4A_SEED2_WINDOW.
 FIG4A_SEED2 = (5.625, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspect_ratio=5.625"
                ".seed2.series.csv")
@@ -551,39 +551,30 @@ def draw_fig4a(plt):
     points.set_title("P and the medium's S against σ", fontsize=10)
     k_of = {sigma: k for k, (sigma, _) in enumerate(FIG4A)}
     series = fig.axes[1]
-    for sigma, relative, window in FIG4A_88MM:
+    for sigma, relative, window, seed in FIG4A_88MM:
         if not os.path.isfile(os.path.join(ROOT, relative)):
             continue  # not run yet
+        p_style, s_style, marker = FIG4A_88MM_STYLE[seed]
         t = read_csv(relative)
         middle = 0.5 * (column(t, "t_from", relative) + column(t, "t_to", relative))
         p, nematic = column(t, "P_polar", relative), column(t, "S_medium", relative)
-        series.plot(middle, p, color=f"C{k_of[sigma]}", lw=1.2, ls="--",
-                    label=f"σ = {sigma:g}, 88 mm box")
-        series.plot(middle, nematic, color=f"C{k_of[sigma]}", lw=1.0, ls=":",
-                    label=f"S of the medium, σ = {sigma:g}, 88 mm")
-        dump[f"P(t): σ = {sigma:g}, 88 mm"] = {"x": middle.tolist(), "y": p.tolist()}
-        dump[f"S(t): σ = {sigma:g}, 88 mm"] = {"x": middle.tolist(), "y": nematic.tolist()}
+        series.plot(middle, p, color=f"C{k_of[sigma]}", lw=1.2, ls=p_style,
+                    label=f"σ = {sigma:g}, 88 mm box{seed}")
+        series.plot(middle, nematic, color=f"C{k_of[sigma]}", lw=1.0, ls=s_style,
+                    label=f"S of the medium, σ = {sigma:g}, 88 mm{seed}")
+        dump[f"P(t): σ = {sigma:g}, 88 mm{seed}"] = {"x": middle.tolist(), "y": p.tolist()}
+        dump[f"S(t): σ = {sigma:g}, 88 mm{seed}"] = {"x": middle.tolist(), "y": nematic.tolist()}
         if window is None:
             continue  # not steady yet: no point against σ
         _, y, err, _ = window_points([(sigma, relative)], window, FIG4A_BLOCK)[0]
-        points.errorbar([sigma], [y], yerr=[err], fmt="o", ms=7, mfc="none", capsize=3,
-                        color="C3", label="P, 88 mm box" if "P, 88 mm" not in dump else None)
+        key = f"P, 88 mm{seed}"
+        points.errorbar([sigma], [y], yerr=[err], fmt=marker, ms=7, mfc="none", capsize=3,
+                        color="C3", label=f"P, 88 mm box{seed}" if key not in dump else None)
         points.annotate(f"{window[0]:g}–{window[1]:g} s", (sigma, y), xytext=(-8, 6),
                         textcoords="offset points", ha="right", fontsize=7, color="C3")
-        dump.setdefault("P, 88 mm", {"x": [], "y": [], "err": []})
-        for key, value in (("x", sigma), ("y", y), ("err", err)):
-            dump["P, 88 mm"][key].append(value)
-    sigma, relative, window = FIG4A_88MM_SEED2
-    t = read_csv(relative)
-    middle = 0.5 * (column(t, "t_from", relative) + column(t, "t_to", relative))
-    p = column(t, "P_polar", relative)
-    series.plot(middle, p, color=f"C{k_of[sigma]}", lw=1.0, ls="-.",
-                label=f"σ = {sigma:g}, 88 mm box, seed 2")
-    dump[f"P(t): σ = {sigma:g}, 88 mm, seed 2"] = {"x": middle.tolist(), "y": p.tolist()}
-    _, y, err, _ = window_points([(sigma, relative)], window, FIG4A_BLOCK)[0]
-    points.errorbar([sigma], [y], yerr=[err], fmt="D", ms=6, mfc="none", capsize=3, color="C3",
-                    label=f"P, 88 mm box, seed 2 ({window[0]:g}–{window[1]:g} s)")
-    dump["P, 88 mm, seed 2"] = {"x": [sigma], "y": [y], "err": [err]}
+        dump.setdefault(key, {"x": [], "y": [], "err": []})
+        for name, value in (("x", sigma), ("y", y), ("err", err)):
+            dump[key][name].append(value)
     points.legend(loc="best", fontsize=7)
     series.legend(loc="best", fontsize=7)
     draw_fig4a_bands(fig.axes[2], dump)
@@ -597,10 +588,8 @@ def draw_fig4a_bands(ax, dump):
     k_of = {sigma: k for k, (sigma, _) in enumerate(FIG4A)}
     runs = [(f"σ = {sigma:g}, 38 mm", relative, f"C{k_of[sigma]}", "-", 18)
             for sigma, relative in FIG4A]
-    runs += [(f"σ = {sigma:g}, 88 mm", relative, f"C{k_of[sigma]}", "--", 98)
-             for sigma, relative, _ in FIG4A_88MM]
-    sigma, relative, _ = FIG4A_88MM_SEED2
-    runs.append((f"σ = {sigma:g}, 88 mm, seed 2", relative, f"C{k_of[sigma]}", "-.", 98))
+    runs += [(f"σ = {sigma:g}, 88 mm{seed}", relative, f"C{k_of[sigma]}",
+              FIG4A_88MM_STYLE[seed][0], 98) for sigma, relative, _, seed in FIG4A_88MM]
     floors = set()
     for label, relative, colour, style, rods in runs:
         if not os.path.isfile(os.path.join(ROOT, relative)):

@@ -200,38 +200,32 @@ if os.path.isfile(os.path.join(source, relative)):
     check_points("fig4a seed 2", list(zip(fig4a["P, seed 2"]["x"], fig4a["P, seed 2"]["y"])),
                  expected, 1)
 
-# Fig. 4a's 88 mm runs: each one's P(t) and S(t) as drawn are its table's, and its P point the
-# mean of its 5 s block means over its own window.
-expected_88mm = []
-for sigma, relative, window in figures.FIG4A_88MM:
+# Fig. 4a's 88 mm runs (seed 2 of σ = 5.625 among them, under its own keys): each one's P(t)
+# and S(t) as drawn are its table's, and its P point the mean of its 5 s block means over its
+# own window.
+expected_88mm = {}
+for sigma, relative, window, seed in figures.FIG4A_88MM:
     path = os.path.join(source, relative)
     if not os.path.isfile(path):
         continue
     col, rows = read_table(path)
-    for drawn, name in ((f"P(t): σ = {sigma:g}, 88 mm", "P_polar"),
-                        (f"S(t): σ = {sigma:g}, 88 mm", "S_medium")):
+    for drawn, name in ((f"P(t): σ = {sigma:g}, 88 mm{seed}", "P_polar"),
+                        (f"S(t): σ = {sigma:g}, 88 mm{seed}", "S_medium")):
         assert same(fig4a[drawn]["y"], [float(r[col[name]]) for r in rows]), drawn
     if window is not None:  # None: drawn in time only, still in its transient
-        expected_88mm.append((sigma, block_mean(path, "P_polar", *window, block=5.0)))
-    print(f"checked the 88 mm run at σ = {sigma:g}: P(t) and S(t) ({len(rows)} bins)")
-if expected_88mm:
-    check_points("fig4a 88 mm", list(zip(fig4a["P, 88 mm"]["x"], fig4a["P, 88 mm"]["y"])),
-                 expected_88mm, 1)
-# Its second seed of σ = 5.625 likewise: P(t) its table's, the diamond its window's block mean.
-sigma, relative, window = figures.FIG4A_88MM_SEED2
-col, rows = read_table(os.path.join(source, relative))
-assert same(fig4a[f"P(t): σ = {sigma:g}, 88 mm, seed 2"]["y"],
-            [float(r[col["P_polar"]]) for r in rows])
-check_points("fig4a 88 mm seed 2",
-             list(zip(fig4a["P, 88 mm, seed 2"]["x"], fig4a["P, 88 mm, seed 2"]["y"])),
-             [(sigma, block_mean(os.path.join(source, relative), "P_polar", *window, block=5.0))], 1)
+        expected_88mm.setdefault(seed, []).append(
+            (sigma, block_mean(path, "P_polar", *window, block=5.0)))
+    print(f"checked the 88 mm run at σ = {sigma:g}{seed}: P(t) and S(t) ({len(rows)} bins)")
+for seed, expected in expected_88mm.items():
+    key = f"P, 88 mm{seed}"
+    check_points(f"fig4a 88 mm{seed}", list(zip(fig4a[key]["x"], fig4a[key]["y"])), expected, 1)
 
 # Fig. 4a's third panel: every longitudinal band drawn is its table's column, read here with the
 # csv module, and a run whose table has the column is drawn.
 bands_checked = 0
 band_runs = [(f"σ = {sigma:g}, 38 mm", relative) for sigma, relative in figures.FIG4A]
-band_runs += [(f"σ = {sigma:g}, 88 mm", relative) for sigma, relative, _ in figures.FIG4A_88MM]
-band_runs.append((f"σ = {figures.FIG4A_88MM_SEED2[0]:g}, 88 mm, seed 2", figures.FIG4A_88MM_SEED2[1]))
+band_runs += [(f"σ = {sigma:g}, 88 mm{seed}", relative)
+              for sigma, relative, _, seed in figures.FIG4A_88MM]
 for label, relative in band_runs:
     path = os.path.join(source, relative)
     if not os.path.isfile(path):
