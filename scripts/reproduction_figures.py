@@ -111,10 +111,11 @@ FIG4A_88MM = [(sigma, f"{DATA}/fig4a-88mm/medium.area_fraction=0.75,medium.aspec
                                           (5.625, (40.0, 60.0), ""),
                                           (5.625, (40.0, 60.0), ", seed 2"))]
 FIG4A_88MM_STYLE = {"": ("--", ":", "o"), ", seed 2": ("-.", (0, (1, 3)), "D")}
-# A second seed of σ = 5.625 in the 38 mm box, run 45 s: its P over FIG4A_SEED2_WINDOW.
-FIG4A_SEED2 = (5.625, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspect_ratio=5.625"
-               ".seed2.series.csv")
-FIG4A_SEED2_WINDOW = (25.0, 45.0)
+# Second seeds in the 38 mm box: (σ, series table, window of its P). σ = 5.625's ran 45 s.
+FIG4A_SEED2 = [(sigma, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspect_ratio={sigma:g}"
+                ".seed2.series.csv", window)
+               for sigma, window in ((1.25, (30.0, 60.0)), (5.625, (25.0, 45.0)))]
+FIG4A_SEED2_STYLE = (0, (3, 1, 1, 1))  # their P(t): densely dash-dotted
 
 # What carries P (the flocks observable's P_independent and flock_alignment): one
 # `rodsea analyze --observables order,flocks --from T` summary per run, (x, table), its window
@@ -538,18 +539,29 @@ def draw_fig4a(plt):
                     label="S of the medium")
     dump["S_medium"] = {"x": xs, "y": ys, "err": errs}
     points.containers[0].set_label("P of the polar rods")  # drawn first
-    seed2 = window_points([FIG4A_SEED2], FIG4A_SEED2_WINDOW, FIG4A_BLOCK)
-    if seed2:
+    k_of = {sigma: k for k, (sigma, _) in enumerate(FIG4A)}
+    for sigma, relative, window in FIG4A_SEED2:
+        seed2 = window_points([(sigma, relative)], window, FIG4A_BLOCK)
+        if not seed2:
+            continue  # not run yet
         x, y, err, _ = seed2[0]
         points.errorbar([x], [y], yerr=[err], fmt="D", ms=5, capsize=3, color="0.4",
-                        label=f"P, seed 2 ({FIG4A_SEED2_WINDOW[0]:g}–"
-                              f"{FIG4A_SEED2_WINDOW[1]:g} s)")
-        dump["P, seed 2"] = {"x": [x], "y": [y], "err": [err]}
+                        label="P, seed 2" if "P, seed 2" not in dump else None)
+        points.annotate(f"{window[0]:g}–{window[1]:g} s", (x, y), xytext=(-6, -10),
+                        textcoords="offset points", ha="right", fontsize=7, color="0.4")
+        dump.setdefault("P, seed 2", {"x": [], "y": [], "err": []})
+        for name, value in (("x", x), ("y", y), ("err", err)):
+            dump["P, seed 2"][name].append(value)
+        t = seed2[0][3]
+        middle = 0.5 * (t["t_from"] + t["t_to"])
+        fig.axes[1].plot(middle, t["P_polar"], color=f"C{k_of[sigma]}", lw=0.8,
+                         ls=FIG4A_SEED2_STYLE, label=f"σ = {sigma:g}, seed 2")
+        dump[f"P(t): σ = {sigma:g}, seed 2"] = {"x": middle.tolist(),
+                                               "y": t["P_polar"].tolist()}
     points.set_ylabel(f"over {FIG4A_WINDOW[0]:g}–{FIG4A_WINDOW[1]:g} s")
     points.set_xlim(0.8, 6.0)
     points.set_ylim(0.0, 1.0)
     points.set_title("P and the medium's S against σ", fontsize=10)
-    k_of = {sigma: k for k, (sigma, _) in enumerate(FIG4A)}
     series = fig.axes[1]
     for sigma, relative, window, seed in FIG4A_88MM:
         if not os.path.isfile(os.path.join(ROOT, relative)):

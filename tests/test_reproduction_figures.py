@@ -192,13 +192,20 @@ for drawn, name in (("P", "P_polar"), ("S_medium", "S_medium")):
                 if os.path.isfile(os.path.join(source, relative))]
     check_points("fig4a", list(zip(fig4a[drawn]["x"], fig4a[drawn]["y"])), expected, 3)
 
-# Fig. 4a's second seed at σ = 5.625: the mean of its 5 s block means over its own window.
-sigma, relative = figures.FIG4A_SEED2
-if os.path.isfile(os.path.join(source, relative)):
-    expected = [(sigma, block_mean(os.path.join(source, relative), "P_polar",
-                                   *figures.FIG4A_SEED2_WINDOW, block=5.0))]
+# Fig. 4a's second seeds in the 38 mm box: the means of their 5 s block means, each over its
+# own window.
+expected = [(sigma, block_mean(os.path.join(source, relative), "P_polar", *window, block=5.0))
+            for sigma, relative, window in figures.FIG4A_SEED2
+            if os.path.isfile(os.path.join(source, relative))]
+if expected:
     check_points("fig4a seed 2", list(zip(fig4a["P, seed 2"]["x"], fig4a["P, seed 2"]["y"])),
                  expected, 1)
+for sigma, relative, _ in figures.FIG4A_SEED2:
+    path = os.path.join(source, relative)
+    if os.path.isfile(path):
+        col, rows = read_table(path)
+        assert same(fig4a[f"P(t): σ = {sigma:g}, seed 2"]["y"],
+                    [float(r[col["P_polar"]]) for r in rows]), sigma
 
 # Fig. 4a's 88 mm runs (seed 2 of σ = 5.625 among them, under its own keys): each one's P(t)
 # and S(t) as drawn are its table's, and its P point the mean of its 5 s block means over its
