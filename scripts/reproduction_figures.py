@@ -111,11 +111,20 @@ FIG4A_88MM = [(sigma, f"{DATA}/fig4a-88mm/medium.area_fraction=0.75,medium.aspec
                                           (5.625, (40.0, 60.0), ""),
                                           (5.625, (40.0, 60.0), ", seed 2"))]
 FIG4A_88MM_STYLE = {"": ("--", ":", "o"), ", seed 2": ("-.", (0, (1, 3)), "D")}
-# Second seeds in the 38 mm box: (σ, series table, window of its P). σ = 5.625's ran 45 s.
-FIG4A_SEED2 = [(sigma, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspect_ratio={sigma:g}"
-                ".seed2.series.csv", window)
-               for sigma, window in ((1.25, (30.0, 60.0)), (5.625, (25.0, 45.0)))]
-FIG4A_SEED2_STYLE = (0, (3, 1, 1, 1))  # their P(t): densely dash-dotted
+# More runs of the 38 mm box, each a point over its own window and a P(t) trace: (σ, series
+# table, window of its P, label). Second seeds at the text's D_r = 0.23 (σ = 5.625's ran 45 s),
+# and σ = 1.25 with the caption's D_r = 0 (seed 2 stopped at 55 s). FIG4A_MORE_STYLE: label ->
+# (marker, colour, filled, P(t) line style).
+FIG4A_MORE = [(sigma, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspect_ratio={sigma:g}"
+               f"{suffix}.series.csv", window, label)
+              for sigma, suffix, window, label in (
+                  (1.25, ".seed2", (30.0, 60.0), "seed 2"),
+                  (5.625, ".seed2", (25.0, 45.0), "seed 2"),
+                  (1.25, ".Dr0", (30.0, 60.0), "D_r = 0"),
+                  (1.25, ".Dr0.seed2", (30.0, 55.0), "D_r = 0, seed 2"))]
+FIG4A_MORE_STYLE = {"seed 2": ("D", "0.4", True, (0, (3, 1, 1, 1))),
+                    "D_r = 0": ("^", "C4", False, (0, (1, 1))),
+                    "D_r = 0, seed 2": ("v", "C4", False, (0, (1, 1)))}
 
 # What carries P (the flocks observable's P_independent and flock_alignment): one
 # `rodsea analyze --observables order,flocks --from T` summary per run, (x, table), its window
@@ -433,12 +442,15 @@ def window_points(runs, window, block, name="P_polar"):
 
 
 def draw_points_and_series(plt, runs, window, x_label, x_name, unit, title, block=ROW38_BLOCK,
-                           panels=2):
+                           panels=2, columns=None):
     """P over `window` (errors from blocks) against a parameter, one run per value, beside each
-    run's P(t), and `panels` − 2 empty panels after them for the caller. runs: [(value, series
-    table)]; a table not there yet is left out."""
-    fig, axes = plt.subplots(1, panels, figsize=(5.0 * panels, 3.6))
-    points, series = axes[0], axes[1]
+    run's P(t), and `panels` − 2 empty panels after them for the caller (fig.axes[2:]), in rows
+    of `columns` (default: one row). runs: [(value, series table)]; a table not there yet is
+    left out."""
+    columns = columns or panels
+    rows = -(-panels // columns)
+    fig, axes = plt.subplots(rows, columns, figsize=(5.0 * columns, 3.6 * rows), squeeze=False)
+    points, series = axes.flat[0], axes.flat[1]
     measured = window_points(runs, window, block)
     if not measured:
         raise TableError(f"none of {', '.join(r for _, r in runs)} exists")
@@ -462,7 +474,7 @@ def draw_points_and_series(plt, runs, window, x_label, x_name, unit, title, bloc
     series.set_ylabel("P (1 s bins)")
     series.legend(loc="best", fontsize=7)
     fig.suptitle(title + " (grey: the window)", fontsize=10)
-    fig.tight_layout(rect=(0, 0, 1, 0.94))
+    fig.tight_layout(rect=(0, 0, 1, 1 - 0.06 / rows))
     return fig, points, dump
 
 
@@ -527,12 +539,13 @@ def draw_beads_light(plt):
 
 def draw_fig4a(plt):
     """P and the medium's S against the medium rods' aspect ratio σ at φ_a = 0.75 (over
-    FIG4A_WINDOW, errors from blocks), and P(t) of each run."""
+    FIG4A_WINDOW, errors from blocks), P(t) of each run in the 38 mm box and P(t) and S(t) of
+    each run in the 88 mm box, and the longitudinal band of each."""
     fig, points, dump = draw_points_and_series(
         plt, FIG4A, FIG4A_WINDOW, "σ (medium rods' aspect ratio)", "σ", "",
-        "Fig. 4a inset, 38 mm box (18 polar rods; dashed and open: 88 mm, 98), φ_p = 0.05, "
-        "φ_a = 0.75, D_r = 0.23 rad²/s",
-        block=FIG4A_BLOCK, panels=3)
+        "Fig. 4a inset, φ_p = 0.05, φ_a = 0.75, D_r = 0.23 rad²/s unless named:\n38 mm box "
+        "(18 polar rods) and 88 mm box (98 polar rods; dashed, open circles and diamonds)",
+        block=FIG4A_BLOCK, panels=4, columns=2)
     nematic = window_points(FIG4A, FIG4A_WINDOW, FIG4A_BLOCK, "S_medium")
     xs, ys, errs = ([m[i] for m in nematic] for i in range(3))
     points.errorbar(xs, ys, yerr=errs, fmt="s--", ms=4, capsize=3, color="C0",
@@ -540,40 +553,45 @@ def draw_fig4a(plt):
     dump["S_medium"] = {"x": xs, "y": ys, "err": errs}
     points.containers[0].set_label("P of the polar rods")  # drawn first
     k_of = {sigma: k for k, (sigma, _) in enumerate(FIG4A)}
-    for sigma, relative, window in FIG4A_SEED2:
-        seed2 = window_points([(sigma, relative)], window, FIG4A_BLOCK)
-        if not seed2:
+    series, series_88mm = fig.axes[1], fig.axes[2]
+    series.set_title("38 mm box", fontsize=10)
+    for sigma, relative, window, label in FIG4A_MORE:
+        more = window_points([(sigma, relative)], window, FIG4A_BLOCK)
+        if not more:
             continue  # not run yet
-        x, y, err, _ = seed2[0]
-        points.errorbar([x], [y], yerr=[err], fmt="D", ms=5, capsize=3, color="0.4",
-                        label="P, seed 2" if "P, seed 2" not in dump else None)
+        marker, colour, filled, p_style = FIG4A_MORE_STYLE[label]
+        x, y, err, t = more[0]
+        key = f"P, {label}"
+        points.errorbar([x], [y], yerr=[err], fmt=marker, ms=5, capsize=3, color=colour,
+                        mfc=colour if filled else "none",
+                        label=f"P, 38 mm box, {label}" if key not in dump else None)
         points.annotate(f"{window[0]:g}–{window[1]:g} s", (x, y), xytext=(-6, -10),
-                        textcoords="offset points", ha="right", fontsize=7, color="0.4")
-        dump.setdefault("P, seed 2", {"x": [], "y": [], "err": []})
+                        textcoords="offset points", ha="right", fontsize=7, color=colour)
+        dump.setdefault(key, {"x": [], "y": [], "err": []})
         for name, value in (("x", x), ("y", y), ("err", err)):
-            dump["P, seed 2"][name].append(value)
-        t = seed2[0][3]
+            dump[key][name].append(value)
         middle = 0.5 * (t["t_from"] + t["t_to"])
-        fig.axes[1].plot(middle, t["P_polar"], color=f"C{k_of[sigma]}", lw=0.8,
-                         ls=FIG4A_SEED2_STYLE, label=f"σ = {sigma:g}, seed 2")
-        dump[f"P(t): σ = {sigma:g}, seed 2"] = {"x": middle.tolist(),
-                                               "y": t["P_polar"].tolist()}
-    points.set_ylabel(f"over {FIG4A_WINDOW[0]:g}–{FIG4A_WINDOW[1]:g} s")
+        series.plot(middle, t["P_polar"], color=f"C{k_of[sigma]}", lw=0.8, ls=p_style,
+                    label=f"σ = {sigma:g}, {label}")
+        dump[f"P(t): σ = {sigma:g}, {label}"] = {"x": middle.tolist(),
+                                                 "y": t["P_polar"].tolist()}
+    points.set_ylabel(f"over {FIG4A_WINDOW[0]:g}–{FIG4A_WINDOW[1]:g} s unless named")
     points.set_xlim(0.8, 6.0)
     points.set_ylim(0.0, 1.0)
     points.set_title("P and the medium's S against σ", fontsize=10)
-    series = fig.axes[1]
+    t_end = FIG4A_WINDOW[1]
     for sigma, relative, window, seed in FIG4A_88MM:
         if not os.path.isfile(os.path.join(ROOT, relative)):
             continue  # not run yet
         p_style, s_style, marker = FIG4A_88MM_STYLE[seed]
         t = read_csv(relative)
         middle = 0.5 * (column(t, "t_from", relative) + column(t, "t_to", relative))
+        t_end = max(t_end, float(column(t, "t_to", relative)[-1]))
         p, nematic = column(t, "P_polar", relative), column(t, "S_medium", relative)
-        series.plot(middle, p, color=f"C{k_of[sigma]}", lw=1.2, ls=p_style,
-                    label=f"σ = {sigma:g}, 88 mm box{seed}")
-        series.plot(middle, nematic, color=f"C{k_of[sigma]}", lw=1.0, ls=s_style,
-                    label=f"S of the medium, σ = {sigma:g}, 88 mm{seed}")
+        series_88mm.plot(middle, p, color=f"C{k_of[sigma]}", lw=1.2, ls=p_style,
+                         label=f"P, σ = {sigma:g}{seed}")
+        series_88mm.plot(middle, nematic, color=f"C{k_of[sigma]}", lw=1.0, ls=s_style,
+                         label=f"S of the medium, σ = {sigma:g}{seed}")
         dump[f"P(t): σ = {sigma:g}, 88 mm{seed}"] = {"x": middle.tolist(), "y": p.tolist()}
         dump[f"S(t): σ = {sigma:g}, 88 mm{seed}"] = {"x": middle.tolist(), "y": nematic.tolist()}
         if window is None:
@@ -587,16 +605,24 @@ def draw_fig4a(plt):
         dump.setdefault(key, {"x": [], "y": [], "err": []})
         for name, value in (("x", sigma), ("y", y), ("err", err)):
             dump[key][name].append(value)
-    points.legend(loc="best", fontsize=7)
-    series.legend(loc="best", fontsize=7)
-    draw_fig4a_bands(fig.axes[2], dump)
+    series_88mm.set_xlabel("t (s)")
+    series_88mm.set_ylabel("P, S (1 s bins)")
+    series_88mm.set_xlim(0.0, t_end)
+    series_88mm.set_ylim(0.0, 1.0)
+    series_88mm.set_title("88 mm box: P (dashed) and the medium's S (dotted)", fontsize=10)
+    points.legend(loc="upper center", bbox_to_anchor=(0.42, 1.0), fontsize=7)  # clear of σ = 1.25
+    series.legend(loc="upper left", fontsize=7, ncol=2)
+    series.set_ylim(0.0, 1.0)
+    series_88mm.legend(loc="upper left", fontsize=7, ncol=2)
+    draw_fig4a_bands(fig.axes[3], dump, t_end)
+    fig.tight_layout(rect=(0, 0, 1, 0.95))
     return fig, dump
 
 
-def draw_fig4a_bands(ax, dump):
+def draw_fig4a_bands(ax, dump, t_end):
     """The longitudinal band, |ρ_k| of the polar rods' longest density mode across their axis of
-    motion (the `bands` observable), against time in every run whose table has it, beside the
-    mean for rods at random positions, √(π/4N)."""
+    motion (the `bands` observable), against time to `t_end` in every run whose table has it,
+    beside the mean for rods at random positions, √(π/4N)."""
     k_of = {sigma: k for k, (sigma, _) in enumerate(FIG4A)}
     runs = [(f"σ = {sigma:g}, 38 mm", relative, f"C{k_of[sigma]}", "-", 18)
             for sigma, relative in FIG4A]
@@ -618,7 +644,7 @@ def draw_fig4a_bands(ax, dump):
         ax.axhline(np.sqrt(np.pi / (4 * rods)), color="0.5", lw=0.8, ls=":")
     ax.set_xlabel("t (s)")
     ax.set_ylabel("longitudinal band |ρ_k| (1 s bins)")
-    ax.set_xlim(0.0, FIG4A_WINDOW[1])  # as the P(t) beside it (σ = 3.125 runs on to 120 s)
+    ax.set_xlim(0.0, t_end)  # as the 88 mm P(t) above it (38 mm σ = 3.125 runs on to 120 s)
     ax.set_ylim(0.0, 1.0)
     ax.set_title("band along the motion (dotted: random, √(π/4N))", fontsize=10)
     if floors:

@@ -192,20 +192,24 @@ for drawn, name in (("P", "P_polar"), ("S_medium", "S_medium")):
                 if os.path.isfile(os.path.join(source, relative))]
     check_points("fig4a", list(zip(fig4a[drawn]["x"], fig4a[drawn]["y"])), expected, 3)
 
-# Fig. 4a's second seeds in the 38 mm box: the means of their 5 s block means, each over its
-# own window.
-expected = [(sigma, block_mean(os.path.join(source, relative), "P_polar", *window, block=5.0))
-            for sigma, relative, window in figures.FIG4A_SEED2
-            if os.path.isfile(os.path.join(source, relative))]
-if expected:
-    check_points("fig4a seed 2", list(zip(fig4a["P, seed 2"]["x"], fig4a["P, seed 2"]["y"])),
-                 expected, 1)
-for sigma, relative, _ in figures.FIG4A_SEED2:
+# Fig. 4a's further runs in the 38 mm box (second seeds, the caption's D_r = 0): each label's
+# points are the means of their 5 s block means, each over its own window, and each P(t) its
+# table's.
+for label in dict.fromkeys(label for *_, label in figures.FIG4A_MORE):
+    expected = [(sigma, block_mean(os.path.join(source, relative), "P_polar", *window, block=5.0))
+                for sigma, relative, window, named in figures.FIG4A_MORE
+                if named == label and os.path.isfile(os.path.join(source, relative))]
+    if expected:
+        drawn = fig4a[f"P, {label}"]
+        check_points(f"fig4a, {label}", list(zip(drawn["x"], drawn["y"])), expected, 1)
+for sigma, relative, _, label in figures.FIG4A_MORE:
     path = os.path.join(source, relative)
     if os.path.isfile(path):
         col, rows = read_table(path)
-        assert same(fig4a[f"P(t): σ = {sigma:g}, seed 2"]["y"],
-                    [float(r[col["P_polar"]]) for r in rows]), sigma
+        assert same(fig4a[f"P(t): σ = {sigma:g}, {label}"]["y"],
+                    [float(r[col["P_polar"]]) for r in rows]), (sigma, label)
+    else:
+        assert f"P(t): σ = {sigma:g}, {label}" not in fig4a, f"{label} drawn without a table"
 
 # Fig. 4a's 88 mm runs (seed 2 of σ = 5.625 among them, under its own keys): each one's P(t)
 # and S(t) as drawn are its table's, and its P point the mean of its 5 s block means over its
