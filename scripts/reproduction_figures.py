@@ -102,12 +102,13 @@ FIG4A = [(sigma, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspect_rat
 FIG4A_WINDOW = (30.0, 60.0)
 FIG4A_BLOCK = 5.0
 # The same points in the 88 mm box (98 polar rods): (σ, series table, window of its P, seed's
-# label suffix): their P(t) and S(t) beside the 38 mm runs', and P over each one's own window; a
-# run still in its transient (window None) is drawn in time only. Seed 2 of σ = 5.625 is drawn
-# dash-dotted and as a diamond (FIG4A_88MM_STYLE: P(t), S(t), marker).
+# label suffix): their P(t) and S(t), and P over each one's own window; a run still in its
+# transient (window None) is drawn in time only. σ = 1.25 levels only from 60 s (run to 74 s).
+# Seed 2 of σ = 5.625 is drawn dash-dotted and as a diamond (FIG4A_88MM_STYLE: P(t), S(t),
+# marker).
 FIG4A_88MM = [(sigma, f"{DATA}/fig4a-88mm/medium.area_fraction=0.75,medium.aspect_ratio={sigma:g}"
                f"{'.seed2' if seed else ''}.series.csv", window, seed)
-              for sigma, window, seed in ((1.25, None, ""), (3.125, (30.0, 60.0), ""),
+              for sigma, window, seed in ((1.25, (60.0, 70.0), ""), (3.125, (30.0, 60.0), ""),
                                           (5.625, (40.0, 60.0), ""),
                                           (5.625, (40.0, 60.0), ", seed 2"))]
 FIG4A_88MM_STYLE = {"": ("--", ":", "o"), ", seed 2": ("-.", (0, (1, 3)), "D")}
@@ -565,8 +566,9 @@ def draw_fig4a(plt):
         points.errorbar([x], [y], yerr=[err], fmt=marker, ms=5, capsize=3, color=colour,
                         mfc=colour if filled else "none",
                         label=f"P, 38 mm box, {label}" if key not in dump else None)
-        points.annotate(f"{window[0]:g}–{window[1]:g} s", (x, y), xytext=(-6, -10),
-                        textcoords="offset points", ha="right", fontsize=7, color=colour)
+        if window != FIG4A_WINDOW:  # the axis names FIG4A_WINDOW
+            points.annotate(f"{window[0]:g}–{window[1]:g} s", (x, y), xytext=(-6, -10),
+                            textcoords="offset points", ha="right", fontsize=7, color=colour)
         dump.setdefault(key, {"x": [], "y": [], "err": []})
         for name, value in (("x", x), ("y", y), ("err", err)):
             dump[key][name].append(value)
@@ -600,8 +602,9 @@ def draw_fig4a(plt):
         key = f"P, 88 mm{seed}"
         points.errorbar([sigma], [y], yerr=[err], fmt=marker, ms=7, mfc="none", capsize=3,
                         color="C3", label=f"P, 88 mm box{seed}" if key not in dump else None)
-        points.annotate(f"{window[0]:g}–{window[1]:g} s", (sigma, y), xytext=(-8, 6),
-                        textcoords="offset points", ha="right", fontsize=7, color="C3")
+        if window != FIG4A_WINDOW:
+            points.annotate(f"{window[0]:g}–{window[1]:g} s", (sigma, y), xytext=(-8, 6),
+                            textcoords="offset points", ha="right", fontsize=7, color="C3")
         dump.setdefault(key, {"x": [], "y": [], "err": []})
         for name, value in (("x", sigma), ("y", y), ("err", err)):
             dump[key][name].append(value)
