@@ -114,7 +114,7 @@ FIG4A_88MM = [(sigma, f"{DATA}/fig4a-88mm/medium.area_fraction=0.75,medium.aspec
 FIG4A_88MM_STYLE = {"": ("--", ":", "o"), ", seed 2": ("-.", (0, (1, 3)), "D")}
 # More runs of the 38 mm box, each a point over its own window and a P(t) trace: (σ, series
 # table, window of its P, label). Second seeds at the text's D_r = 0.23 (σ = 5.625's ran 45 s),
-# and σ = 1.25 with the caption's D_r = 0 (seed 2 stopped at 53 s). FIG4A_MORE_STYLE: label ->
+# and σ = 1.25 with the caption's D_r = 0 (two seeds). FIG4A_MORE_STYLE: label ->
 # (marker, colour, filled, P(t) line style).
 FIG4A_MORE = [(sigma, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspect_ratio={sigma:g}"
                f"{suffix}.series.csv", window, label)
@@ -122,7 +122,7 @@ FIG4A_MORE = [(sigma, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspec
                   (1.25, ".seed2", (30.0, 60.0), "seed 2"),
                   (5.625, ".seed2", (25.0, 45.0), "seed 2"),
                   (1.25, ".Dr0", (30.0, 60.0), "D_r = 0"),
-                  (1.25, ".Dr0.seed2", (30.0, 50.0), "D_r = 0, seed 2"))]
+                  (1.25, ".Dr0.seed2", (30.0, 60.0), "D_r = 0, seed 2"))]
 FIG4A_MORE_STYLE = {"seed 2": ("D", "0.4", True, (0, (3, 1, 1, 1))),
                     "D_r = 0": ("^", "C4", False, (0, (1, 1))),
                     "D_r = 0, seed 2": ("v", "C4", False, (0, (1, 1)))}
