@@ -114,18 +114,20 @@ FIG4A_88MM = [(sigma, f"{DATA}/fig4a-88mm/medium.area_fraction=0.75,medium.aspec
 FIG4A_88MM_STYLE = {"": ("--", ":", "o"), ", seed 2": ("-.", (0, (1, 3)), "D")}
 # More runs of the 38 mm box, each a point over its own window and a P(t) trace: (σ, series
 # table, window of its P, label). Second seeds at the text's D_r = 0.23 (σ = 5.625's ran 45 s),
-# and σ = 1.25 with the caption's D_r = 0 (two seeds). FIG4A_MORE_STYLE: label ->
-# (marker, colour, filled, P(t) line style).
+# and σ = 1.25 and 3.125 with the caption's D_r = 0 (two seeds each). FIG4A_MORE_STYLE: label ->
+# (marker, colour, filled, P(t) line style, shift along σ so that it does not hide the 0.23 points).
 FIG4A_MORE = [(sigma, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspect_ratio={sigma:g}"
                f"{suffix}.series.csv", window, label)
               for sigma, suffix, window, label in (
                   (1.25, ".seed2", (30.0, 60.0), "seed 2"),
                   (5.625, ".seed2", (25.0, 45.0), "seed 2"),
                   (1.25, ".Dr0", (30.0, 60.0), "D_r = 0"),
-                  (1.25, ".Dr0.seed2", (30.0, 60.0), "D_r = 0, seed 2"))]
-FIG4A_MORE_STYLE = {"seed 2": ("D", "0.4", True, (0, (3, 1, 1, 1))),
-                    "D_r = 0": ("^", "C4", False, (0, (1, 1))),
-                    "D_r = 0, seed 2": ("v", "C4", False, (0, (1, 1)))}
+                  (1.25, ".Dr0.seed2", (30.0, 60.0), "D_r = 0, seed 2"),
+                  (3.125, ".Dr0", (30.0, 60.0), "D_r = 0"),
+                  (3.125, ".Dr0.seed2", (30.0, 60.0), "D_r = 0, seed 2"))]
+FIG4A_MORE_STYLE = {"seed 2": ("D", "0.4", True, (0, (3, 1, 1, 1)), 0.0),
+                    "D_r = 0": ("^", "C4", False, (0, (1, 1)), 0.12),
+                    "D_r = 0, seed 2": ("v", "C4", False, (0, (1, 1)), 0.12)}
 
 # What carries P (the flocks observable's P_independent and flock_alignment): one
 # `rodsea analyze --observables order,flocks --from T` summary per run, (x, table), its window
@@ -560,14 +562,14 @@ def draw_fig4a(plt):
         more = window_points([(sigma, relative)], window, FIG4A_BLOCK)
         if not more:
             continue  # not run yet
-        marker, colour, filled, p_style = FIG4A_MORE_STYLE[label]
+        marker, colour, filled, p_style, shift = FIG4A_MORE_STYLE[label]
         x, y, err, t = more[0]
         key = f"P, {label}"
-        points.errorbar([x], [y], yerr=[err], fmt=marker, ms=5, capsize=3, color=colour,
+        points.errorbar([x + shift], [y], yerr=[err], fmt=marker, ms=5, capsize=3, color=colour,
                         mfc=colour if filled else "none",
                         label=f"P, 38 mm box, {label}" if key not in dump else None)
         if window != FIG4A_WINDOW:  # the axis names FIG4A_WINDOW
-            points.annotate(f"{window[0]:g}–{window[1]:g} s", (x, y), xytext=(-6, -10),
+            points.annotate(f"{window[0]:g}–{window[1]:g} s", (x + shift, y), xytext=(-6, -10),
                             textcoords="offset points", ha="right", fontsize=7, color=colour)
         dump.setdefault(key, {"x": [], "y": [], "err": []})
         for name, value in (("x", x), ("y", y), ("err", err)):
