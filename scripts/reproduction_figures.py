@@ -127,7 +127,7 @@ FIG4A_MORE = [(sigma, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspec
                   (3.125, ".Dr0.seed2", (30.0, 60.0), "D_r = 0, seed 2"))]
 FIG4A_MORE_STYLE = {"seed 2": ("D", "0.4", True, (0, (3, 1, 1, 1)), 0.0),
                     "D_r = 0": ("^", "C4", False, (0, (1, 1)), 0.12),
-                    "D_r = 0, seed 2": ("v", "C4", False, (0, (1, 1)), 0.12)}
+                    "D_r = 0, seed 2": ("v", "C4", False, (0, (1, 2.5)), 0.12)}
 
 # What carries P (the flocks observable's P_independent and flock_alignment): one
 # `rodsea analyze --observables order,flocks --from T` summary per run, (x, table), its window
