@@ -103,12 +103,12 @@ FIG4A_WINDOW = (30.0, 60.0)
 FIG4A_BLOCK = 5.0
 # The same points in the 88 mm box (98 polar rods): (σ, series table, window of its P, seed's
 # label suffix): their P(t) and S(t), and P over each one's own window; a run still in its
-# transient (window None) is drawn in time only. σ = 1.25 levels only from 60 s (run to 74 s).
+# transient (window None) is drawn in time only. σ = 1.25 levels only from 60 s (run to 88 s).
 # Seed 2 of σ = 5.625 is drawn dash-dotted and as a diamond (FIG4A_88MM_STYLE: P(t), S(t),
 # marker).
 FIG4A_88MM = [(sigma, f"{DATA}/fig4a-88mm/medium.area_fraction=0.75,medium.aspect_ratio={sigma:g}"
                f"{'.seed2' if seed else ''}.series.csv", window, seed)
-              for sigma, window, seed in ((1.25, (60.0, 70.0), ""), (3.125, (30.0, 60.0), ""),
+              for sigma, window, seed in ((1.25, (60.0, 85.0), ""), (3.125, (30.0, 60.0), ""),
                                           (5.625, (40.0, 60.0), ""),
                                           (5.625, (40.0, 60.0), ", seed 2"))]
 FIG4A_88MM_STYLE = {"": ("--", ":", "o"), ", seed 2": ("-.", (0, (1, 3)), "D")}
