@@ -115,7 +115,7 @@ FIG4A_88MM_STYLE = {"": ("--", ":", "o"), ", seed 2": ("-.", (0, (1, 3)), "D")}
 # More runs of the 38 mm box, each a point over its own window and a P(t) trace: (σ, series
 # table, window of its P, label). Second seeds at the text's D_r = 0.23 (σ = 5.625's ran 45 s),
 # and σ = 1.25 and 3.125 with the caption's D_r = 0 (two seeds each). FIG4A_MORE_STYLE: label ->
-# (marker, colour, filled, P(t) line style, shift along σ so that it does not hide the 0.23 points).
+# (marker, colour, filled, P(t) line style, shift along σ so as not to hide the 0.23 points).
 FIG4A_MORE = [(sigma, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspect_ratio={sigma:g}"
                f"{suffix}.series.csv", window, label)
               for sigma, suffix, window, label in (
