@@ -120,6 +120,7 @@ FIG4A_MORE = [(sigma, f"{DATA}/fig4a-38mm/medium.area_fraction=0.75,medium.aspec
                f"{suffix}.series.csv", window, label)
               for sigma, suffix, window, label in (
                   (1.25, ".seed2", (30.0, 60.0), "seed 2"),
+                  (3.125, ".seed2", (30.0, 60.0), "seed 2"),
                   (5.625, ".seed2", (25.0, 45.0), "seed 2"),
                   (1.25, ".Dr0", (30.0, 60.0), "D_r = 0"),
                   (1.25, ".Dr0.seed2", (30.0, 60.0), "D_r = 0, seed 2"),
