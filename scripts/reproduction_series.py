@@ -50,7 +50,8 @@ def fail(message):
 def read(path):
     if not os.path.isfile(path):
         fail(f"{path}: missing; analyse the run first (rodsea analyze RUN_DIR)")
-    return np.genfromtxt(path, delimiter=",", skip_header=1, names=True)
+    # A table of one frame reads as a 0-d record; every caller indexes frames.
+    return np.atleast_1d(np.genfromtxt(path, delimiter=",", skip_header=1, names=True))
 
 
 def point_name(run):

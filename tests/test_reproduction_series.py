@@ -6,7 +6,7 @@ counts, steady flags (the continuation's, whatever window the first part was ana
 means to the tables' 6 digits (the bin that both parts hold in part, 4-5 s, is the frame-weighted
 mean of the two partial means, which is the mean over its frames).
 A table that runs past the continuation's start, shares frames with it or stops short of it is
-refused.
+refused, and so is a continuation of one frame (its output interval is unknown).
 
     /usr/bin/python3 tests/test_reproduction_series.py SOURCE_DIR SCRATCH_DIR
 Exit 77 (skipped) without numpy.
@@ -88,4 +88,12 @@ r = run_script(rest, "--continues", os.path.join(scratch, "w", "whole.series.csv
                os.path.join(scratch, "refused"))
 assert r.returncode == 2 and "goes past 4 s" in r.stderr, (r.returncode, r.stderr)
 assert not os.path.exists(os.path.join(scratch, "refused", "whole.series.csv"))
+
+# A continuation of one frame cannot tell its output interval: refused with that reason, not a
+# crash on the one-row table.
+single = os.path.join(scratch, "single")
+write_run(single, slice(44, 45))
+r = run_script(single, "--continues", os.path.join(scratch, "p", "first.series.csv"), "--out",
+               os.path.join(scratch, "single-joined"))
+assert r.returncode == 2 and "at least two frames" in r.stderr, (r.returncode, r.stderr)
 print("reproduction_series --continues: the joined table is the whole run's (10 bins)")
