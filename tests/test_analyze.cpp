@@ -85,6 +85,39 @@ TEST_F(AnalyzeCli, SteadyPolarOrderIsTheMeanOfTheRunsOwnSeries) {
     EXPECT_NEAR(a.results[0].scalars[0].estimate.mean, mean, 1e-5);
 }
 
+// --to analyses the run as if it had ended there: the mean is the recorded series' over the
+// window and nothing after it, the frames left out are named, and a run still being written
+// needs no note when the window ends before its last frame.
+TEST_F(AnalyzeCli, ToEndsTheWindowAsIfTheRunHadEndedThere) {
+    AnalyzeRequest request;
+    request.from = 0.01;
+    request.to = 0.0301;  // the last frame at or before it: 0.030 s
+    request.observables = {"order"};
+    const RunDirectoryLock writer(mixture());
+    const PreparedRun run = prepare_run(mixture(), request);
+    EXPECT_EQ(run.times.size(), 16u);  // 0 to 30 ms every 2 ms
+    EXPECT_EQ(run.window.first_frame, 5u);
+    EXPECT_EQ(run.setup.steady_frames, 11u);
+    EXPECT_TRUE(run.window.to_given);
+    EXPECT_NEAR(run.window.to, 0.03, 1e-12);
+    EXPECT_EQ(run.stored_frames, 21u);
+    EXPECT_EQ(run.still_running, "");
+    ASSERT_FALSE(run.skipped.empty());
+    EXPECT_NE(run.skipped.back().find("5 frames after --to"), std::string::npos)
+        << run.skipped.back();
+    std::ostringstream log;
+    const RunAnalysis a = analyze_run(run, log, true);
+    const std::vector<double> recorded =
+        TrajectoryReader(mixture() / "trajectory.h5").series("polar_order_polar");
+    double mean = 0.0;
+    for (std::size_t k = 5; k <= 15; ++k)
+        mean += recorded[k];
+    mean /= 11.0;
+    // Float32 frames against the run's double-precision series, as above.
+    ASSERT_EQ(a.results[0].scalars[0].name, "P_polar");
+    EXPECT_NEAR(a.results[0].scalars[0].estimate.mean, mean, 1e-5);
+}
+
 // A run that a process still writes (its lock held, as `rodsea run` holds it) is analysed as
 // far as it has gone, and the analysis says so, with where progress.txt puts the run; once no
 // process holds it, nothing is said.
@@ -306,6 +339,9 @@ TEST_F(AnalyzeCli, BadInputIsRefusedByNameAndWritesNothing) {
         {{"analyze", (scratch_->path() / "missing").string()}, 74, "no such file"},
         {{"analyze", mix, "--from", "5"}, 2, "[0, 0.04] s"},
         {{"analyze", mix, "--from", "-1"}, 2, "--from"},
+        {{"analyze", mix, "--to", "5"}, 2, "invalid --to = 5 s: allowed [0, 0.04] s"},
+        // --from past --to: the message names the window's end.
+        {{"analyze", mix, "--from", "0.03", "--to", "0.02"}, 2, "--to ends the window at 0.02 s"},
         {{"analyze", medium, "--observables", "flocks"}, 2, "needs polar rods"},
         {{"analyze", mix, "--observables", "flock"}, 2, "did you mean 'flocks'"},
         {{"analyze", mix, "--param", "flocks.epss=1"}, 2, "did you mean 'flocks.eps'"},

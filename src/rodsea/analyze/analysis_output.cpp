@@ -153,9 +153,9 @@ void write_analysis_files(const RunAnalysis& a, const fs::path& out_dir) {
          {{"directory", a.run.run_dir.string()},
           {"trajectory", a.run.trajectory.string()},
           {"parts", part_paths(a.run.parts)},
-          {"frames", a.run.times.size()},
+          {"frames", a.run.stored_frames},
           {"first_time_s", a.run.times.front()},
-          {"last_time_s", a.run.times.back()},
+          {"last_time_s", a.run.stored_last_time},
           {"frame_interval_s", a.run.setup.frame_interval},
           {"still_running", a.run.still_running}}},
         {"parameters", run_parameters_json(a.run)},
@@ -163,6 +163,9 @@ void write_analysis_files(const RunAnalysis& a, const fs::path& out_dir) {
          {{"from_s", w.from},
           {"first_frame", w.first_frame},
           {"frames", a.run.setup.steady_frames},
+          {"to_s", w.to},
+          {"end", w.to_given ? "given: --to (the frames after it are not analysed)"
+                             : "the run's last frame"},
           {"method", w.automatic
                          ? "automatic: the latest of the order series' steady starts (each the "
                            "earliest start maximising n_eff = n/(2 tau_int)), decided by " +
@@ -362,12 +365,13 @@ std::vector<ReplicateSummary> replicate_summaries(const std::vector<RunAnalysis>
 std::string summary_table_csv(const std::vector<RunAnalysis>& runs) {
     CsvTable table({"run", "replicates", "box_lx_mm", "box_ly_mm", "gamma", "frequency_hz",
                     "gap_mm", "epsilon_per_mm", "dt_s", "seed", "duration_s", "steady_from_s",
-                    "steady_frames"});
+                    "steady_to_s", "steady_frames"});
     for (const RunAnalysis& a : runs) {
         CsvTable::Row row = parameter_row(table, a);
         table.set(row, "run", csv_quoted(a.run.run_dir.string()));
         table.set(row, "seed", std::to_string(a.run.plan.engine.seed));
         table.set(row, "steady_from_s", exact_number(a.run.window.from));
+        table.set(row, "steady_to_s", exact_number(a.run.window.to));
         table.set(row, "steady_frames", std::to_string(a.run.setup.steady_frames));
         for (const ObservableResults& r : a.results)
             for (const ScalarResult& s : r.scalars) {

@@ -29,7 +29,8 @@ std::string observable_names() {
 const CommandSpec& analyze_command_spec() {
     static const CommandSpec spec{
         "analyze",
-        "RUN_DIR [RUN_DIR ...] [--observables NAME,...] [--from T] [--param KEY=VALUE ...] "
+        "RUN_DIR [RUN_DIR ...] [--observables NAME,...] [--from T] [--to T] [--param KEY=VALUE "
+        "...] "
         "[--out DIR] [--table FILE] [--quiet]",
         "the paper's observables with error bars",
         "Turns trajectories written by `rodsea run` into the paper's numbers (docs/analysis.md). "
@@ -50,6 +51,9 @@ const CommandSpec& analyze_command_spec() {
          {"--from", "T",
           "start of the steady window, s; default: the latest of the steady starts of the run's "
           "order series (P, S, Σ, N_m; each by Chodera's rule), which it names"},
+         {"--to", "T",
+          "end of the run as analysed, s: the frames after it are left out of everything, the "
+          "automatic start included (default: the run's last frame)"},
          {"--param", "KEY=VALUE",
           "an analysis parameter, e.g. flocks.eps=2.25 (the keys below); may be repeated", true},
          {"--out", "DIR", "output directory for a single run (default RUN_DIR/analysis)"},
@@ -120,6 +124,9 @@ int analyze_command(const std::vector<std::string>& args, std::ostream& out, std
     if (const auto from = words.value("--from"))
         request.from = parse_number("--from", *from, -std::numeric_limits<double>::infinity(),
                                     std::numeric_limits<double>::infinity(), "s");
+    if (const auto to = words.value("--to"))
+        request.to = parse_number("--to", *to, -std::numeric_limits<double>::infinity(),
+                                  std::numeric_limits<double>::infinity(), "s");
     for (const std::string& kv : words.values_of("--param")) {
         const auto eq = kv.find('=');
         if (eq == std::string::npos)

@@ -70,14 +70,15 @@ PreparedRun prepare_run(const std::vector<fs::path>& parts, const AnalyzeRequest
     p.times = reader.times();
     // A run whose duration is not a whole number of output intervals ends with a frame off the
     // grid: the averages and correlations need equally spaced frames, so it is left out.
-    const std::size_t frames = stored.grid_frames();
+    std::size_t frames = stored.grid_frames();
     if (frames < p.times.size())
         p.skipped.push_back("the last frame (t = " + format_number(p.times.back()) +
                             " s): the run ended there, off the " +
                             format_number(p.plan.control.output_interval) +
                             " s output grid, so it is not equally spaced with the others");
     p.times.resize(frames);
-    p.still_running = still_running(p.run_dir, p.times.back());
+    p.stored_frames = frames;
+    p.stored_last_time = p.times.back();
     p.setup.frame_interval = static_cast<double>(p.plan.steps_per_output()) * p.plan.engine.dt;
     for (std::size_t k = 1; k < frames; ++k)
         // Times are multiples of the output step: anything beyond rounding is not a rodsea run.
@@ -100,16 +101,43 @@ PreparedRun prepare_run(const std::vector<fs::path>& parts, const AnalyzeRequest
                                                    std::to_string(p.setup.total_count()));
 
     SteadyWindow& w = p.window;
+    // Rounding slack only: --from 0.5 must select the frame stored at 0.49999999999 s, and
+    // --from 0.515 the first frame at or after it, not the one at 0.51 (--to alike).
+    const double slack = 1e-6 * p.setup.frame_interval;
+    const std::string span = "the run's frames span " + format_number(p.times.front()) + " to " +
+                             format_number(p.times.back()) + " s";
+    if (request.to) {
+        // The run analysed as if it had ended at --to: the automatic start, the averages and the
+        // correlations all see only the frames up to it, so a late window of a long run (or an
+        // early one, to compare) needs no copy of the trajectory.
+        const double to = *request.to;
+        if (!std::isfinite(to) || to < p.times.front() - slack || to > p.times.back() + slack)
+            throw InvalidParameter(
+                "--to", format_number(to) + " s",
+                "[" + format_number(p.times.front()) + ", " + format_number(p.times.back()) + "] s",
+                span);
+        std::size_t end = frames;
+        while (end > 1 && p.times[end - 1] > to + slack)
+            --end;
+        if (end < frames)
+            p.skipped.push_back(std::to_string(frames - end) + " frames after --to " +
+                                format_number(to) + " s (" + format_number(p.times[end]) + " to " +
+                                format_number(p.times[frames - 1]) + " s)");
+        frames = end;
+        p.times.resize(frames);
+        w.to_given = true;
+    }
+    w.to = p.times.back();
+    // A run still being written matters only where the analysis reaches its last frame.
+    if (frames == p.stored_frames) p.still_running = still_running(p.run_dir, p.times.back());
     if (request.from) {
         const double from = *request.from;
-        // Rounding slack only: --from 0.5 must select the frame stored at 0.49999999999 s, and
-        // --from 0.515 the first frame at or after it, not the one at 0.51.
-        const double slack = 1e-6 * p.setup.frame_interval;
         if (!std::isfinite(from) || from > p.times.back() + slack || from < 0.0)
             throw InvalidParameter("--from", format_number(from) + " s",
                                    "[0, " + format_number(p.times.back()) + "] s",
-                                   "the run's frames span " + format_number(p.times.front()) +
-                                       " to " + format_number(p.times.back()) + " s");
+                                   w.to_given ? "--to ends the window at " +
+                                                    format_number(p.times.back()) + " s; " + span
+                                              : span);
         while (w.first_frame < frames && p.times[w.first_frame] < from - slack)
             ++w.first_frame;
     } else {
@@ -162,8 +190,10 @@ RunAnalysis analyze_run(const PreparedRun& run, std::ostream& log, bool quiet) {
                 log << " " << (part.has_parent_path() ? part.parent_path() : part).string();
             log << "\n";
         }
-        log << "  steady window from " << format_number(run.window.from) << " s (frame "
-            << run.window.first_frame << ", " << run.setup.steady_frames << " frames; ";
+        log << "  steady window from " << format_number(run.window.from) << " s";
+        if (run.window.to_given) log << " to " << format_number(run.window.to) << " s, --to,";
+        log << " (frame " << run.window.first_frame << ", " << run.setup.steady_frames
+            << " frames; ";
         if (run.window.automatic && !run.window.basis.empty()) {
             log << "automatic: the latest steady start of the order series, decided by "
                 << run.window.basis << ")\n";

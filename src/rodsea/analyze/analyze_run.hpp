@@ -19,6 +19,7 @@ namespace rodsea {
 struct AnalyzeRequest {
     std::vector<std::string> observables;  // empty: every one that applies
     std::optional<double> from;            // s; none: chosen automatically
+    std::optional<double> to;              // s; none: the run's last frame
     AnalysisOptions options;
 };
 
@@ -26,6 +27,8 @@ struct SteadyWindow {
     std::size_t first_frame = 0;
     double from = 0.0;                // s, time of the first steady frame
     bool automatic = false;           // chosen by latest_steady_start() rather than --from
+    double to = 0.0;                  // s, time of the last frame analysed
+    bool to_given = false;            // ended by --to rather than at the run's last frame
     std::string basis;                // the series whose steady start decided the automatic choice
     std::vector<SeriesStart> series;  // every order series: its own start, n_eff, drift
 };
@@ -37,7 +40,9 @@ struct PreparedRun {
     AnalysisSetup setup;
     AnalysisOptions options;  // resolved for this run
     SteadyWindow window;
-    std::vector<double> times;  // s, every frame
+    std::vector<double> times;      // s, every frame analysed (to --to)
+    std::size_t stored_frames = 0;  // the run's frames on the output grid, analysed or not
+    double stored_last_time = 0.0;  // s, the last of them
     std::vector<std::string> observables, skipped;
     // Non-empty while a rodsea process still writes the run (its directory's lock is held):
     // where it stands, so that nobody takes an analysis of part of a run for the whole.
