@@ -191,7 +191,12 @@ TEST(Campaign, InterruptedAndContinuedWithNothingLostOrRunTwiceThenCollected) {
             for (std::size_t k = 0; k < t.size(); ++k)
                 EXPECT_NEAR(t[k], 0.005 * static_cast<double>(k), 1e-12) << run;
             const std::string log = read_file(run.string() + ".log");
-            resumed_runs += count_of(log, "rodsea: interrupted") == 1;
+            const bool was_stopped = count_of(log, "rodsea: interrupted") == 1;
+            resumed_runs += was_stopped;
+            // The log keeps what the run said: how its start was built (once, resumed or not)
+            // and, after a stop, where it took up again.
+            EXPECT_EQ(count_of(log, "initial state built"), 1) << log;
+            EXPECT_EQ(count_of(log, ": from step "), was_stopped ? 1 : 0) << log;
         }
     }
     EXPECT_EQ(resumed_runs, 1);

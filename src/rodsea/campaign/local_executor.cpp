@@ -46,9 +46,9 @@ std::vector<std::string> run_words(const CampaignPaths& paths, const CampaignRun
     if (fs::exists(dir / kCheckpointFile, ec)) {
         what = "resume";
         // On this command's --threads, whatever the run started on: threads change the speed,
-        // never the trajectory.
-        words = {"run",    "--resume", dir.string(), "--threads", std::to_string(o.threads),
-                 "--quiet"};
+        // never the trajectory. Not --quiet (nor below): the log is the run's only record of
+        // its plan, of how its start was built and of its rate, a progress line every 5 %.
+        words = {"run", "--resume", dir.string(), "--threads", std::to_string(o.threads)};
         // A campaign extended since the run ended or stopped: on to the campaign's duration.
         const std::optional<RunProgress> progress = read_progress_file(dir);
         if (progress && ends_before(*progress, run.duration))
@@ -56,8 +56,8 @@ std::vector<std::string> run_words(const CampaignPaths& paths, const CampaignRun
     } else {
         // Killed before its first checkpoint (or never started): from the start.
         what = fs::exists(dir, ec) ? "restart (no checkpoint yet)" : "start";
-        words = {"run",       paths.config(run).string(), "--out",  dir.string(), "--overwrite",
-                 "--threads", std::to_string(o.threads),  "--quiet"};
+        words = {"run",       paths.config(run).string(), "--out", dir.string(), "--overwrite",
+                 "--threads", std::to_string(o.threads)};
     }
     if (o.backend) words.insert(words.end(), {"--backend", to_string(*o.backend)});
     return words;
