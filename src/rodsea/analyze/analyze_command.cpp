@@ -29,9 +29,8 @@ std::string observable_names() {
 const CommandSpec& analyze_command_spec() {
     static const CommandSpec spec{
         "analyze",
-        "RUN_DIR [RUN_DIR ...] [--observables NAME,...] [--from T] [--to T] [--param KEY=VALUE "
-        "...] "
-        "[--out DIR] [--table FILE] [--quiet]",
+        "RUN_DIR [RUN_DIR ...] [--observables NAME,...] [--from T] [--to T] "
+        "[--param KEY=VALUE ...] [--out DIR] [--table FILE] [--quiet]",
         "the paper's observables with error bars",
         "Turns trajectories written by `rodsea run` into the paper's numbers (docs/analysis.md). "
         "Each run gets RUN_DIR/analysis/ (or --out DIR, one run only):\n"
