@@ -99,7 +99,7 @@ TEST_F(AnalyzeCli, ToEndsTheWindowAsIfTheRunHadEndedThere) {
     EXPECT_EQ(run.window.first_frame, 5u);
     EXPECT_EQ(run.setup.steady_frames, 11u);
     EXPECT_TRUE(run.window.to_given);
-    EXPECT_NEAR(run.window.to, 0.03, 1e-12);
+    EXPECT_NEAR(run.times.back(), 0.03, 1e-12);
     EXPECT_EQ(run.stored_frames, 21u);
     EXPECT_EQ(run.still_running, "");
     ASSERT_FALSE(run.skipped.empty());

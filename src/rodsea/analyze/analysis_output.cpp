@@ -163,7 +163,7 @@ void write_analysis_files(const RunAnalysis& a, const fs::path& out_dir) {
          {{"from_s", w.from},
           {"first_frame", w.first_frame},
           {"frames", a.run.setup.steady_frames},
-          {"to_s", w.to},
+          {"to_s", a.run.times.back()},
           {"end", w.to_given ? "given: --to (the frames after it are not analysed)"
                              : "the run's last frame"},
           {"method", w.automatic
@@ -371,7 +371,7 @@ std::string summary_table_csv(const std::vector<RunAnalysis>& runs) {
         table.set(row, "run", csv_quoted(a.run.run_dir.string()));
         table.set(row, "seed", std::to_string(a.run.plan.engine.seed));
         table.set(row, "steady_from_s", exact_number(a.run.window.from));
-        table.set(row, "steady_to_s", exact_number(a.run.window.to));
+        table.set(row, "steady_to_s", exact_number(a.run.times.back()));
         table.set(row, "steady_frames", std::to_string(a.run.setup.steady_frames));
         for (const ObservableResults& r : a.results)
             for (const ScalarResult& s : r.scalars) {

@@ -127,7 +127,6 @@ PreparedRun prepare_run(const std::vector<fs::path>& parts, const AnalyzeRequest
         p.times.resize(frames);
         w.to_given = true;
     }
-    w.to = p.times.back();
     // A run still being written matters only where the analysis reaches its last frame.
     if (frames == p.stored_frames) p.still_running = still_running(p.run_dir, p.times.back());
     if (request.from) {
@@ -191,7 +190,7 @@ RunAnalysis analyze_run(const PreparedRun& run, std::ostream& log, bool quiet) {
             log << "\n";
         }
         log << "  steady window from " << format_number(run.window.from) << " s";
-        if (run.window.to_given) log << " to " << format_number(run.window.to) << " s, --to,";
+        if (run.window.to_given) log << " to " << format_number(run.times.back()) << " s, --to,";
         log << " (frame " << run.window.first_frame << ", " << run.setup.steady_frames
             << " frames; ";
         if (run.window.automatic && !run.window.basis.empty()) {

@@ -27,7 +27,6 @@ struct SteadyWindow {
     std::size_t first_frame = 0;
     double from = 0.0;                // s, time of the first steady frame
     bool automatic = false;           // chosen by latest_steady_start() rather than --from
-    double to = 0.0;                  // s, time of the last frame analysed
     bool to_given = false;            // ended by --to rather than at the run's last frame
     std::string basis;                // the series whose steady start decided the automatic choice
     std::vector<SeriesStart> series;  // every order series: its own start, n_eff, drift
