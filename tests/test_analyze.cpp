@@ -340,8 +340,12 @@ TEST_F(AnalyzeCli, BadInputIsRefusedByNameAndWritesNothing) {
         {{"analyze", mix, "--from", "5"}, 2, "[0, 0.04] s"},
         {{"analyze", mix, "--from", "-1"}, 2, "--from"},
         {{"analyze", mix, "--to", "5"}, 2, "invalid --to = 5 s: allowed [0, 0.04] s"},
-        // --from past --to: the message names the window's end.
-        {{"analyze", mix, "--from", "0.03", "--to", "0.02"}, 2, "--to ends the window at 0.02 s"},
+        // --from past --to: the message names both ends.
+        {{"analyze", mix, "--from", "0.03", "--to", "0.02"},
+         2,
+         "invalid --to = 0.02 s: allowed at least --from (0.03 s)"},
+        // A window between two frames holds none: refused, not analysed empty.
+        {{"analyze", mix, "--from", "0.0201", "--to", "0.0219"}, 2, "at least one frame"},
         {{"analyze", medium, "--observables", "flocks"}, 2, "needs polar rods"},
         {{"analyze", mix, "--observables", "flock"}, 2, "did you mean 'flocks'"},
         {{"analyze", mix, "--param", "flocks.epss=1"}, 2, "did you mean 'flocks.eps'"},

@@ -76,6 +76,27 @@ TEST_F(FrameSelection, WindowIncludesItsEndsAndCountsEveryWithinIt) {
     EXPECT_THROW(select_frame_window(run, 0.07, std::nullopt, 1), InvalidParameter);
     EXPECT_THROW(select_frame_window(run, 0.04, 0.02, 1), InvalidParameter);
     EXPECT_THROW(select_frame_window(run, 0.011, 0.019, 1), InvalidParameter);  // no frame in it
+    // A --to the run has not reached is refused, as analyze refuses it, not clamped to 0.06 s.
+    EXPECT_THROW(select_frame_window(run, std::nullopt, 0.07, 1), InvalidParameter);
+}
+
+TEST_F(FrameSelection, SpanIsTheWindowAnalyzeAndExportShare) {
+    const StoredRun run = open("run");
+    const double interval = run.plan.control.output_interval;
+    const FrameSpan all = select_frame_span(run.times(), interval, std::nullopt, std::nullopt);
+    EXPECT_EQ(all.first, 0u);
+    EXPECT_EQ(all.end, 7u);
+    // Both ends included, within rounding of the stored sums of dt.
+    const FrameSpan mid = select_frame_span(run.times(), interval, 0.02, 0.05);
+    EXPECT_EQ(mid.first, 2u);
+    EXPECT_EQ(mid.end, 6u);
+    // A continuation's frames start late; a --from before them starts at its first frame.
+    const std::vector<double> late{1.0, 1.01, 1.02};
+    const FrameSpan cont = select_frame_span(late, 0.01, 0.5, std::nullopt);
+    EXPECT_EQ(cont.first, 0u);
+    EXPECT_EQ(cont.end, 3u);
+    EXPECT_THROW(select_frame_span(late, 0.01, std::nullopt, 0.5), InvalidParameter);
+    EXPECT_THROW(select_frame_span(late, 0.01, -0.1, std::nullopt), InvalidParameter);
 }
 
 TEST_F(FrameSelection, OneFrameRun) {

@@ -101,44 +101,25 @@ PreparedRun prepare_run(const std::vector<fs::path>& parts, const AnalyzeRequest
                                                    std::to_string(p.setup.total_count()));
 
     SteadyWindow& w = p.window;
-    // Rounding slack only: --from 0.5 must select the frame stored at 0.49999999999 s, and
-    // --from 0.515 the first frame at or after it, not the one at 0.51 (--to alike).
-    const double slack = 1e-6 * p.setup.frame_interval;
-    const std::string span = "the run's frames span " + format_number(p.times.front()) + " to " +
-                             format_number(p.times.back()) + " s";
+    const FrameSpan span =
+        select_frame_span(p.times, p.setup.frame_interval, request.from, request.to);
     if (request.to) {
         // The run analysed as if it had ended at --to: the automatic start, the averages and the
         // correlations all see only the frames up to it, so a late window of a long run (or an
         // early one, to compare) needs no copy of the trajectory.
-        const double to = *request.to;
-        if (!std::isfinite(to) || to < p.times.front() - slack || to > p.times.back() + slack)
-            throw InvalidParameter(
-                "--to", format_number(to) + " s",
-                "[" + format_number(p.times.front()) + ", " + format_number(p.times.back()) + "] s",
-                span);
-        std::size_t end = frames;
-        while (end > 1 && p.times[end - 1] > to + slack)
-            --end;
-        if (end < frames)
-            p.skipped.push_back(std::to_string(frames - end) + " frames after --to " +
-                                format_number(to) + " s (" + format_number(p.times[end]) + " to " +
+        if (span.end < frames)
+            p.skipped.push_back(std::to_string(frames - span.end) + " frames after --to " +
+                                format_number(*request.to) + " s (" +
+                                format_number(p.times[span.end]) + " to " +
                                 format_number(p.times[frames - 1]) + " s)");
-        frames = end;
+        frames = span.end;
         p.times.resize(frames);
         w.to_given = true;
     }
     // A run still being written matters only where the analysis reaches its last frame.
     if (frames == p.stored_frames) p.still_running = still_running(p.run_dir, p.times.back());
     if (request.from) {
-        const double from = *request.from;
-        if (!std::isfinite(from) || from > p.times.back() + slack || from < 0.0)
-            throw InvalidParameter("--from", format_number(from) + " s",
-                                   "[0, " + format_number(p.times.back()) + "] s",
-                                   w.to_given ? "--to ends the window at " +
-                                                    format_number(p.times.back()) + " s; " + span
-                                              : span);
-        while (w.first_frame < frames && p.times[w.first_frame] < from - slack)
-            ++w.first_frame;
+        w.first_frame = span.first;
     } else {
         w.automatic = true;
         const SteadyChoice choice =

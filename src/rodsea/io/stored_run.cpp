@@ -221,36 +221,51 @@ std::size_t select_frame(const StoredRun& run, std::optional<long long> frame,
     return n - 1;
 }
 
-std::vector<std::size_t> select_frame_window(const StoredRun& run, std::optional<double> from,
-                                             std::optional<double> to, long long every) {
-    const std::vector<double>& t = run.times();
-    // Rounding slack only: --from 0.5 takes the frame stored at 0.49999999999 s.
-    const double slack = 1e-6 * run.plan.control.output_interval;
-    std::string range(1, '[');
-    range.append(format_number(t.front())).append(", ").append(format_number(t.back()));
-    range.append("] s");
+FrameSpan select_frame_span(const std::vector<double>& t, double interval,
+                            std::optional<double> from, std::optional<double> to) {
+    // Rounding slack only: --from 0.5 takes the frame stored at 0.49999999999 s, and --from
+    // 0.515 the first frame at or after it, not the one at 0.51 (--to alike).
+    const double slack = 1e-6 * interval;
     std::string span("the run's frames span ");
     span.append(format_number(t.front())).append(" to ").append(format_number(t.back()));
     span.append(" s");
+    const auto range = [](double lo, double hi) {
+        std::string r(1, '[');
+        r.append(format_number(lo)).append(", ").append(format_number(hi)).append("] s");
+        return r;
+    };
+    // Before the first frame is allowed: a continuation's directory starts late, and its run
+    // still starts at 0.
+    if (from && (!std::isfinite(*from) || *from < 0.0 || *from > t.back() + slack))
+        throw InvalidParameter("--from", format_number(*from) + " s", range(0.0, t.back()), span);
+    // Past the last frame is refused, not clamped: a --to the run has not reached is a typo or
+    // a run still being written, and a window silently shorter than asked is worse than either.
+    if (to && (!std::isfinite(*to) || *to < t.front() - slack || *to > t.back() + slack))
+        throw InvalidParameter("--to", format_number(*to) + " s", range(t.front(), t.back()), span);
     const double lo = from.value_or(t.front()), hi = to.value_or(t.back());
-    if (from && (!std::isfinite(*from) || *from > t.back() + slack || *from < 0.0))
-        throw InvalidParameter("--from", format_number(*from) + " s", range, span);
-    if (to && (!std::isfinite(*to) || *to < t.front() - slack))
-        throw InvalidParameter("--to", format_number(*to) + " s", range, span);
     if (hi < lo)
         throw InvalidParameter("--to", format_number(hi) + " s",
                                "at least --from (" + format_number(lo) + " s)");
+    FrameSpan s;
+    while (s.first < t.size() && t[s.first] < lo - slack)
+        ++s.first;
+    s.end = s.first;
+    while (s.end < t.size() && t[s.end] <= hi + slack)
+        ++s.end;
+    if (s.end == s.first)
+        throw InvalidParameter("--from", format_number(lo) + " s to " + format_number(hi) + " s",
+                               "a window that holds at least one frame",
+                               "frames are " + format_number(interval) + " s apart; " + span);
+    return s;
+}
+
+std::vector<std::size_t> select_frame_window(const StoredRun& run, std::optional<double> from,
+                                             std::optional<double> to, long long every) {
+    const FrameSpan span =
+        select_frame_span(run.times(), run.plan.control.output_interval, from, to);
     std::vector<std::size_t> frames;
-    long long in_window = 0;
-    for (std::size_t k = 0; k < t.size(); ++k) {
-        if (t[k] < lo - slack || t[k] > hi + slack) continue;
-        if (in_window++ % every == 0) frames.push_back(k);
-    }
-    if (frames.empty())
-        throw InvalidParameter(
-            "--from", format_number(lo) + " s to " + format_number(hi) + " s",
-            "a window that holds at least one frame",
-            "frames are " + format_number(run.plan.control.output_interval) + " s apart; " + span);
+    for (std::size_t k = span.first; k < span.end; k += static_cast<std::size_t>(every))
+        frames.push_back(k);
     return frames;
 }
 

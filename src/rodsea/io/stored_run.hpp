@@ -55,9 +55,18 @@ std::vector<std::vector<std::filesystem::path>> group_run_parts(
 std::size_t select_frame(const StoredRun& run, std::optional<long long> frame,
                          std::optional<double> time);
 
-// The frames with from − slack <= t <= to + slack (rounding slack only; none given: the run's
-// ends), then every `every`-th of them. Throws InvalidParameter naming --from or --to when the
-// window lies outside the run, is reversed, or holds no frame.
+// The frames of `times` (frame times `interval` s apart) with from − slack <= t <= to + slack
+// (rounding slack only; none given: the run's ends), as [first, end). The one reading of a
+// user's --from/--to for every read-side command: --from in [0, last frame], --to in [first
+// frame, last frame]; a value outside, a reversed window or one between two frames throws
+// InvalidParameter naming the flag and the run's range.
+struct FrameSpan {
+    std::size_t first = 0, end = 0;
+};
+FrameSpan select_frame_span(const std::vector<double>& times, double interval,
+                            std::optional<double> from, std::optional<double> to);
+
+// select_frame_span's frames, then every `every`-th of them.
 std::vector<std::size_t> select_frame_window(const StoredRun& run, std::optional<double> from,
                                              std::optional<double> to, long long every);
 
