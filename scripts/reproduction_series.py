@@ -17,7 +17,9 @@ run's frames from a checkpoint on) and SERIES_CSV the table of the run's earlier
 by this script with the same --bin: the two are joined into DIR/<SERIES_CSV's name>, the earlier
 table's bins before the continuation's first frame, then the continuation's; a bin that both hold
 in part gets the frame-weighted mean of the two, and steady is the continuation's analysis' (0
-for the earlier table's bins and the shared one, which that analysis did not see whole).
+for the earlier table's bins and the shared one, which that analysis did not see whole). The
+header line names every directory the table's frames came from, in order, with the time each
+continuation starts: `# RUN1 to T1 s, then RUN2 to T2 s, then RUN3 binned by ...`.
 Every frame must be in exactly one of them (the earlier table made from the first directory's
 frames up to the checkpoint, as a run stopped by a signal leaves them): frames in both, or in
 neither, are refused. Where the first directory holds frames past the checkpoint (a run killed
@@ -94,12 +96,20 @@ def series(run, width):
 HEADER = ["t_from", "t_to", "frames", "steady"] + [name for _, _, name in COLUMNS]
 
 
+BINNED = " binned by "
+
+
 def read_series(path, width):
-    """The rows of a series table this script wrote, checked against --bin."""
+    """The directories a series table this script wrote came from (its header line up to
+    BINNED) and its rows, checked against --bin."""
     if not os.path.isfile(path):
         fail(f"--continues {path}: missing")
     with open(path, encoding="utf-8") as f:
-        f.readline()
+        comment = f.readline()
+        if not comment.startswith("# ") or BINNED not in comment:
+            fail(f"--continues {path}: its first line is not this script's header "
+                 f"('# RUN_DIR{BINNED}...')")
+        sources = comment[2:comment.index(BINNED)]
         header = f.readline().strip().split(",")
         if header != HEADER:
             fail(f"--continues {path}: not a series table of this script (columns {header})")
@@ -109,7 +119,12 @@ def read_series(path, width):
         if abs(row[1] - row[0] - width) > 1e-9 * width or off_grid:
             fail(f"--continues {path}: its bin {row[0]:g}-{row[1]:g} s is not on the --bin "
                  f"{width:g} s grid")
-    return rows
+    return sources, rows
+
+
+def first_time(run):
+    """The time of a continuation's first frame, s: where the earlier directory's frames end."""
+    return float(read(os.path.join(run, "analysis", "order_parameters.csv"))["time"][0])
 
 
 def frames_per_bin(run, width):
@@ -184,13 +199,18 @@ def main(argv):
                  "with different --out")
     if a.continues and len(a.runs) != 1:
         fail("--continues joins one continuation to its run's earlier table: give one RUN_DIR")
-    earlier = read_series(a.continues, a.bin) if a.continues else None
+    sources, earlier = read_series(a.continues, a.bin) if a.continues else (None, None)
     os.makedirs(a.out, exist_ok=True)
     for run in a.runs:
         rows = series(run, a.bin)
-        comment = (f"# {os.path.normpath(run)} binned by {a.bin:g} s: means per bin; units: "
-                   "t_from [s] t_to [s], the rest [1]; steady = 1 when the whole bin lies in "
-                   "the analysis' steady window")
+        # The earlier table's own directories stay named: the header is the table's provenance,
+        # however many sessions the run took.
+        origin = os.path.normpath(run)
+        if earlier is not None:
+            origin = f"{sources} to {first_time(run):g} s, then {origin}"
+        comment = (f"# {origin}{BINNED}{a.bin:g} s: means per bin; units: t_from [s] t_to [s], "
+                   "the rest [1]; steady = 1 when the whole bin lies in the analysis' steady "
+                   "window")
         if earlier is None:
             write_series(os.path.join(a.out, point_name(run) + ".series.csv"), rows, comment)
             continue

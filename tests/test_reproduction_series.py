@@ -6,7 +6,9 @@ counts, steady flags (the continuation's, whatever window the first part was ana
 means to the tables' 6 digits (the bin that both parts hold in part, 4-5 s, is the frame-weighted
 mean of the two partial means, which is the mean over its frames).
 A table that runs past the continuation's start, shares frames with it or stops short of it is
-refused, and so is a continuation of one frame (its output interval is unknown).
+refused, and so is a continuation of one frame (its output interval is unknown). A run in three
+directories, joined twice, gives the whole run's table too, and its header names all three with
+the times the continuations start.
 
     /usr/bin/python3 tests/test_reproduction_series.py SOURCE_DIR SCRATCH_DIR
 Exit 77 (skipped) without numpy.
@@ -96,4 +98,37 @@ write_run(single, slice(44, 45))
 r = run_script(single, "--continues", os.path.join(scratch, "p", "first.series.csv"), "--out",
                os.path.join(scratch, "single-joined"))
 assert r.returncode == 2 and "at least two frames" in r.stderr, (r.returncode, r.stderr)
-print("reproduction_series --continues: the joined table is the whole run's (10 bins)")
+
+# Three sessions: the continuation split again at 7.0 s and joined in two steps. The table is
+# the whole run's, and its header keeps the first two directories, which the second join's
+# input table alone no longer shows.
+mid, last = os.path.join(scratch, "mid"), os.path.join(scratch, "last")
+write_run(mid, slice(44, 70))
+write_run(last, slice(70, 100))
+r = run_script(mid, "--continues", os.path.join(scratch, "p", "first.series.csv"), "--out",
+               os.path.join(scratch, "j1"))
+assert r.returncode == 0, r.stderr
+r = run_script(last, "--continues", os.path.join(scratch, "j1", "first.series.csv"), "--out",
+               os.path.join(scratch, "j2"))
+assert r.returncode == 0, r.stderr
+twice = os.path.join(scratch, "j2", "first.series.csv")
+for name in ("t_from", "t_to", "frames"):
+    assert np.array_equal(table(twice)[name], expected[name]), (name, table(twice)[name])
+# Steady is the last analysis' (from 7 s, where its frames start), not the whole run's (5 s).
+assert np.array_equal(table(twice)["steady"], expected["t_from"] >= 7), table(twice)["steady"]
+assert np.allclose(table(twice)["P_polar"], expected["P_polar"], rtol=4e-6, atol=0)
+with open(twice, encoding="utf-8") as f:
+    header = f.readline()
+chain = f"# {first} to 4.4 s, then {mid} to 7 s, then {last} binned by 1 s"
+assert header.startswith(chain), (header, chain)
+
+# A table whose header is not this script's cannot say where its frames came from: refused.
+foreign = os.path.join(scratch, "foreign.series.csv")
+with open(os.path.join(scratch, "p", "first.series.csv"), encoding="utf-8") as f:
+    lines = f.readlines()
+with open(foreign, "w", encoding="utf-8") as f:
+    f.writelines(["# made by hand\n"] + lines[1:])
+r = run_script(rest, "--continues", foreign, "--out", os.path.join(scratch, "foreign-joined"))
+assert r.returncode == 2 and "header" in r.stderr, (r.returncode, r.stderr)
+print("reproduction_series --continues: the joined table is the whole run's (10 bins), also "
+      "joined in two steps, with every directory named in its header")
