@@ -26,7 +26,8 @@ FIG1C_POINTS = [
 ]
 FIG1C_SERIES = f"{DATA}/fig1c-phi_p0.05-long"
 # Item 3, finite size: the ordered (φ_a = 0.05) and the disordered (0.20) point in up to three
-# boxes each: {φ_a: [(label, series table, polar rods)]}; a box not run yet is left out.
+# boxes each, and the dense end (0.65, 0.80) in two: {φ_a: [(label, series table, polar rods)]};
+# a box not run yet is left out.
 FINITE_SIZE = {
     0.05: [
         ("38 mm box", f"{DATA}/finite-size/fig1c-phi_a0.05-scale0.15.series.csv", 18),
@@ -39,6 +40,10 @@ FINITE_SIZE = {
         ("63 mm box", f"{FIG1C_SERIES}/medium.area_fraction=0.2_extended_to_180_s.series.csv", 50),
         ("88 mm box", f"{DATA}/finite-size/fig1c-phi_a0.20-scale0.35.series.csv", 98),
     ],
+} | {
+    phi: [("38 mm box", f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi:g}.series.csv", 18),
+          ("63 mm box", f"{DATA}/fig1c-dense-63mm/medium.area_fraction={phi:g}.series.csv", 50)]
+    for phi in (0.65, 0.80)
 }
 
 # The first row in the 38 mm box (18 polar rods), 180 s per run: {φ_a: [series table per seed]};
@@ -353,11 +358,11 @@ def draw_fig1c_series(plt):
 
 
 def draw_finite_size(plt):
-    """P against time for the φ_a = 0.05 and 0.20 points in each box, 5 s means, beside the
-    order of N random headings, √(π/4N), which a disordered state of N polar rods shows."""
-    fig, axes = plt.subplots(1, 2, figsize=(10.0, 3.6), sharey=True)
+    """P against time for each FINITE_SIZE point in each box, 5 s means, beside the order of N
+    random headings, √(π/4N), which a disordered state of N polar rods shows."""
+    fig, axes = plt.subplots(2, 2, figsize=(10.0, 6.6), sharey=True)
     dump = {}
-    for ax, (phi, boxes) in zip(axes, FINITE_SIZE.items()):
+    for ax, (phi, boxes) in zip(axes.flat, FINITE_SIZE.items()):
         for (label, relative, rods), colour in zip(boxes, ("C0", "C1", "C2")):
             if not os.path.isfile(os.path.join(ROOT, relative)):
                 continue  # a box not run yet
@@ -367,11 +372,13 @@ def draw_finite_size(plt):
             ax.axhline(floor, color=colour, lw=0.9, ls="--")
             dump[f"P_polar: φ_a = {phi:.2f}, {label}"] = {"x": mid.tolist(), "y": mean.tolist()}
             dump[f"random headings: φ_a = {phi:.2f}, {label}"] = {"x": [], "y": [floor]}
-        ax.set_xlabel("t (s)")
         ax.set_title(f"φ_a = {phi:.2f}", fontsize=10)
         ax.legend(loc="best", fontsize=8)
-    axes[0].set_ylabel("P (5 s means)")
-    fig.suptitle("φ_p = 0.05, σ = 3.125, D_r = 0 in boxes of three sizes (dashed: N random "
+    for ax in axes[1]:
+        ax.set_xlabel("t (s)")
+    for ax in axes[:, 0]:
+        ax.set_ylabel("P (5 s means)")
+    fig.suptitle("φ_p = 0.05, σ = 3.125, D_r = 0 in boxes of up to three sizes (dashed: N random "
                  "headings)", fontsize=10)
     fig.tight_layout()
     return fig, dump

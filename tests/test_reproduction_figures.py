@@ -5,8 +5,9 @@ the 38 mm row's, Fig. 1f's and the bead medium's (heavy and light beads) points 
 block means of their series tables, the 38 mm row's C(t) against its tables, its dense
 end's 5 s means against their series, what carries P (P_independent, flock_alignment)
 against each run's analysis summary, the dilute end's G(r) and P(t) against their tables, its
-medium-mass and time-step points against their summaries, and each seed's P(t) either side of
-the medium-mass turn against its series.
+medium-mass and time-step points against their summaries, each seed's P(t) either side of
+the medium-mass turn against its series, and each box's P(t) of the finite-size figure against
+its series.
 
     /usr/bin/python3 tests/test_reproduction_figures.py SOURCE_DIR SCRATCH_DIR
 Exit 77 (skipped) without numpy or matplotlib.
@@ -150,6 +151,26 @@ for phi, relative, _ in figures.DENSE38:
     checked += 1
 assert checked >= 1, "no dense-end series was checked"
 print(f"checked the series of {checked} dense-end runs of reproduction-dense38.png")
+
+# Finite size: each box's P(t) is its series table's 1 s bins in 5 s means, and its dashed line
+# √(π/4N) for the box's N polar rods (the mean |Σ of N random unit vectors| / N, large N).
+sizes = drawn_figure("finite-size")
+checked = 0
+for phi, boxes in figures.FINITE_SIZE.items():
+    for label, relative, rods in boxes:
+        path = os.path.join(source, relative)
+        key = f"φ_a = {phi:.2f}, {label}"
+        if not os.path.isfile(path):
+            assert f"P_polar: {key}" not in sizes, f"{key} drawn without a table"
+            continue
+        col, rows = read_table(path)
+        assert are_bin_means(sizes[f"P_polar: {key}"]["y"],
+                             [float(r[col["P_polar"]]) for r in rows], 5), key
+        assert abs(sizes[f"random headings: {key}"]["y"][0] - math.sqrt(math.pi / (4 * rods))) \
+            < 1e-12, key
+        checked += 1
+assert checked >= 8, f"only {checked} finite-size series were checked"
+print(f"checked the P(t) of {checked} boxes of reproduction-finite-size.png against their series")
 
 # Fig. 1f: each D_r's point is the mean of its 15 s block means over 30–90 s.
 fig1f = drawn_figure("fig1f")
