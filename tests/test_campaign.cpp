@@ -140,7 +140,11 @@ int count_of(const std::string& text, const std::string& word) {
 TEST(Campaign, InterruptedAndContinuedWithNothingLostOrRunTwiceThenCollected) {
     const ScratchDir scratch("campaign");
     const fs::path file = scratch.path() / "grid.toml";
-    std::ofstream(file) << kCampaign;
+    // The runs analysed to 0.1 s of their 0.15 s: collect must pass [analysis] to on.
+    std::string campaign = kCampaign;
+    const std::string observables = "observables = [\"order\"]\n";
+    campaign.insert(campaign.find(observables) + observables.size(), "to = 0.1\n");
+    std::ofstream(file) << campaign;
     const fs::path dir = scratch.path() / "grid";
     const fs::path runs = dir / "runs";
     const std::string first = "medium.area_fraction=0.1,gamma=5";
@@ -201,7 +205,8 @@ TEST(Campaign, InterruptedAndContinuedWithNothingLostOrRunTwiceThenCollected) {
     }
     EXPECT_EQ(resumed_runs, 1);
 
-    // collect = analyse each run by hand: the same per-run P; each point's the mean of its two.
+    // collect = analyse each run by hand to 0.1 s: the same per-run P; each point's the mean of
+    // its two.
     const ChildResult collected =
         run_rodsea({"campaign", "collect", file.string(), "--out", dir.string()}, scratch.path());
     ASSERT_EQ(collected.exit_code, 0) << collected.out << collected.err;
@@ -211,8 +216,8 @@ TEST(Campaign, InterruptedAndContinuedWithNothingLostOrRunTwiceThenCollected) {
         if (point.is_directory())
             for (const char* seed : {"seed1", "seed2"})
                 analyze.push_back((point.path() / seed).string());
-    analyze.insert(analyze.end(),
-                   {"--observables", "order", "--table", by_hand.string(), "--quiet"});
+    analyze.insert(analyze.end(), {"--observables", "order", "--to", "0.1", "--table",
+                                   by_hand.string(), "--quiet"});
     ASSERT_EQ(run_rodsea(analyze, scratch.path()).exit_code, 0);
     std::map<std::string, double> hand;
     for (const auto& row : csv_rows(by_hand))

@@ -143,6 +143,13 @@ TEST(CampaignFile, BadFilesAreRefusedByKeyWithTheAllowedValues) {
         {"[analysis]\nparameters = { \"flocks.epss\" = 2.0 }\n", "did you mean 'flocks.eps'"},
         {"[analysis]\nparameters = { \"flocks.eps\" = -1.0 }\n",
          "invalid analysis.parameters.flocks.eps = -1"},
+        // A window the runs do not reach (the base's 0.1 s), or reversed.
+        {"[analysis]\nto = 0.5\n",
+         "invalid analysis.to = 0.5 s: allowed at most the runs' duration (0.1 s at campaign "
+         "point"},
+        {"[analysis]\nfrom = 0.2\n", "invalid analysis.from = 0.2 s: allowed at most the runs'"},
+        {"[analysis]\nfrom = 0.05\nto = 0.02\n",
+         "invalid analysis.to = 0.02 s: allowed at least analysis.from (0.05 s)"},
     };
     for (const BadCampaign& c : cases) {
         try {

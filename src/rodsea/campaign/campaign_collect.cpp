@@ -23,6 +23,7 @@ AnalyzeRequest request_of(const CampaignAnalysis& a) {
     AnalyzeRequest r;
     r.observables = a.observables;
     r.from = a.from;
+    r.to = a.to;
     for (const auto& [key, value] : a.parameters)
         set_analysis_option(r.options, key, value, campaign_analysis_parameter_name(key));
     return r;

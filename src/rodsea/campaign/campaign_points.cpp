@@ -7,6 +7,7 @@
 #include "rodsea/analyze/observable_registry.hpp"
 #include "rodsea/builder/initial_state.hpp"
 #include "rodsea/error.hpp"
+#include "rodsea/number_text.hpp"
 #include "rodsea/run/steady_stop.hpp"
 
 namespace rodsea {
@@ -94,6 +95,16 @@ CampaignGrid expand_campaign(const Campaign& c, const CampaignScaling& scaling,
         } catch (const InvalidParameter& e) {
             throw e.in_context(what);
         }
+        // A window past a point's end would be refused by collect's analysis after the runs.
+        const double duration = p.plan.control.duration;
+        for (const auto& [key, t] :
+             {std::pair{"analysis.from", c.analysis.from}, std::pair{"analysis.to", c.analysis.to}})
+            if (t && *t > duration)
+                throw InvalidParameter(key, format_number(*t) + " s",
+                                       "at most the runs' duration (" + format_number(duration) +
+                                           " s at " + what + ")",
+                                       "a longer time.duration (or --duration), or an earlier "
+                                       "window");
         const PackingCheck packing = check_packing(p.plan.engine, p.plan.counts);
         if (!packing.ok)
             throw InvalidParameter("species", "the counts of " + what, "a packing that fits",

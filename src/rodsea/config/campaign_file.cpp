@@ -89,6 +89,10 @@ const std::vector<CampaignKey>& campaign_keys() {
         {"analysis", "from", "real", "s", "automatic",
          "Start of the steady window of every run (`rodsea analyze --from`); without it each "
          "run's own automatic window (docs/analysis.md)."},
+        {"analysis", "to", "real", "s", "the run's end",
+         "End of the window of every run (`rodsea analyze --to`): each run analysed as if it "
+         "had ended there, so runs of different lengths compare over one window. At least "
+         "`from`; at most every point's duration."},
         {"analysis", "observables", "array of strings", "", "all that apply",
          "The observables to compute (`rodsea analyze --observables`)."},
         {"analysis", "parameters", "table", "", "{}",
@@ -402,6 +406,17 @@ class CampaignReader {
             if (!v || !std::isfinite(*v) || *v < 0.0)
                 throw InvalidParameter("analysis.from", "", "a time >= 0 s", where(*from));
             a.from = *v;
+        }
+        if (const toml::node* to = t.get("to")) {
+            const auto v = to->value<double>();
+            const double lowest = a.from.value_or(0.0);
+            if (!v || !std::isfinite(*v) || *v < lowest)
+                throw InvalidParameter(
+                    "analysis.to", v ? format_number(*v) + " s" : "",
+                    a.from ? "at least analysis.from (" + format_number(lowest) + " s)"
+                           : "a time >= 0 s",
+                    where(*to));
+            a.to = *v;
         }
         a.observables = strings(t, "observables", "analysis");
         if (const toml::node* p = t.get("parameters")) {

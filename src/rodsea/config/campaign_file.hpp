@@ -33,6 +33,7 @@ struct CampaignOverride {
 
 struct CampaignAnalysis {
     std::optional<double> from;                                   // s; none: automatic window
+    std::optional<double> to;                                     // s; none: the run's end
     std::vector<std::string> observables;                         // empty: all that apply
     std::vector<std::pair<std::string, std::string>> parameters;  // --param KEY=VALUE
 };
