@@ -207,7 +207,7 @@ def main(argv):
         # however many sessions the run took.
         origin = os.path.normpath(run)
         if earlier is not None:
-            origin = f"{sources} to {first_time(run):g} s, then {origin}"
+            origin = f"{sources} to {first_time(run):.10g} s, then {origin}"
         comment = (f"# {origin}{BINNED}{a.bin:g} s: means per bin; units: t_from [s] t_to [s], "
                    "the rest [1]; steady = 1 when the whole bin lies in the analysis' steady "
                    "window")

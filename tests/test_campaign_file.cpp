@@ -145,9 +145,18 @@ TEST(CampaignFile, BadFilesAreRefusedByKeyWithTheAllowedValues) {
          "invalid analysis.parameters.flocks.eps = -1"},
         // A window the runs do not reach (the base's 0.1 s), or reversed.
         {"[analysis]\nto = 0.5\n",
-         "invalid analysis.to = 0.5 s: allowed at most the runs' duration (0.1 s at campaign "
+         "invalid analysis.to = 0.5 s: allowed at most the runs' last frame (0.1 s at campaign "
          "point"},
         {"[analysis]\nfrom = 0.2\n", "invalid analysis.from = 0.2 s: allowed at most the runs'"},
+        // Off the output grid the last frame (0.1 s) is before the duration (0.105 s).
+        {"[[override]]\nset = { \"time.duration\" = 0.105 }\n[analysis]\nto = 0.103\n",
+         "at most the runs' last frame (0.1 s"},
+        // Between two frames (the default output interval is far above 0.1 ms).
+        {"[analysis]\nfrom = 0.0501\nto = 0.0502\n", "that holds a frame"},
+        // Runs that stop when steady end where each becomes steady, not at a known time.
+        {"[[override]]\nset = { \"time.duration\" = 10.0, \"time.steady_samples\" = 10 }\n"
+         "[analysis]\nto = 5.0\n",
+         "no analysis.to where runs stop when steady"},
         {"[analysis]\nfrom = 0.05\nto = 0.02\n",
          "invalid analysis.to = 0.02 s: allowed at least analysis.from (0.05 s)"},
     };

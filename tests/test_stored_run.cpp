@@ -96,6 +96,13 @@ TEST_F(FrameSelection, SpanIsTheWindowAnalyzeAndExportShare) {
     EXPECT_EQ(cont.first, 0u);
     EXPECT_EQ(cont.end, 3u);
     EXPECT_THROW(select_frame_span(late, 0.01, std::nullopt, 0.5), InvalidParameter);
+    // Within rounding of an end, a one-sided window still holds that end's frame.
+    const FrameSpan first_only = select_frame_span(late, 0.01, std::nullopt, 1.0 - 1e-10);
+    EXPECT_EQ(first_only.first, 0u);
+    EXPECT_EQ(first_only.end, 1u);
+    const FrameSpan last_only = select_frame_span(late, 0.01, 1.02 + 1e-10, std::nullopt);
+    EXPECT_EQ(last_only.first, 2u);
+    EXPECT_EQ(last_only.end, 3u);
     EXPECT_THROW(select_frame_span(late, 0.01, -0.1, std::nullopt), InvalidParameter);
 }
 

@@ -144,8 +144,10 @@ PreparedRun prepare_run(const std::vector<fs::path>& parts, const AnalyzeRequest
         std::ostringstream key;
         key << "rodsea " << RODSEA_VERSION << "|run " << run_id << "|frames " << frames
             << "|first step " << reader.steps()[0] << "|last step " << reader.steps()[frames - 1]
-            << "|window " << (w.automatic ? std::string("automatic") : exact_number(w.from))
-            << "|observables";
+            << "|window "
+            << (w.automatic ? std::string("automatic") : exact_number(w.from))
+            // The record says whether --to ended the window, even where it is the run's end.
+            << (w.to_given ? "|to" : "") << "|observables";
         for (const std::string& o : p.observables)
             key << " " << o;
         key << "|" << analysis_options_text(p.options);

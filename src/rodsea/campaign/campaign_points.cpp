@@ -1,6 +1,7 @@
 #include "rodsea/campaign/campaign_points.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string_view>
 
 #include "rodsea/analyze/analysis_options.hpp"
@@ -53,6 +54,36 @@ bool same_value(const config::Value& a, const config::Value& b) {
     return a == b;
 }
 
+// [analysis] from/to checked against the frames a point's runs will write: collect's analysis
+// would refuse a window past them, or between two of them, after hours of runs.
+void check_analysis_window(const CampaignAnalysis& a, const RunPlan& plan,
+                           const std::string& what) {
+    if (!a.from && !a.to) return;
+    if (a.to && plan.control.steady_samples > 0)
+        throw InvalidParameter(
+            "analysis.to", format_number(*a.to) + " s",
+            "no analysis.to where runs stop when steady",
+            "time.steady_samples = " + std::to_string(plan.control.steady_samples) + " at " + what +
+                ": its runs end where each becomes steady");
+    // The frames lie on the output grid; a duration off it ends with one that analyze drops.
+    const double interval = static_cast<double>(plan.steps_per_output()) * plan.engine.dt;
+    const double last =
+        static_cast<double>(plan.total_steps() / plan.steps_per_output()) * interval;
+    const double slack = 1e-6 * interval;
+    for (const auto& [key, t] :
+         {std::pair{"analysis.from", a.from}, std::pair{"analysis.to", a.to}})
+        if (t && *t > last + slack)
+            throw InvalidParameter(
+                key, format_number(*t) + " s",
+                "at most the runs' last frame (" + format_number(last) + " s at " + what + ")",
+                "a longer time.duration (or --duration), or an earlier window");
+    if (a.from && a.to && std::ceil(*a.from / interval - 1e-6) * interval > *a.to + slack)
+        throw InvalidParameter(
+            "analysis.to", format_number(*a.to) + " s",
+            "a window from analysis.from (" + format_number(*a.from) + " s) that holds a frame",
+            "frames are " + format_number(interval) + " s apart at " + what);
+}
+
 }  // namespace
 
 CampaignGrid expand_campaign(const Campaign& c, const CampaignScaling& scaling,
@@ -95,16 +126,7 @@ CampaignGrid expand_campaign(const Campaign& c, const CampaignScaling& scaling,
         } catch (const InvalidParameter& e) {
             throw e.in_context(what);
         }
-        // A window past a point's end would be refused by collect's analysis after the runs.
-        const double duration = p.plan.control.duration;
-        for (const auto& [key, t] :
-             {std::pair{"analysis.from", c.analysis.from}, std::pair{"analysis.to", c.analysis.to}})
-            if (t && *t > duration)
-                throw InvalidParameter(key, format_number(*t) + " s",
-                                       "at most the runs' duration (" + format_number(duration) +
-                                           " s at " + what + ")",
-                                       "a longer time.duration (or --duration), or an earlier "
-                                       "window");
+        check_analysis_window(c.analysis, p.plan, what);
         const PackingCheck packing = check_packing(p.plan.engine, p.plan.counts);
         if (!packing.ok)
             throw InvalidParameter("species", "the counts of " + what, "a packing that fits",

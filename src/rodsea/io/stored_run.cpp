@@ -243,7 +243,7 @@ FrameSpan select_frame_span(const std::vector<double>& t, double interval,
     if (to && (!std::isfinite(*to) || *to < t.front() - slack || *to > t.back() + slack))
         throw InvalidParameter("--to", format_number(*to) + " s", range(t.front(), t.back()), span);
     const double lo = from.value_or(t.front()), hi = to.value_or(t.back());
-    if (hi < lo)
+    if (hi < lo - slack)
         throw InvalidParameter("--to", format_number(hi) + " s",
                                "at least --from (" + format_number(lo) + " s)");
     FrameSpan s;
