@@ -92,7 +92,8 @@ const std::vector<CampaignKey>& campaign_keys() {
         {"analysis", "to", "real", "s", "the run's end",
          "End of the window of every run (`rodsea analyze --to`): each run analysed as if it "
          "had ended there, so runs of different lengths compare over one window. At least "
-         "`from`; at most every point's duration."},
+         "`from`, with a frame between them; at most every point's last frame; not with "
+         "`time.steady_samples` (runs that stop when steady)."},
         {"analysis", "observables", "array of strings", "", "all that apply",
          "The observables to compute (`rodsea analyze --observables`)."},
         {"analysis", "parameters", "table", "", "{}",
