@@ -151,6 +151,10 @@ ALIGNMENT_ROW = [
 ALIGNMENT_ROW_88MM = [
     (0.05, f"{ALIGNMENT}/fig1c-88mm-phi_a0.05-seed1-from60.summary.csv"),
 ]
+# The dense end in the 63 mm box (50 polar rods), over 60-180 s as the row's dilute points.
+ALIGNMENT_ROW_63MM = [
+    (0.65, f"{ALIGNMENT}/fig1c-63mm-phi_a0.65-seed1-from60.summary.csv"),
+]
 ALIGNMENT_NOISE = [(float(d), f"{ALIGNMENT}/fig1f-38mm-D_r{d}-seed2-from30.summary.csv")
                    for d in ("0", "0.026", "0.23", "1.21", "1.87")]
 
@@ -831,6 +835,7 @@ def draw_alignment(plt):
     fig, axes = plt.subplots(2, 2, figsize=(10.0, 6.0), sharex="col")
     dump = {}
     curves = ((0, "38 mm box", ALIGNMENT_ROW, True, "o-"),
+              (0, "63 mm box", ALIGNMENT_ROW_63MM, False, "s"),
               (0, "88 mm box", ALIGNMENT_ROW_88MM, False, "D"),
               (1, "38 mm box, seed 2", ALIGNMENT_NOISE, True, "o-"))
     for col, box, runs, required, fmt in curves:
@@ -838,7 +843,7 @@ def draw_alignment(plt):
         if not points:
             continue
         xs = [x for x, _ in points]
-        colour = "C0" if box.startswith("38") else "C3"
+        colour = {"38": "C0", "63": "C1"}.get(box[:2], "C3")
         for row, names in ((0, ("P_polar", "P_independent")), (1, ("flock_alignment",))):
             for name in names:
                 ys = [v[name][0] for _, v in points]
