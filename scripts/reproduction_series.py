@@ -66,6 +66,7 @@ def point_name(run):
 
 
 def series(run, width):
+    """The run's rows of the series table, binned by `width` s, and its frame times, s."""
     analysis = os.path.join(run, "analysis")
     tables = {"order_parameters.csv": read(os.path.join(analysis, "order_parameters.csv"))}
     for file, _, _ in COLUMNS:
@@ -90,7 +91,7 @@ def series(run, width):
             has = t is not None and column in t.dtype.names
             row.append(float(np.mean(t[column][pick])) if has else np.nan)
         rows.append(row)
-    return rows
+    return rows, time
 
 
 HEADER = ["t_from", "t_to", "frames", "steady"] + [name for _, _, name in COLUMNS]
@@ -122,14 +123,9 @@ def read_series(path, width):
     return sources, rows
 
 
-def first_time(run):
-    """The time of a continuation's first frame, s: where the earlier directory's frames end."""
-    return float(read(os.path.join(run, "analysis", "order_parameters.csv"))["time"][0])
-
-
-def frames_per_bin(run, width):
-    """How many frames a full bin holds: the bin width over the run's output interval."""
-    time = read(os.path.join(run, "analysis", "order_parameters.csv"))["time"]
+def frames_per_bin(run, time, width):
+    """How many frames a full bin holds: the bin width over the run's output interval (`time`:
+    the run's frame times)."""
     if len(time) < 2:
         fail(f"{run}: --continues needs at least two frames to know the output interval")
     return int(round(width / float(np.median(np.diff(time)))))
@@ -202,12 +198,12 @@ def main(argv):
     sources, earlier = read_series(a.continues, a.bin) if a.continues else (None, None)
     os.makedirs(a.out, exist_ok=True)
     for run in a.runs:
-        rows = series(run, a.bin)
+        rows, time = series(run, a.bin)
         # The earlier table's own directories stay named: the header is the table's provenance,
-        # however many sessions the run took.
+        # however many sessions the run took; the continuation starts at its first frame.
         origin = os.path.normpath(run)
         if earlier is not None:
-            origin = f"{sources} to {first_time(run):.10g} s, then {origin}"
+            origin = f"{sources} to {time[0]:.10g} s, then {origin}"
         comment = (f"# {origin}{BINNED}{a.bin:g} s: means per bin; units: t_from [s] t_to [s], "
                    "the rest [1]; steady = 1 when the whole bin lies in the analysis' steady "
                    "window")
@@ -216,7 +212,7 @@ def main(argv):
             continue
         comment += (f"; before {rows[0][0]:g} s from {os.path.normpath(a.continues)}, the run's "
                     "earlier frames, which this directory continues")
-        joined = join(earlier, rows, frames_per_bin(run, a.bin))
+        joined = join(earlier, rows, frames_per_bin(run, time, a.bin))
         write_series(os.path.join(a.out, os.path.basename(a.continues)), joined, comment)
 
 

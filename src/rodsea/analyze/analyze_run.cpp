@@ -79,7 +79,7 @@ PreparedRun prepare_run(const std::vector<fs::path>& parts, const AnalyzeRequest
     p.times.resize(frames);
     p.stored_frames = frames;
     p.stored_last_time = p.times.back();
-    p.setup.frame_interval = static_cast<double>(p.plan.steps_per_output()) * p.plan.engine.dt;
+    p.setup.frame_interval = p.plan.frame_interval();
     for (std::size_t k = 1; k < frames; ++k)
         // Times are multiples of the output step: anything beyond rounding is not a rodsea run.
         if (std::abs(p.times[k] - p.times[k - 1] - p.setup.frame_interval) >

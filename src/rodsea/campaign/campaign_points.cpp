@@ -66,7 +66,7 @@ void check_analysis_window(const CampaignAnalysis& a, const RunPlan& plan,
             "time.steady_samples = " + std::to_string(plan.control.steady_samples) + " at " + what +
                 ": its runs end where each becomes steady");
     // The frames lie on the output grid; a duration off it ends with one that analyze drops.
-    const double interval = static_cast<double>(plan.steps_per_output()) * plan.engine.dt;
+    const double interval = plan.frame_interval();
     const double last =
         static_cast<double>(plan.total_steps() / plan.steps_per_output()) * interval;
     const double slack = 1e-6 * interval;

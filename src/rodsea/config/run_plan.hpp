@@ -39,6 +39,9 @@ struct RunPlan {
 
     std::uint64_t total_steps() const;       // round(duration / dt)
     std::uint64_t steps_per_output() const;  // round(output_interval / dt), >= 1
+    // steps_per_output() × dt, s: the time between stored frames, which output_interval only
+    // approximates when it is not a whole number of steps.
+    double frame_interval() const;
 };
 
 }  // namespace rodsea

@@ -261,8 +261,7 @@ FrameSpan select_frame_span(const std::vector<double>& t, double interval,
 
 std::vector<std::size_t> select_frame_window(const StoredRun& run, std::optional<double> from,
                                              std::optional<double> to, long long every) {
-    const FrameSpan span =
-        select_frame_span(run.times(), run.plan.control.output_interval, from, to);
+    const FrameSpan span = select_frame_span(run.times(), run.plan.frame_interval(), from, to);
     std::vector<std::size_t> frames;
     for (std::size_t k = span.first; k < span.end; k += static_cast<std::size_t>(every))
         frames.push_back(k);

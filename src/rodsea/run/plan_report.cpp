@@ -198,8 +198,8 @@ void describe_plan(const RunPlan& plan, std::ostream& out, bool brief) {
             << " (checked every frame from frame " << kSteadyMinimumFrames << " on); " << duration
             << " s at most\n";
     out << "output   a frame every " << plan.steps_per_output() << " steps ("
-        << static_cast<double>(plan.steps_per_output()) * p.dt << " s), " << e.frames
-        << " frames of " << format_bytes(e.frame_bytes) << " = " << format_bytes(e.trajectory_bytes)
+        << plan.frame_interval() << " s), " << e.frames << " frames of "
+        << format_bytes(e.frame_bytes) << " = " << format_bytes(e.trajectory_bytes)
         << "; checkpoint " << format_bytes(e.checkpoint_bytes) << " every "
         << format_duration(plan.control.checkpoint_interval * 60.0) << " of wall time\n";
     out << "memory   about " << format_bytes(e.memory_bytes);

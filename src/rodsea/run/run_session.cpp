@@ -215,7 +215,7 @@ int RunSession::finish(std::ostream& out, std::ostream& err, ProgressStyle style
     }
     if (style == ProgressStyle::quiet) return kExitOk;
     if (verdict) {
-        const double frame_time = static_cast<double>(plan_.steps_per_output()) * plan_.engine.dt;
+        const double frame_time = plan_.frame_interval();
         out << who_ << "steady: the window from "
             << format_number(frame_time * static_cast<double>(verdict->first_frame))
             << " s (decided by " << verdict->decided_by
