@@ -10,11 +10,12 @@ SERIES.csv is a table of scripts/reproduction_series.py (time bins of P_polar, S
 N_m, ...). The window [T0, T1) (s; T1 default: the table's end; bins by their middles) is cut
 into blocks of --block seconds (default 15; a shorter remainder at the end is left out); each
 column's mean is the mean of the block means and its error their standard deviation over
-√(blocks − 1), the error of a mean of independent blocks (blocks longer
-than the correlation time of P, a few seconds here). Prints one line per table and column.
+√(blocks − 1), the error of a mean of independent blocks. Prints one line per table and
+column.
 
-That holds only when the blocks are longer than the correlation time, and at the dense end P
-moves on scales of 30-50 s. --blocking checks it (Flyvbjerg and Petersen's blocking analysis):
+That holds only when the blocks are longer than P's correlation time, and in the first row's
+120 s windows P is correlated beyond 16 s (at the dense end it moves on scales of 30-50 s), so
+15 s blocks understate the error. --blocking checks it (Flyvbjerg and Petersen's blocking analysis):
 for one column (default P_polar) it prints the error at block lengths doubling from one bin to
 a quarter of the window, each with its own uncertainty (error/sqrt(2(blocks - 1))), and says
 where the errors stop growing: the first length whose error no longer length (at least two of
