@@ -48,19 +48,29 @@ FINITE_SIZE = {
 
 # The first row in the 38 mm box (18 polar rods), 180 s per run: {φ_a: [series table per seed]};
 # each run's P, Σ and N_m over ROW38_WINDOW, errors from blocks of ROW38_BLOCK seconds. A seed not
-# run yet is left out. The dense end (0.65, 0.80) is fig1c-dense-38mm.toml's, continued to 270 s;
-# the row is compared over the window every run has.
+# run yet is left out. The dense end (0.65, 0.80) is fig1c-dense-38mm.toml's, continued to 270 s,
+# and its second seed's, stopped at 209 s; the row is compared over the window every run has.
 ROW38 = {
     phi: [f"{DATA}/finite-size/fig1c-phi_a{phi}-scale0.15.series.csv"] + [
         f"{DATA}/finite-size/replicates38/medium.area_fraction={phi.rstrip('0')}.seed{k}.series.csv"
         for k in (2, 3) if phi in ("0.05", "0.20")]
     for phi in ("0.05", "0.20", "0.35", "0.50")
 } | {
-    phi: [f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi.rstrip('0')}.series.csv"]
+    phi: [f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi.rstrip('0')}{seed}.series.csv"
+          for seed in ("", ".seed2")]
     for phi in ("0.65", "0.80")
 }
 ROW38_WINDOW = (60.0, 180.0)
 ROW38_BLOCK = 15.0
+# The same row in the 63 mm box (50 polar rods), one seed: {φ_a: (series table, window in s)}.
+# A run not yet at ROW38_WINDOW's end is drawn over the window it has (whole 15 s blocks), as an
+# open marker.
+ROW63 = {
+    0.05: (f"{FIG1C_SERIES}/medium.area_fraction=0.05_extended_to_180_s.series.csv", ROW38_WINDOW),
+    0.20: (f"{FIG1C_SERIES}/medium.area_fraction=0.2_extended_to_180_s.series.csv", ROW38_WINDOW),
+    0.65: (f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.series.csv", ROW38_WINDOW),
+    0.80: (f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.8.series.csv", (67.0, 112.0)),
+}
 # The dense end's C(t) is taken over the last 150 s of its 270 s, past the growth of the flocks.
 DENSE38_CT_WINDOW = (120.0, 270.0)
 # SI S3(a) in the same box: the polar rods' C(t) at each φ_a, from `rodsea analyze --observables
@@ -388,11 +398,29 @@ def draw_finite_size(plt):
     return fig, dump
 
 
-def draw_row38(plt):
-    """P, Σ and N_m against φ_a in the 38 mm box: each seed's 60–180 s mean (error from 15 s
-    blocks) and the mean over the seeds."""
+def row_point(relative, name, window, block):
+    """`name`'s block mean and error over `window` in one series table; a table that ends before
+    the window does is refused (block_means would average what there is)."""
     from block_means import block_means
-    fig, axes = plt.subplots(1, 3, figsize=(12.0, 3.6))
+    t = read_csv(relative)
+    for needed in ("t_from", "t_to", name):
+        column(t, needed, relative)
+    # Its 1 s bins end at most a bin early.
+    if np.nanmax(t["t_to"]) < window[1] - 1.0:
+        raise TableError(f"{relative}: ends at {np.nanmax(t['t_to']):g} s, before the window's "
+                         f"{window[1]:g} s")
+    try:
+        mean, err, _ = block_means(t, *window, block)[name]
+    except (KeyError, ValueError):
+        raise TableError(f"{relative}: shorter than {window[1]:g} s") from None
+    return mean, err
+
+
+def draw_row(plt):
+    """P, Σ and N_m against φ_a: in the 38 mm box each seed's 60–180 s mean (error from 15 s
+    blocks) and the mean over the seeds; in the 63 mm box its one seed, over 60–180 s where the
+    run has it."""
+    fig, axes = plt.subplots(1, 3, figsize=(12.0, 3.8))
     dump = {}
     panels = (("P_polar", "P (polar rods)"), ("Sigma", "Σ (segregation)"),
               ("N_m", "⟨N_m⟩ (rods per flock)"))
@@ -404,18 +432,7 @@ def draw_row38(plt):
             for relative in tables:
                 if not os.path.isfile(os.path.join(ROOT, relative)):
                     continue  # a seed not run yet
-                t = read_csv(relative)
-                for needed in ("t_from", "t_to", name):
-                    column(t, needed, relative)
-                # block_means would average what there is: a run not yet at the window's end
-                # would pass for one that is (its 1 s bins end at most a bin early).
-                if np.nanmax(t["t_to"]) < ROW38_WINDOW[1] - 1.0:
-                    raise TableError(f"{relative}: ends at {np.nanmax(t['t_to']):g} s, before "
-                                     f"the window's {ROW38_WINDOW[1]:g} s")
-                try:
-                    mean, err, _ = block_means(t, *ROW38_WINDOW, ROW38_BLOCK)[name]
-                except (KeyError, ValueError):
-                    raise TableError(f"{relative}: shorter than {ROW38_WINDOW[1]:g} s") from None
+                mean, err = row_point(relative, name, ROW38_WINDOW, ROW38_BLOCK)
                 values.append(mean)
                 seeds_x.append(float(phi))
                 seeds_y.append(mean)
@@ -424,15 +441,29 @@ def draw_row38(plt):
                 xs.append(float(phi))
                 means.append(float(np.mean(values)))
         ax.errorbar(seeds_x, seeds_y, yerr=seeds_err, fmt="o", ms=4, color="C0", alpha=0.7,
-                    capsize=2, label="one seed (15 s blocks)")
-        ax.plot(xs, means, "-", color="C3", lw=1.4, label="mean over seeds")
+                    capsize=2, label="38 mm, one seed (15 s blocks)")
+        ax.plot(xs, means, "-", color="C3", lw=1.4, label="38 mm, mean over seeds")
         dump[f"{name}: seeds"] = {"x": seeds_x, "y": seeds_y, "err": seeds_err}
         dump[f"{name}: mean"] = {"x": xs, "y": means}
+        big = {"x": [], "y": [], "err": [], "window": []}
+        for phi, (relative, window) in ROW63.items():
+            if not os.path.isfile(os.path.join(ROOT, relative)):
+                continue  # a point not run yet
+            mean, err = row_point(relative, name, window, ROW38_BLOCK)
+            whole = tuple(window) == ROW38_WINDOW
+            label = None if whole else f"63 mm, {window[0]:g}–{window[1]:g} s so far"
+            ax.errorbar([phi], [mean], yerr=[err], fmt="s", ms=5, capsize=2, color="C2",
+                        mfc="C2" if whole else "none", label=label)
+            for key, value in zip(big, (phi, mean, err, list(window))):
+                big[key].append(value)
+        if big["x"]:
+            ax.plot(big["x"], big["y"], "--", color="C2", lw=1.0, label="63 mm, one seed")
+        dump[f"{name}: 63 mm"] = big
         ax.set_xlabel("φ_a")
         ax.set_title(title, fontsize=10)
-    axes[0].legend(loc="best", fontsize=8)
-    fig.suptitle("38 mm box (18 polar rods), φ_p = 0.05, σ = 3.125, D_r = 0: means over "
-                 f"{ROW38_WINDOW[0]:g}–{ROW38_WINDOW[1]:g} s", fontsize=10)
+    axes[0].legend(loc="best", fontsize=7)
+    fig.suptitle("φ_p = 0.05, σ = 3.125, D_r = 0 in the 38 mm box (18 polar rods) and the 63 mm "
+                 f"box (50): means over {ROW38_WINDOW[0]:g}–{ROW38_WINDOW[1]:g} s", fontsize=10)
     fig.tight_layout()
     return fig, dump
 
@@ -985,7 +1016,7 @@ def draw_dilute_seeds(plt):
 
 
 FIGURES = {"fig1c": draw_fig1c, "fig1c-series": draw_fig1c_series,
-           "finite-size": draw_finite_size, "row38": draw_row38, "ct38": draw_ct38,
+           "finite-size": draw_finite_size, "row": draw_row, "ct38": draw_ct38,
            "dense38": draw_dense38, "alignment": draw_alignment, "dilute": draw_dilute,
            "dilute-choices": draw_dilute_choices, "dilute-seeds": draw_dilute_seeds,
            "fig1f": draw_fig1f,

@@ -1,7 +1,7 @@
 """Issue 19: the figures of docs/reproduction.md are drawn from the committed tables alone.
 Regenerates Fig. 1c's figure into a scratch directory and checks every curve it drew against
 the tables, read here with the csv module (not the script's parser), and the PNG's size; then
-the 38 mm row's, Fig. 1f's and the bead medium's (heavy and light beads) points against the
+the first row's (38 and 63 mm boxes), Fig. 1f's and the bead medium's (heavy and light beads) points against the
 block means of their series tables, the 38 mm row's C(t) against its tables, its dense
 end's 5 s means against their series, what carries P (P_independent, flock_alignment)
 against each run's analysis summary, the dilute end's G(r) and P(t) against their tables, its
@@ -112,12 +112,18 @@ def drawn_figure(name):
         return json.load(f)
 
 
-# The 38 mm row: each seed's point is the mean of its 15 s block means over 60–180 s.
-row = drawn_figure("row38")
+# The first row: each 38 mm seed's point is the mean of its 15 s block means over 60–180 s, and
+# so is each 63 mm point, over its own window where the run has not reached 180 s.
+row = drawn_figure("row")
 expected = [(float(phi), block_mean(os.path.join(source, relative), "P_polar", 60.0, 180.0))
             for phi, tables in figures.ROW38.items() for relative in tables
             if os.path.isfile(os.path.join(source, relative))]
-check_points("row38", list(zip(row["P_polar: seeds"]["x"], row["P_polar: seeds"]["y"])),
+check_points("row", list(zip(row["P_polar: seeds"]["x"], row["P_polar: seeds"]["y"])),
+             expected, 8)
+expected = [(phi, block_mean(os.path.join(source, relative), "P_polar", *window))
+            for phi, (relative, window) in figures.ROW63.items()
+            if os.path.isfile(os.path.join(source, relative))]
+check_points("row", list(zip(row["P_polar: 63 mm"]["x"], row["P_polar: 63 mm"]["y"])),
              expected, 4)
 # SI S3(a): each φ_a's C(t) as drawn is its table's, every positive value of it (a log axis).
 ct = drawn_figure("ct38")
