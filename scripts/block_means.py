@@ -4,44 +4,58 @@ quotes for runs too short for the automatic steady window.
 
     scripts/block_means.py SERIES.csv... --from T0 [--to T1] [--block SECONDS]
     scripts/block_means.py SERIES.csv... --from T0 [--to T1] --blocking [--column NAME]
-    scripts/block_means.py SEED1.csv SEED2.csv... --from T0 [--to T1] [--block S] --replicates
+    scripts/block_means.py SEED1.csv SEED2.csv... --from T0 --to T1 [--block S] --replicates
 
 SERIES.csv is a table of scripts/reproduction_series.py (time bins of P_polar, S_medium, Sigma,
-N_m, ...). The window [T0, T1) (s; T1 default: the table's end; bins by their middles) is cut
-into blocks of --block seconds (default 15; a shorter remainder at the end is left out); each
-column's mean is the mean of the block means and its error their standard deviation over
-√(blocks − 1), the error of a mean of independent blocks. Prints one line per table and
-column.
+N_m, ...). The window [T0, T1) (s; T1 default: the table's end; bins by their middles) must lie
+within the table; it is cut into blocks of --block seconds (default 15; a shorter remainder at
+the end is left out); each column's mean is the mean of the block means and its error their
+standard deviation over √(blocks − 1), the error of a mean of independent blocks. Prints one
+line per table and column.
 
 That holds only when the blocks are longer than P's correlation time, and in the first row's
 120 s windows P is correlated beyond 16 s (at the dense end it moves on scales of 30-50 s), so
-15 s blocks understate the error. --blocking checks it (Flyvbjerg and Petersen's blocking analysis):
-for one column (default P_polar) it prints the error at block lengths doubling from one bin to
-a quarter of the window, each with its own uncertainty (error/sqrt(2(blocks - 1))), and says
-where the errors stop growing: the first length whose error no longer length (at least two of
-them) exceeds by more than that length's uncertainty. If no length qualifies, the window is too
-short for an honest error, and the largest error seen is printed as a lower bound.
+15 s blocks understate the error. --blocking checks it (Flyvbjerg and Petersen's blocking
+analysis): for one column (default P_polar) it prints the error at block lengths doubling from
+one bin to a quarter of the window, each with its own uncertainty (error/sqrt(2(blocks - 1))).
+The errors have levelled off at the first length that no longer length (at least two of them)
+exceeds by more than its own uncertainty; the error quoted is then the largest from that length
+on, since the decision is often close. If no length qualifies, the window is too short for an
+honest error, and the largest error seen is printed as a lower bound.
 
 --replicates reads the tables as seeds of one state point and checks the errors against their
 spread, as `rodsea analyze` does for runs that differ only in their seed: for --column it prints
 each seed's block mean and error, their mean, the error from their spread (sd/sqrt(n)), and
-chi2/dof = sum (x_i - mean)^2 / error_i^2 / (n - 1), about 1 when the errors are honest, with
-its 95 % range for n - 1 degrees of freedom.
+chi2/dof = sum (x_i - mean)^2 / error_i^2 / (n - 1), about 1 when the errors are honest. Its 95 %
+range is drawn by Monte Carlo, not taken from the chi2 distribution: each error is itself
+estimated from a few blocks, which widens the range (with 8 blocks per seed, honest errors give
+a mean of about 1.4; with 4 blocks, about 3). --to is required, so that every seed has the same
+window.
 """
 import argparse
 import sys
 
 import numpy as np
 
+BOOKKEEPING = ("t_from", "t_to", "frames", "steady")
+
 
 def block_means(table, start, end, block):
+    """{column: (mean of the block means, their error, blocks)} over [start, end). A window that
+    reaches past the table is refused: the blocks would average what there is under the window's
+    name, and a run not yet at the window's end would be quoted for a span it has not reached."""
+    first, last = float(np.nanmin(table["t_from"])), float(np.nanmax(table["t_to"]))
+    if start < first - 1e-9 or end > last + 1e-9:
+        raise ValueError(f"the window {start:g}–{end:g} s is not within the table's "
+                         f"{first:g}–{last:g} s")
     time = 0.5 * (table["t_from"] + table["t_to"])
     edges = np.arange(start, end + 1e-9, block)
     if len(edges) < 3:
-        raise ValueError(f"the window {start}–{end} s holds fewer than two blocks of {block} s")
+        raise ValueError(f"the window {start:g}–{end:g} s holds fewer than two blocks of "
+                         f"{block:g} s")
     result = {}
     for column in table.dtype.names:
-        if column in ("t_from", "t_to", "frames", "steady"):
+        if column in BOOKKEEPING:
             continue
         means = []
         for lo, hi in zip(edges[:-1], edges[1:]):
@@ -56,9 +70,10 @@ def block_means(table, start, end, block):
 
 
 def blocking(table, start, end, column):
-    """Rows (block length s, error, its uncertainty, blocks) and the plateau's row index (None
-    when the errors never stop growing). Lengths double from the table's bin width."""
-    if column not in (table.dtype.names or ()):
+    """Rows (block length s, error, its uncertainty, blocks), the plateau's row index (None when
+    the errors never stop growing) and the error to quote. Lengths double from the table's bin
+    width."""
+    if column not in (table.dtype.names or ()) or column in BOOKKEEPING:
         raise ValueError(f"no column {column}")
     width = float(np.median(table["t_to"] - table["t_from"]))
     rows = []
@@ -70,36 +85,70 @@ def blocking(table, start, end, column):
         _, error, blocks = result[column]
         rows.append((length, error, error / np.sqrt(2 * (blocks - 1)), blocks))
         length *= 2
-    if len(rows) < 2:
-        raise ValueError(f"the window {start}–{end} s holds fewer than 8 bins of {width:g} s")
+    if len(rows) < 3:
+        raise ValueError(f"the window {start:g}–{end:g} s holds fewer than 16 bins of "
+                         f"{width:g} s")
     # One agreeing neighbour is too weak a plateau: the longest blocks are few, their errors
     # uncertain by 30-50 %, so a still-rising curve often agrees with its last point. Falls are
     # not held against a plateau: the error of a mean cannot truly fall with the block length,
     # so a fall is the noise of few blocks.
+    # Nor is a flat stretch at blocks shorter than the correlation time: there the error grows as
+    # the square root of the length, (e_L / e_1)^2 = L / bin, slowly enough to hide in the noise
+    # of a short window. Past the correlation time (e_L / e_1)^2 settles at 2 tau_int (bins), so a
+    # plateau must lie at L >= 4 tau_int: (e_L / e_1)^2 <= L / (2 bin).
     plateau = None
     for i in range(len(rows) - 2):
-        if all(e - rows[i][1] <= de for _, e, de, _ in rows[i + 1:]):
+        settled = (rows[i][1] / rows[0][1]) ** 2 <= rows[i][0] / (2 * rows[0][0])
+        if settled and all(e - rows[i][1] <= de for _, e, de, _ in rows[i + 1:]):
             plateau = i
             break
-    return rows, plateau
+    start_row = plateau if plateau is not None else 0
+    quoted = max(rows[start_row:], key=lambda row: row[1])
+    return rows, plateau, quoted
 
 
-def replicates(values, errors):
-    """Mean, error from the spread, chi2/dof of the spread against the errors, its 95 % range."""
-    values, errors = np.asarray(values), np.asarray(errors)
+def chi2_per_dof(values, errors):
+    """sum (x_i - mean)^2 / error_i^2 / (n - 1) along the last axis, the mean unweighted as in
+    `rodsea analyze`'s replicate rows."""
+    mean = values.mean(axis=-1, keepdims=True)
+    return ((values - mean) ** 2 / errors**2).sum(axis=-1) / (values.shape[-1] - 1)
+
+
+def honest_chi2(errors, blocks, draws=40000, seed=19):
+    """chi2/dof of `draws` sets of seeds whose block errors are honest: seed i's mean is normal
+    with standard deviation errors[i], and its error is estimated from blocks[i] blocks, so it
+    scatters as errors[i] sqrt(chi2_k / k), k = blocks[i] - 1. The seed fixes the draws, so the
+    printed range is the same on every run."""
+    rng = np.random.default_rng(seed)
+    errors = np.asarray(errors, dtype=float)
+    dof = np.asarray(blocks) - 1
+    values = rng.standard_normal((draws, len(errors))) * errors
+    estimated = errors * np.sqrt(rng.chisquare(dof, (draws, len(errors))) / dof)
+    return chi2_per_dof(values, estimated)
+
+
+def replicates(values, errors, blocks):
+    """Mean, error from the spread, chi2/dof of the spread against the errors, and the 2.5 % and
+    97.5 % points of chi2/dof for honest errors estimated from `blocks` blocks each."""
+    values, errors = np.asarray(values, dtype=float), np.asarray(errors, dtype=float)
     n = len(values)
     if n < 2:
         raise ValueError("--replicates needs at least two tables")
-    mean = values.mean()
-    spread = values.std(ddof=1) / np.sqrt(n)
-    chi2 = float(np.sum((values - mean) ** 2 / errors**2) / (n - 1)) if np.all(errors > 0) \
-        else float("nan")
+    if not np.all(errors > 0):
+        raise ValueError("a seed's error is zero: chi2 is undefined")
+    chi2 = float(chi2_per_dof(values, errors))
+    low, high = np.percentile(honest_chi2(errors, blocks), [2.5, 97.5])
+    return values.mean(), values.std(ddof=1) / np.sqrt(n), chi2, float(low), float(high)
+
+
+def read_table(path):
     try:
-        from scipy.stats import chi2 as distribution
-        low, high = (distribution.ppf(q, n - 1) / (n - 1) for q in (0.025, 0.975))
-    except ImportError:  # the range is a guide; the numbers above stand without it
-        low = high = float("nan")
-    return mean, spread, chi2, low, high
+        table = np.genfromtxt(path, delimiter=",", names=True, skip_header=1)
+    except (OSError, ValueError) as e:
+        raise ValueError(e) from None
+    if not {"t_from", "t_to"} <= set(table.dtype.names or ()):
+        raise ValueError("no t_from, t_to columns (a reproduction_series.py table?)")
+    return table
 
 
 def main():
@@ -119,32 +168,20 @@ def main():
     if args.blocking and args.replicates:
         sys.exit("block_means.py: --blocking and --replicates are two different readings; "
                  "give one")
-    seeds = []
+    if args.replicates and args.end is None:
+        sys.exit("block_means.py: --replicates needs --to, so that every seed has the same "
+                 "window")
     if args.end is not None and args.end <= args.start:
         sys.exit(f"block_means.py: --to {args.end:g} s must be after --from {args.start:g} s")
+    seeds = []
     for path in args.tables:
         try:
-            table = np.genfromtxt(path, delimiter=",", names=True, skip_header=1)
-        except (OSError, ValueError) as e:
-            sys.exit(f"block_means.py: {path}: {e}")
-        if not {"t_from", "t_to"} <= set(table.dtype.names or ()):
-            sys.exit(f"block_means.py: {path}: no t_from, t_to columns (a reproduction_series.py "
-                     "table?)")
-        first, last = float(table["t_from"].min()), float(table["t_to"].max())
-        end = args.end if args.end is not None else last
-        # A window past the table would average what there is under the window's name: a run
-        # not yet at the window's end would be quoted for a span it has not reached.
-        if args.start < first - 1e-9 or end > last + 1e-9:
-            sys.exit(f"block_means.py: {path}: the window {args.start:g}–{end:g} s is not within "
-                     f"the table's {first:g}–{last:g} s")
-        if args.blocking:
-            try:
-                rows, plateau = blocking(table, args.start, end, args.column)
-            except ValueError as e:
-                sys.exit(f"block_means.py: {path}: {e}")
-            print_blocking(path, args.start, end, args.column, rows, plateau)
-            continue
-        try:
+            table = read_table(path)
+            end = args.end if args.end is not None else float(np.nanmax(table["t_to"]))
+            if args.blocking:
+                print_blocking(path, args.start, end, args.column,
+                               *blocking(table, args.start, end, args.column))
+                continue
             result = block_means(table, args.start, end, args.block)
         except ValueError as e:
             sys.exit(f"block_means.py: {path}: {e}")
@@ -163,33 +200,30 @@ def main():
 
 def print_replicates(seeds, args):
     try:
-        mean, spread, chi2, low, high = replicates([s[1] for s in seeds], [s[2] for s in seeds])
+        mean, spread, chi2, low, high = replicates(*zip(*[s[1:] for s in seeds]))
     except ValueError as e:
         sys.exit(f"block_means.py: {e}")
-    window = (f"{args.start:g}–{args.end:g} s" if args.end is not None
-              else f"from {args.start:g} s")
-    print(f"{args.column}, {window}, blocks of {args.block:g} s, {len(seeds)} replicates")
+    print(f"{args.column}, {args.start:g}–{args.end:g} s, blocks of {args.block:g} s, "
+          f"{len(seeds)} replicates")
     for path, value, error, blocks in seeds:
         print(f"  {value:10.4g} ± {error:.2g}  ({blocks} blocks)  {path}")
-    verdict = ("no chi2: a seed's error is zero" if not np.isfinite(chi2) else
-               "no range without scipy" if not np.isfinite(high) else
-               "the errors are too small" if chi2 > high else
+    verdict = ("the errors are too small" if chi2 > high else
                "the errors are too large" if chi2 < low else "the errors hold")
     print(f"  mean {mean:.4g} ± {spread:.2g} (from the spread); chi2/dof {chi2:.3g} "
-          f"(95 % range {low:.2g}–{high:.2g}): {verdict}")
+          f"(95 % range for honest errors {low:.2g}–{high:.2g}): {verdict}")
 
 
-def print_blocking(path, start, end, column, rows, plateau):
+def print_blocking(path, start, end, column, rows, plateau, quoted):
     print(f"{path}: {column}, {start:g}–{end:g} s, error against block length")
     for i, (length, error, uncertainty, blocks) in enumerate(rows):
-        mark = "  <- plateau" if i == plateau else ""
+        mark = "  <- levels off" if i == plateau else ""
         print(f"  {length:8.4g} s  {error:.3g} ± {uncertainty:.2g}  ({blocks} blocks){mark}")
     if plateau is None:
-        largest = max(rows, key=lambda row: row[1])
         print(f"  no plateau: the window is too short for an honest error; it is at least "
-              f"{largest[1]:.2g} (blocks of {largest[0]:g} s)")
+              f"{quoted[1]:.2g} (blocks of {quoted[0]:g} s)")
     else:
-        print(f"  error {rows[plateau][1]:.2g} (blocks of {rows[plateau][0]:g} s)")
+        print(f"  error {quoted[1]:.2g} (the largest from {rows[plateau][0]:g} s on: blocks of "
+              f"{quoted[0]:g} s)")
 
 
 if __name__ == "__main__":

@@ -398,22 +398,22 @@ def draw_finite_size(plt):
     return fig, dump
 
 
-def row_point(relative, name, window, block):
-    """`name`'s block mean and error over `window` in one series table; a table that ends before
-    the window does is refused (block_means would average what there is)."""
+def window_mean(relative, name, window, block):
+    """`name`'s block mean and error over `window` in one series table, and the table. A window
+    the table does not cover, or one with fewer than two finite blocks of `name`, is refused."""
     from block_means import block_means
     t = read_csv(relative)
     for needed in ("t_from", "t_to", name):
         column(t, needed, relative)
-    # Its 1 s bins end at most a bin early.
-    if np.nanmax(t["t_to"]) < window[1] - 1.0:
-        raise TableError(f"{relative}: ends at {np.nanmax(t['t_to']):g} s, before the window's "
-                         f"{window[1]:g} s")
     try:
-        mean, err, _ = block_means(t, *window, block)[name]
-    except (KeyError, ValueError):
-        raise TableError(f"{relative}: shorter than {window[1]:g} s") from None
-    return mean, err
+        result = block_means(t, *window, block)
+    except ValueError as e:
+        raise TableError(f"{relative}: {e}") from None
+    if name not in result:
+        raise TableError(f"{relative}: {name} has fewer than two finite blocks of {block:g} s "
+                         f"over {window[0]:g}–{window[1]:g} s")
+    mean, err, _ = result[name]
+    return mean, err, t
 
 
 def draw_row(plt):
@@ -432,7 +432,7 @@ def draw_row(plt):
             for relative in tables:
                 if not os.path.isfile(os.path.join(ROOT, relative)):
                     continue  # a seed not run yet
-                mean, err = row_point(relative, name, ROW38_WINDOW, ROW38_BLOCK)
+                mean, err, _ = window_mean(relative, name, ROW38_WINDOW, ROW38_BLOCK)
                 values.append(mean)
                 seeds_x.append(float(phi))
                 seeds_y.append(mean)
@@ -449,7 +449,7 @@ def draw_row(plt):
         for phi, (relative, window) in ROW63.items():
             if not os.path.isfile(os.path.join(ROOT, relative)):
                 continue  # a point not run yet
-            mean, err = row_point(relative, name, window, ROW38_BLOCK)
+            mean, err, _ = window_mean(relative, name, window, ROW38_BLOCK)
             whole = tuple(window) == ROW38_WINDOW
             label = None if whole else f"63 mm, {window[0]:g}–{window[1]:g} s so far"
             ax.errorbar([phi], [mean], yerr=[err], fmt="s", ms=5, capsize=2, color="C2",
@@ -471,19 +471,11 @@ def draw_row(plt):
 def window_points(runs, window, block, name="P_polar"):
     """`name` (default P) over `window` (the mean of blocks of `block` seconds, and its error) of
     each run: [(value, mean, error, series table)]; a table not there yet is left out."""
-    from block_means import block_means
     points = []
     for value, relative in runs:
         if not os.path.isfile(os.path.join(ROOT, relative)):
             continue  # a point not run yet
-        t = read_csv(relative)
-        for needed in ("t_from", "t_to", name):
-            column(t, needed, relative)
-        try:
-            mean, err, _ = block_means(t, *window, block)[name]
-        except (KeyError, ValueError):
-            raise TableError(f"{relative}: shorter than {window[1]:g} s") from None
-        points.append((value, mean, err, t))
+        points.append((value, *window_mean(relative, name, window, block)))
     return points
 
 

@@ -1,9 +1,9 @@
 """Issue 19: the figures of docs/reproduction.md are drawn from the committed tables alone.
 Regenerates Fig. 1c's figure into a scratch directory and checks every curve it drew against
 the tables, read here with the csv module (not the script's parser), and the PNG's size; then
-the first row's (38 and 63 mm boxes), Fig. 1f's and the bead medium's (heavy and light beads) points against the
-block means of their series tables, the 38 mm row's C(t) against its tables, its dense
-end's 5 s means against their series, what carries P (P_independent, flock_alignment)
+the first row's (38 and 63 mm boxes), Fig. 1f's and the bead medium's (heavy and light beads)
+points against the block means of their series tables, the 38 mm row's C(t) against its
+tables, its dense end's 5 s means against their series, what carries P (P_independent, flock_alignment)
 against each run's analysis summary, the dilute end's G(r) and P(t) against their tables, its
 medium-mass and time-step points against their summaries, each seed's P(t) either side of
 the medium-mass turn against its series, and each box's P(t) of the finite-size figure against
