@@ -76,10 +76,15 @@ DENSE38_CT_WINDOW = (120.0, 270.0)
 # SI S3(a) in the same box: the polar rods' C(t) at each φ_a, from `rodsea analyze --observables
 # autocorrelation` over each run's window (φ_a, table, window in s). A φ_a not run yet is left
 # out.
-CT38 = [(0.50, f"{DATA}/fig1c-dense-38mm/medium.area_fraction=0.5.seed2"
-         ".orientation_autocorrelation.csv", (30.0, 90.0))] + [
-    (phi, f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi:g}.orientation_autocorrelation.csv",
-     DENSE38_CT_WINDOW) for phi in (0.65, 0.80)]
+# The 63 mm box's 0.65 beside them, over 60–180 s (its whole run past the first minute).
+CT = [(0.50, "38 mm", f"{DATA}/fig1c-dense-38mm/medium.area_fraction=0.5.seed2"
+       ".orientation_autocorrelation.csv", (30.0, 90.0))] + [
+    (phi, "38 mm",
+     f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi:g}.orientation_autocorrelation.csv",
+     DENSE38_CT_WINDOW) for phi in (0.65, 0.80)] + [
+    (0.65, "63 mm",
+     f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.orientation_autocorrelation.csv",
+     (60.0, 180.0))]
 
 # The dense end's whole runs, for the length of their transient: (φ_a, series table, polar rods);
 # DENSE38_BIN-second means of each quantity drawn. A φ_a not run yet is left out.
@@ -800,39 +805,45 @@ def draw_dense38(plt):
     return fig, dump
 
 
-def draw_ct38(plt):
+def draw_ct(plt):
     """SI S3(a): the polar rods' orientation autocorrelation C(t) against the lag, semilog, one
-    curve per φ_a of the 38 mm box, and the medium's C₂(t)."""
+    curve per φ_a of the 38 mm box (solid) and of the 63 mm box (dashed), and the medium's
+    C₂(t)."""
     fig, (polar, medium) = plt.subplots(1, 2, figsize=(10.0, 3.6))
     dump = {}
     drawn = 0
-    for k, (phi, relative, window) in enumerate(CT38):
+    colours = {0.50: "C0", 0.65: "C1", 0.80: "C2"}
+    for phi, box, relative, window in CT:
         if not os.path.isfile(os.path.join(ROOT, relative)):
             continue  # a φ_a not run yet
         t = read_csv(relative)
         for needed in ("t", "C_polar", "C2_medium"):
             column(t, needed, relative)
-        label = f"φ_a = {phi:g} ({window[0]:g}–{window[1]:g} s)"
+        label = f"φ_a = {phi:g}, {box} ({window[0]:g}–{window[1]:g} s)"
+        style = {"color": colours.get(phi, "k"), "ls": "-" if box == "38 mm" else "--",
+                 "label": label}
         keep = t["C_polar"] > 0  # a log axis: the noise floor's negative values are not drawn
-        polar.semilogy(t["t"][keep], t["C_polar"][keep], color=f"C{k}", label=label)
-        medium.plot(t["t"], t["C2_medium"], color=f"C{k}", label=label)
-        dump[f"C: φ_a = {phi:g}"] = {"x": t["t"][keep].tolist(), "y": t["C_polar"][keep].tolist()}
+        polar.semilogy(t["t"][keep], t["C_polar"][keep], **style)
+        medium.plot(t["t"], t["C2_medium"], **style)
+        dump[f"C: φ_a = {phi:g}, {box}"] = {"x": t["t"][keep].tolist(),
+                                            "y": t["C_polar"][keep].tolist()}
         drawn += 1
     if not drawn:
-        raise TableError(f"none of {', '.join(r for _, r, _ in CT38)} exists")
+        raise TableError(f"none of {', '.join(r for _, _, r, _ in CT)} exists")
     polar.set_yticks([0.1, 0.2, 0.3, 0.5, 0.7, 1.0], ["0.1", "0.2", "0.3", "0.5", "0.7", "1"])
     # 18 rods over a window of ~20 decorrelation times leave C(t) uncertain by ~0.05: lower values
-    # are noise, and a log axis would stretch them over most of the panel.
+    # are noise, and a log axis would stretch them over most of the panel. (The 63 mm box's 50
+    # rods, over ~6 decorrelation times, are uncertain by about as much.)
     polar.set_ylim(0.03, 1.1)
     polar.minorticks_off()
     polar.set_xlabel("lag t (s)")
     polar.set_ylabel("C(t), polar rods")
-    polar.legend(loc="best", fontsize=8)
+    polar.legend(loc="best", fontsize=7)
     medium.set_xlim(0, 5)
     medium.set_xlabel("lag t (s)")
     medium.set_ylabel("C₂(t), medium rods")
-    fig.suptitle("SI S3(a, b), 38 mm box (18 polar rods), φ_p = 0.05, σ = 3.125, D_r = 0",
-                 fontsize=10)
+    fig.suptitle("SI S3(a, b): 38 mm box (18 polar rods, solid) and 63 mm box (50, dashed), "
+                 "φ_p = 0.05, σ = 3.125, D_r = 0", fontsize=10)
     fig.tight_layout()
     return fig, dump
 
@@ -1008,7 +1019,7 @@ def draw_dilute_seeds(plt):
 
 
 FIGURES = {"fig1c": draw_fig1c, "fig1c-series": draw_fig1c_series,
-           "finite-size": draw_finite_size, "row": draw_row, "ct38": draw_ct38,
+           "finite-size": draw_finite_size, "row": draw_row, "ct": draw_ct,
            "dense38": draw_dense38, "alignment": draw_alignment, "dilute": draw_dilute,
            "dilute-choices": draw_dilute_choices, "dilute-seeds": draw_dilute_seeds,
            "fig1f": draw_fig1f,

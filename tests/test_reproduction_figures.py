@@ -125,22 +125,23 @@ expected = [(phi, block_mean(os.path.join(source, relative), "P_polar", *window)
             if os.path.isfile(os.path.join(source, relative))]
 check_points("row", list(zip(row["P_polar: 63 mm"]["x"], row["P_polar: 63 mm"]["y"])),
              expected, 4)
-# SI S3(a): each φ_a's C(t) as drawn is its table's, every positive value of it (a log axis).
-ct = drawn_figure("ct38")
+# SI S3(a): each run's C(t) as drawn is its table's, every positive value of it (a log axis).
+ct = drawn_figure("ct")
 checked = 0
-for phi, relative, _ in figures.CT38:
+for phi, box, relative, _ in figures.CT:
     path = os.path.join(source, relative)
+    key = f"C: φ_a = {phi:g}, {box}"
     if not os.path.isfile(path):
-        assert f"C: φ_a = {phi:g}" not in ct, f"φ_a = {phi:g} drawn without a table"
+        assert key not in ct, f"{key} drawn without a table"
         continue
     col, rows = read_table(path)
     table = [(float(r[col["t"]]), float(r[col["C_polar"]])) for r in rows]
     table = [(t, c) for t, c in table if c > 0]
-    curve = ct[f"C: φ_a = {phi:g}"]
-    assert same(curve["x"], [t for t, _ in table]) and same(curve["y"], [c for _, c in table]), phi
+    curve = ct[key]
+    assert same(curve["x"], [t for t, _ in table]) and same(curve["y"], [c for _, c in table]), key
     checked += 1
-assert checked >= 1, "no C(t) table was checked"
-print(f"checked the C(t) of {checked} runs of reproduction-ct38.png against their tables")
+assert checked >= 4, f"only {checked} C(t) tables were checked"
+print(f"checked the C(t) of {checked} runs of reproduction-ct.png against their tables")
 
 # The dense end over whole runs: each curve's points are the means of consecutive groups of the
 # table's 1 s bins, the bins read here with the csv module.
