@@ -118,6 +118,48 @@ TEST(Replicates, MeanAndErrorFromTheSpread) {
     EXPECT_TRUE(std::isnan(combine_replicates(std::vector<double>{1}, {}).error));
 }
 
+TEST(Replicates, ErrorsFromFewSamplesWidenTheRangeToTheirOwnScatter) {
+    // 200 sets of 8 replicates whose errors are honest but each estimated from 4 degrees of
+    // freedom (σ √(χ²_4 / 4), as a run of n_eff = 5 quotes). Given those degrees of freedom,
+    // χ²/dof falls inside the range in 95 % of the sets (binomial sd 1.5 %: 5 % is over three of
+    // them). The χ² law's range, which takes the errors as exact, misses many more: their scatter
+    // raises χ²/dof's mean to ν/(ν − 2) = 2, near the law's 97.5 % point for 7 dof, 2.29.
+    SplitMix64 rng(43);
+    int inside = 0, inside_law = 0;
+    const int sets = 200;
+    const std::vector<double> dof(8, 4.0);
+    for (int s = 0; s < sets; ++s) {
+        std::vector<double> x(8), e(8);
+        for (std::size_t i = 0; i < x.size(); ++i) {
+            x[i] = 0.3 + 0.1 * gaussian(rng);
+            double chi2 = 0.0;
+            for (int k = 0; k < 4; ++k)
+                chi2 += std::pow(gaussian(rng), 2);
+            e[i] = 0.1 * std::sqrt(chi2 / 4.0);
+        }
+        const ReplicateEstimate r = combine_replicates(x, e, dof);
+        inside += r.chi2_per_dof >= r.chi2_low && r.chi2_per_dof <= r.chi2_high;
+        const ReplicateEstimate law = combine_replicates(x, e);
+        inside_law += law.chi2_per_dof >= law.chi2_low && law.chi2_per_dof <= law.chi2_high;
+    }
+    EXPECT_NEAR(inside / double(sets), 0.95, 0.05);
+    EXPECT_LT(inside_law / double(sets), 0.85);
+}
+
+TEST(Replicates, ErrorsFromManySamplesGiveTheChiSquareLawsRange) {
+    // Errors from 10⁴ degrees of freedom are as good as exact: the Monte Carlo range of four
+    // equal errors is the χ²/3 law's (0.0719, 3.116) to its sampling accuracy (20 000 draws: about
+    // 4 % at the 2.5 % point, 1.5 % at the 97.5 % point), and the same on every call.
+    const std::vector<double> x{1, 2, 3, 4}, e{1, 1, 1, 1}, dof(4, 1e4);
+    const ReplicateEstimate r = combine_replicates(x, e, dof);
+    EXPECT_NEAR(r.chi2_low / 0.0719318, 1.0, 0.12);
+    EXPECT_NEAR(r.chi2_high / 3.1161345, 1.0, 0.05);
+    EXPECT_DOUBLE_EQ(r.chi2_per_dof, 5.0 / 3.0);  // the statistic itself does not change
+    const ReplicateEstimate again = combine_replicates(x, e, dof);
+    EXPECT_EQ(again.chi2_low, r.chi2_low);
+    EXPECT_EQ(again.chi2_high, r.chi2_high);
+}
+
 TEST(Replicates, HonestErrorsPassTheChiSquareTestAtItsNominalRate) {
     // 2000 sets of 8 Gaussian replicates quoting their true σ: χ²/dof falls inside the central
     // 95 % range in 95 % of the sets (binomial sd 0.5 %: 2 % is four of them); σ quoted 4× too

@@ -3,6 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
+#include <tuple>
+#include <utility>
+
+#include "rodsea/random.hpp"
 
 namespace rodsea {
 
@@ -121,20 +126,72 @@ double chi2_per_dof_quantile(double p, double k) {
     return 0.5 * (low + high) / k;
 }
 
+double standard_normal(SplitMix64& rng) {
+    // Box–Muller; 1 − u keeps the logarithm finite.
+    const double u = 1.0 - rng.uniform(), v = rng.uniform();
+    return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * std::numbers::pi * v);
+}
+
+// A Gamma(shape, 1) draw (Marsaglia and Tsang, ACM TOMS 26, 363 (2000)); a shape below 1 is
+// raised by one and scaled back by u^(1/shape).
+double gamma_draw(double shape, SplitMix64& rng) {
+    if (shape < 1.0)
+        return gamma_draw(shape + 1.0, rng) * std::pow(1.0 - rng.uniform(), 1.0 / shape);
+    const double d = shape - 1.0 / 3.0, c = 1.0 / std::sqrt(9.0 * d);
+    for (;;) {
+        double z, v;
+        do {
+            z = standard_normal(rng);
+            v = 1.0 + c * z;
+        } while (v <= 0.0);
+        v = v * v * v;
+        const double u = 1.0 - rng.uniform();
+        if (std::log(u) < 0.5 * z * z + d - d * v + d * std::log(v)) return d * v;
+    }
+}
+
+// The central 95 % of χ²/dof (unweighted mean, as combine_replicates) over draws of honest
+// replicates: value i normal with standard deviation σ_i, its error σ_i √(χ²_ν/ν), ν = dof[i].
+std::pair<double, double> honest_chi2_range(const std::vector<double>& sigma,
+                                            const std::vector<double>& dof) {
+    constexpr int draws = 20000;
+    SplitMix64 rng(0x5EED'C412);  // fixed: the range is a property of σ and ν, not of a call
+    const std::size_t n = sigma.size();
+    std::vector<double> chi2(draws), x(n), e(n);
+    for (double& c : chi2) {
+        double mean = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            x[i] = sigma[i] * standard_normal(rng);
+            e[i] = sigma[i] * std::sqrt(2.0 * gamma_draw(0.5 * dof[i], rng) / dof[i]);
+            mean += x[i] / static_cast<double>(n);
+        }
+        c = 0.0;
+        for (std::size_t i = 0; i < n; ++i)
+            c += (x[i] - mean) * (x[i] - mean) / (e[i] * e[i]);
+        c /= static_cast<double>(n - 1);
+    }
+    std::sort(chi2.begin(), chi2.end());
+    return {chi2[static_cast<std::size_t>(0.025 * draws)],
+            chi2[static_cast<std::size_t>(0.975 * draws)]};
+}
+
 }  // namespace
 
-ReplicateEstimate combine_replicates(std::span<const double> values,
-                                     std::span<const double> errors) {
+ReplicateEstimate combine_replicates(std::span<const double> values, std::span<const double> errors,
+                                     std::span<const double> error_dof) {
     ReplicateEstimate r;
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    std::vector<double> x, e;
-    bool errors_known = true;
+    std::vector<double> x, e, nu;
+    bool errors_known = true, dof_known = !error_dof.empty();
     for (std::size_t i = 0; i < values.size(); ++i) {
         if (!std::isfinite(values[i])) continue;
         x.push_back(values[i]);
         const double err = i < errors.size() ? errors[i] : nan;
         errors_known = errors_known && std::isfinite(err) && err > 0.0;
         e.push_back(err);
+        const double dof = i < error_dof.size() ? error_dof[i] : nan;
+        dof_known = dof_known && std::isfinite(dof) && dof > 0.0;
+        nu.push_back(dof);
     }
     r.replicates = x.size();
     if (x.empty()) {
@@ -159,8 +216,12 @@ ReplicateEstimate combine_replicates(std::span<const double> values,
     }
     r.error = std::sqrt(var / static_cast<double>(x.size()));
     r.chi2_per_dof = errors_known ? chi2 / dof : nan;
-    r.chi2_low = chi2_per_dof_quantile(0.025, dof);
-    r.chi2_high = chi2_per_dof_quantile(0.975, dof);
+    if (errors_known && dof_known) {
+        std::tie(r.chi2_low, r.chi2_high) = honest_chi2_range(e, nu);
+    } else {
+        r.chi2_low = chi2_per_dof_quantile(0.025, dof);
+        r.chi2_high = chi2_per_dof_quantile(0.975, dof);
+    }
     return r;
 }
 

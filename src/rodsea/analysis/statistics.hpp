@@ -42,8 +42,13 @@ std::size_t steady_start(std::span<const double> x);
 // The mean of independent replicates (runs that differ only in their seed) with the error from
 // their spread, sd / √n: honest whatever the correlation times, because the runs are independent.
 // chi2_per_dof = Σ (x_i − x̄)² / σ_i² / (n − 1) sets that spread against each replicate's own
-// quoted error σ_i: about 1, within [chi2_low, chi2_high] (the central 95 % for Gaussian errors),
-// when the single-run errors are honest; far above when they are too small.
+// quoted error σ_i: about 1, within [chi2_low, chi2_high] (its central 95 % for honest Gaussian
+// errors), when the single-run errors are honest; far above when they are too small.
+// error_dof[i], when given for every replicate, is the degrees of freedom σ_i was itself estimated
+// with (n_eff − 1). An error from few independent samples scatters, and its scatter inflates
+// χ²/dof (to a mean of ν/(ν − 2) for equal errors of ν > 2 degrees of freedom), so the range is
+// then drawn by a seeded Monte Carlo of honest replicates with those errors (the same on every
+// call). Without it, the χ² law's: the errors taken as exact.
 struct ReplicateEstimate {
     double mean = 0.0;
     double error = 0.0;  // NaN with fewer than two finite values
@@ -53,8 +58,8 @@ struct ReplicateEstimate {
     // √(Σ σ_i²) / n: the error of the mean from the runs' own errors; NaN as chi2_per_dof.
     double own_error = 0.0;
 };
-ReplicateEstimate combine_replicates(std::span<const double> values,
-                                     std::span<const double> errors);
+ReplicateEstimate combine_replicates(std::span<const double> values, std::span<const double> errors,
+                                     std::span<const double> error_dof = {});
 
 // Slope D of y = D t through the origin, least squares.
 double slope_through_origin(std::span<const double> t, std::span<const double> y);

@@ -341,15 +341,17 @@ ReplicateSummary summarise_replicates(const std::vector<const RunAnalysis*>& gro
     // The scalars of the first run, combined over every run that has them.
     for (const ObservableResults& r : group.front()->results) {
         for (const ScalarResult& s : r.scalars) {
-            std::vector<double> values, errors;
+            std::vector<double> values, errors, error_dof;
             for (const RunAnalysis* a : group)
                 for (const ObservableResults& ra : a->results)
                     for (const ScalarResult& sa : ra.scalars)
                         if (ra.observable == r.observable && sa.name == s.name) {
                             values.push_back(sa.estimate.mean);
                             errors.push_back(sa.estimate.error);
+                            // A run's error rests on its n_eff independent samples (or blocks).
+                            error_dof.push_back(std::max(sa.estimate.n_eff - 1.0, 1.0));
                         }
-            g.scalars.push_back({s.name, s.unit, combine_replicates(values, errors)});
+            g.scalars.push_back({s.name, s.unit, combine_replicates(values, errors, error_dof)});
         }
     }
     return g;
