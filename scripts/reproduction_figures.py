@@ -69,7 +69,7 @@ ROW63 = {
     0.05: (f"{FIG1C_SERIES}/medium.area_fraction=0.05_extended_to_180_s.series.csv", ROW38_WINDOW),
     0.20: (f"{FIG1C_SERIES}/medium.area_fraction=0.2_extended_to_180_s.series.csv", ROW38_WINDOW),
     0.65: (f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.series.csv", ROW38_WINDOW),
-    0.80: (f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.8.series.csv", (67.0, 112.0)),
+    0.80: (f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.8.series.csv", (63.0, 153.0)),
 }
 # The dense end's C(t) is taken over the last 150 s of its 270 s, past the growth of the flocks.
 DENSE38_CT_WINDOW = (120.0, 270.0)
@@ -169,6 +169,7 @@ ALIGNMENT_ROW_88MM = [
 # The dense end in the 63 mm box (50 polar rods), over 60-180 s as the row's dilute points.
 ALIGNMENT_ROW_63MM = [
     (0.65, f"{ALIGNMENT}/fig1c-63mm-phi_a0.65-seed1-from60.summary.csv"),
+    (0.80, f"{ALIGNMENT}/fig1c-63mm-phi_a0.80-seed1-from63.summary.csv"),  # 63–153 s so far
 ]
 ALIGNMENT_NOISE = [(float(d), f"{ALIGNMENT}/fig1f-38mm-D_r{d}-seed2-from30.summary.csv")
                    for d in ("0", "0.026", "0.23", "1.21", "1.87")]
