@@ -98,7 +98,8 @@ def blocking(table, start, end, column):
     # plateau must lie at L >= 4 tau_int: (e_L / e_1)^2 <= L / (2 bin).
     plateau = None
     for i in range(len(rows) - 2):
-        settled = (rows[i][1] / rows[0][1]) ** 2 <= rows[i][0] / (2 * rows[0][0])
+        # A constant column (zero error at one bin) has nothing left to settle.
+        settled = rows[0][1] == 0 or (rows[i][1] / rows[0][1]) ** 2 <= rows[i][0] / (2 * rows[0][0])
         if settled and all(e - rows[i][1] <= de for _, e, de, _ in rows[i + 1:]):
             plateau = i
             break

@@ -15,7 +15,8 @@
 - A linear ramp's n block means are evenly spaced, one block length apart, so its error is
   sqrt((n + 1)/12)/n of the ramp's rise: it grows without end, by 2 sqrt((n/2 + 1)/(n + 1)) (about
   sqrt(2)) at each doubling. No plateau, and the lower bound printed is the longest blocks'.
-- A constant column has zero error at every block length; its mean is the constant. Bins of
+- A constant column has zero error at every block length, a plateau from one bin; its mean is
+  the constant. Bins of
   0.5 s start the block lengths at 0.5 s.
 - --replicates on three seeds that share one noise pattern, offset by 0 and ±d: each has the
   same block error e, so chi2/dof is exactly (d/e)^2 and the spread's error d/sqrt(3). Its range
@@ -148,7 +149,8 @@ if bound and rows:
 
 result = run(ar1_path, "--from", "100", "--to", "1100", "--blocking", "--column", "flat")
 check(result.returncode == 0, f"flat blocking failed: {result.stderr}")
-check(all(e == 0 for _, e in rows_of(result.stdout)), f"a constant has an error:\n{result.stdout}")
+check(all(e == 0 for _, e in rows_of(result.stdout)) and "\n  error 0 " in result.stdout,
+      f"a constant has an error, or no plateau:\n{result.stdout}")
 result = run(ar1_path, "--from", "100", "--to", "1100", "--block", "100")
 check(re.search(r"^  flat\s+0\.25 ± 0\s+\(10 blocks\)", result.stdout, re.M) is not None,
       f"a constant's block mean over 10 blocks:\n{result.stdout}")
