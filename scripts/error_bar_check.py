@@ -103,9 +103,10 @@ def main():
         os.path.abspath(__file__))))
     args = parser.parse_args()
     pools = {}
-    print("| point (P, window) | seeds | " + " | ".join(
-        f"chi2/dof, {b:g} s blocks (95 % range if honest; p)" for b in BLOCKS) + " |")
-    print("|---|---|" + "---|" * len(BLOCKS))
+    # Printed only once every table has been read, so that a bad one leaves no half table.
+    out = ["| point (P, window) | seeds | " + " | ".join(
+        f"chi2/dof, {b:g} s blocks (95 % range if honest; p)" for b in BLOCKS) + " |",
+        "|---|---|" + "---|" * len(BLOCKS)]
     for index, (label, pool, window, spec) in enumerate(GROUPS):
         paths = tables_of(args.root, spec)
         if len(paths) < 2:
@@ -130,8 +131,8 @@ def main():
                 total[0] += chi2 * dof
                 total[1] += dof
                 total[2] = total[2] + honest * dof
-        print(f"| {label}, {window[0]:g}–{window[1]:g} s | {len(paths)} | " + " | ".join(cells)
-              + " |")
+        out.append(f"| {label}, {window[0]:g}–{window[1]:g} s | {len(paths)} | "
+                   + " | ".join(cells) + " |")
     for pool in dict.fromkeys(p for p, _ in pools):
         cells = []
         for block in BLOCKS:
@@ -141,8 +142,9 @@ def main():
             chi2, dof, honest = pools[(pool, block)]
             cells.append("**" + cell(chi2 / dof, honest / dof, factor=True) + "**")
         dofs = {pools[k][1] for k in pools if k[0] == pool}
-        print(f"| **{pool} windows, pooled** | {'/'.join(map(str, sorted(dofs)))} dof | "
-              + " | ".join(cells) + " |")
+        out.append(f"| **{pool} windows, pooled** | {'/'.join(map(str, sorted(dofs)))} dof | "
+                   + " | ".join(cells) + " |")
+    print("\n".join(out))
 
 
 if __name__ == "__main__":
