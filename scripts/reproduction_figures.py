@@ -69,22 +69,23 @@ ROW63 = {
     0.05: (f"{FIG1C_SERIES}/medium.area_fraction=0.05_extended_to_180_s.series.csv", ROW38_WINDOW),
     0.20: (f"{FIG1C_SERIES}/medium.area_fraction=0.2_extended_to_180_s.series.csv", ROW38_WINDOW),
     0.65: (f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.series.csv", ROW38_WINDOW),
-    0.80: (f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.8.series.csv", (63.0, 153.0)),
+    0.80: (f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.8.series.csv", ROW38_WINDOW),
 }
 # The dense end's C(t) is taken over the last 150 s of its 270 s, past the growth of the flocks.
 DENSE38_CT_WINDOW = (120.0, 270.0)
 # SI S3(a) in the same box: the polar rods' C(t) at each φ_a, from `rodsea analyze --observables
 # autocorrelation` over each run's window (φ_a, table, window in s). A φ_a not run yet is left
 # out.
-# The 63 mm box's 0.65 beside them, over 60–180 s (its whole run past the first minute).
+# The 63 mm box's 0.65 and 0.80 beside them, over 60–180 s (their whole runs past the first
+# minute).
 CT = [(0.50, "38 mm", f"{DATA}/fig1c-dense-38mm/medium.area_fraction=0.5.seed2"
        ".orientation_autocorrelation.csv", (30.0, 90.0))] + [
     (phi, "38 mm",
      f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi:g}.orientation_autocorrelation.csv",
      DENSE38_CT_WINDOW) for phi in (0.65, 0.80)] + [
-    (0.65, "63 mm",
-     f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.orientation_autocorrelation.csv",
-     (60.0, 180.0))]
+    (phi, "63 mm",
+     f"{DATA}/fig1c-dense-63mm/medium.area_fraction={phi:g}.orientation_autocorrelation.csv",
+     (60.0, 180.0)) for phi in (0.65, 0.80)]
 
 # The dense end's whole runs, for the length of their transient: (φ_a, series table, polar rods);
 # DENSE38_BIN-second means of each quantity drawn. A φ_a not run yet is left out.
@@ -169,7 +170,7 @@ ALIGNMENT_ROW_88MM = [
 # The dense end in the 63 mm box (50 polar rods), over 60-180 s as the row's dilute points.
 ALIGNMENT_ROW_63MM = [
     (0.65, f"{ALIGNMENT}/fig1c-63mm-phi_a0.65-seed1-from60.summary.csv"),
-    (0.80, f"{ALIGNMENT}/fig1c-63mm-phi_a0.80-seed1-from63.summary.csv"),  # 63–153 s so far
+    (0.80, f"{ALIGNMENT}/fig1c-63mm-phi_a0.80-seed1-from60.summary.csv"),
 ]
 ALIGNMENT_NOISE = [(float(d), f"{ALIGNMENT}/fig1f-38mm-D_r{d}-seed2-from30.summary.csv")
                    for d in ("0", "0.026", "0.23", "1.21", "1.87")]
