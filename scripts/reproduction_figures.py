@@ -62,14 +62,18 @@ ROW38 = {
 }
 ROW38_WINDOW = (60.0, 180.0)
 ROW38_BLOCK = 15.0
-# The same row in the 63 mm box (50 polar rods), one seed: {φ_a: (series table, window in s)}.
-# A run not yet at ROW38_WINDOW's end is drawn over the window it has (whole 15 s blocks), as an
-# open marker.
+# The same row in the 63 mm box (50 polar rods): {φ_a: [(series table, window in s)]}, one entry
+# per seed. A run not yet at ROW38_WINDOW's end is drawn over the window it has (whole 15 s
+# blocks), as an open marker; the dashed line joins the means over each φ_a's seeds.
 ROW63 = {
-    0.05: (f"{FIG1C_SERIES}/medium.area_fraction=0.05_extended_to_180_s.series.csv", ROW38_WINDOW),
-    0.20: (f"{FIG1C_SERIES}/medium.area_fraction=0.2_extended_to_180_s.series.csv", ROW38_WINDOW),
-    0.65: (f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.series.csv", ROW38_WINDOW),
-    0.80: (f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.8.series.csv", ROW38_WINDOW),
+    0.05: [(f"{FIG1C_SERIES}/medium.area_fraction=0.05_extended_to_180_s.series.csv",
+            ROW38_WINDOW)],
+    0.20: [(f"{FIG1C_SERIES}/medium.area_fraction=0.2_extended_to_180_s.series.csv",
+            ROW38_WINDOW)],
+    0.65: [(f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.series.csv", ROW38_WINDOW),
+           (f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.seed2.series.csv",
+            (60.0, 120.0))],
+    0.80: [(f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.8.series.csv", ROW38_WINDOW)],
 }
 # The dense end's C(t) is taken over the last 150 s of its 270 s, past the growth of the flocks.
 DENSE38_CT_WINDOW = (120.0, 270.0)
@@ -425,8 +429,8 @@ def window_mean(relative, name, window, block):
 
 def draw_row(plt):
     """P, Σ and N_m against φ_a: in the 38 mm box each seed's 60–180 s mean (error from 15 s
-    blocks) and the mean over the seeds; in the 63 mm box its one seed, over 60–180 s where the
-    run has it."""
+    blocks) and the mean over the seeds; in the 63 mm box the same, each seed over 60–180 s
+    where the run has it."""
     fig, axes = plt.subplots(1, 3, figsize=(12.0, 3.8))
     dump = {}
     panels = (("P_polar", "P (polar rods)"), ("Sigma", "Σ (segregation)"),
@@ -453,19 +457,30 @@ def draw_row(plt):
         dump[f"{name}: seeds"] = {"x": seeds_x, "y": seeds_y, "err": seeds_err}
         dump[f"{name}: mean"] = {"x": xs, "y": means}
         big = {"x": [], "y": [], "err": [], "window": []}
-        for phi, (relative, window) in ROW63.items():
-            if not os.path.isfile(os.path.join(ROOT, relative)):
-                continue  # a point not run yet
-            mean, err, _ = window_mean(relative, name, window, ROW38_BLOCK)
-            whole = tuple(window) == ROW38_WINDOW
-            label = None if whole else f"63 mm, {window[0]:g}–{window[1]:g} s so far"
-            ax.errorbar([phi], [mean], yerr=[err], fmt="s", ms=5, capsize=2, color="C2",
-                        mfc="C2" if whole else "none", label=label)
-            for key, value in zip(big, (phi, mean, err, list(window))):
-                big[key].append(value)
-        if big["x"]:
-            ax.plot(big["x"], big["y"], "--", color="C2", lw=1.0, label="63 mm, one seed")
+        big_mean = {"x": [], "y": []}
+        for phi, seeds in ROW63.items():
+            values = []
+            for relative, window in seeds:
+                if not os.path.isfile(os.path.join(ROOT, relative)):
+                    continue  # a seed not run yet
+                mean, err, _ = window_mean(relative, name, window, ROW38_BLOCK)
+                whole = tuple(window) == ROW38_WINDOW
+                label = (f"63 mm, {window[0]:g}–{window[1]:g} s so far" if not whole else
+                         None if any(w == list(ROW38_WINDOW) for w in big["window"]) else
+                         "63 mm, one seed (15 s blocks)")
+                ax.errorbar([phi], [mean], yerr=[err], fmt="s", ms=5, capsize=2, color="C2",
+                            mfc="C2" if whole else "none", label=label)
+                values.append(mean)
+                for key, value in zip(big, (phi, mean, err, list(window))):
+                    big[key].append(value)
+            if values:
+                big_mean["x"].append(phi)
+                big_mean["y"].append(float(np.mean(values)))
+        if big_mean["x"]:
+            ax.plot(big_mean["x"], big_mean["y"], "--", color="C2", lw=1.0,
+                    label="63 mm, mean over seeds")
         dump[f"{name}: 63 mm"] = big
+        dump[f"{name}: 63 mm mean"] = big_mean
         ax.set_xlabel("φ_a")
         ax.set_title(title, fontsize=10)
     axes[0].legend(loc="best", fontsize=7)

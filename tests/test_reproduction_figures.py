@@ -121,10 +121,16 @@ expected = [(float(phi), block_mean(os.path.join(source, relative), "P_polar", 6
 check_points("row", list(zip(row["P_polar: seeds"]["x"], row["P_polar: seeds"]["y"])),
              expected, 8)
 expected = [(phi, block_mean(os.path.join(source, relative), "P_polar", *window))
-            for phi, (relative, window) in figures.ROW63.items()
+            for phi, seeds in figures.ROW63.items() for relative, window in seeds
             if os.path.isfile(os.path.join(source, relative))]
 check_points("row", list(zip(row["P_polar: 63 mm"]["x"], row["P_polar: 63 mm"]["y"])),
-             expected, 4)
+             expected, 5)
+# The dashed line joins, at each φ_a, the mean of the seeds' points just checked.
+means = {}
+for phi, y in expected:
+    means.setdefault(phi, []).append(y)
+check_points("row", list(zip(row["P_polar: 63 mm mean"]["x"], row["P_polar: 63 mm mean"]["y"])),
+             [(phi, sum(ys) / len(ys)) for phi, ys in means.items()], 4)
 # SI S3(a): each run's C(t) as drawn is its table's, every positive value of it (a log axis).
 ct = drawn_figure("ct")
 checked = 0
