@@ -72,7 +72,7 @@ ROW63 = {
             ROW38_WINDOW)],
     0.65: [(f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.series.csv", ROW38_WINDOW),
            (f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.seed2.series.csv",
-            (60.0, 120.0))],
+            ROW38_WINDOW)],
     0.80: [(f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.8.series.csv", ROW38_WINDOW)],
 }
 # The dense end's C(t) is taken over the last 150 s of its 270 s, past the growth of the flocks.
@@ -80,8 +80,8 @@ DENSE38_CT_WINDOW = (120.0, 270.0)
 # SI S3(a) in the same box: the polar rods' C(t) at each φ_a, from `rodsea analyze --observables
 # autocorrelation` over each run's window (φ_a, table, window in s). A φ_a not run yet is left
 # out.
-# The 63 mm box's 0.65 and 0.80 beside them, over 60–180 s (their whole runs past the first
-# minute).
+# The 63 mm box's 0.65 (two seeds) and 0.80 beside them, over 60–180 s (their whole runs past
+# the first minute).
 CT = [(0.50, "38 mm", f"{DATA}/fig1c-dense-38mm/medium.area_fraction=0.5.seed2"
        ".orientation_autocorrelation.csv", (30.0, 90.0))] + [
     (phi, "38 mm",
@@ -89,7 +89,10 @@ CT = [(0.50, "38 mm", f"{DATA}/fig1c-dense-38mm/medium.area_fraction=0.5.seed2"
      DENSE38_CT_WINDOW) for phi in (0.65, 0.80)] + [
     (phi, "63 mm",
      f"{DATA}/fig1c-dense-63mm/medium.area_fraction={phi:g}.orientation_autocorrelation.csv",
-     (60.0, 180.0)) for phi in (0.65, 0.80)]
+     (60.0, 180.0)) for phi in (0.65, 0.80)] + [
+    (0.65, "63 mm, seed 2",
+     f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.seed2.orientation_autocorrelation.csv",
+     (60.0, 180.0))]
 
 # The dense end's whole runs, for the length of their transient: (φ_a, series table, polar rods);
 # DENSE38_BIN-second means of each quantity drawn. A φ_a not run yet is left out.
@@ -824,8 +827,8 @@ def draw_dense38(plt):
 
 def draw_ct(plt):
     """SI S3(a): the polar rods' orientation autocorrelation C(t) against the lag, semilog, one
-    curve per φ_a of the 38 mm box (solid) and of the 63 mm box (dashed), and the medium's
-    C₂(t)."""
+    curve per φ_a of the 38 mm box (solid) and of the 63 mm box (dashed; 0.65's second seed
+    dotted), and the medium's C₂(t)."""
     fig, (polar, medium) = plt.subplots(1, 2, figsize=(10.0, 3.6))
     dump = {}
     drawn = 0
@@ -837,7 +840,8 @@ def draw_ct(plt):
         for needed in ("t", "C_polar", "C2_medium"):
             column(t, needed, relative)
         label = f"φ_a = {phi:g}, {box} ({window[0]:g}–{window[1]:g} s)"
-        style = {"color": colours.get(phi, "k"), "ls": "-" if box == "38 mm" else "--",
+        style = {"color": colours.get(phi, "k"),
+                 "ls": "-" if box == "38 mm" else ":" if "seed 2" in box else "--",
                  "label": label}
         keep = t["C_polar"] > 0  # a log axis: the noise floor's negative values are not drawn
         polar.semilogy(t["t"][keep], t["C_polar"][keep], **style)
