@@ -461,6 +461,7 @@ def draw_row(plt):
         dump[f"{name}: mean"] = {"x": xs, "y": means}
         big = {"x": [], "y": [], "err": [], "window": []}
         big_mean = {"x": [], "y": []}
+        whole_labelled = False
         for phi, seeds in ROW63.items():
             values = []
             for relative, window in seeds:
@@ -468,9 +469,11 @@ def draw_row(plt):
                     continue  # a seed not run yet
                 mean, err, _ = window_mean(relative, name, window, ROW38_BLOCK)
                 whole = tuple(window) == ROW38_WINDOW
-                label = (f"63 mm, {window[0]:g}–{window[1]:g} s so far" if not whole else
-                         None if any(w == list(ROW38_WINDOW) for w in big["window"]) else
-                         "63 mm, one seed (15 s blocks)")
+                if not whole:
+                    label = f"63 mm, {window[0]:g}–{window[1]:g} s so far"
+                else:
+                    label = None if whole_labelled else "63 mm, one seed (15 s blocks)"
+                    whole_labelled = True
                 ax.errorbar([phi], [mean], yerr=[err], fmt="s", ms=5, capsize=2, color="C2",
                             mfc="C2" if whole else "none", label=label)
                 values.append(mean)
