@@ -174,9 +174,11 @@ ALIGNMENT_ROW = [
 ALIGNMENT_ROW_88MM = [
     (0.05, f"{ALIGNMENT}/fig1c-88mm-phi_a0.05-seed1-from60.summary.csv"),
 ]
-# The dense end in the 63 mm box (50 polar rods), over 60-180 s as the row's dilute points.
+# The dense end in the 63 mm box (50 polar rods), over 60-180 s as the row's dilute points; 0.65
+# from both its seeds.
 ALIGNMENT_ROW_63MM = [
     (0.65, f"{ALIGNMENT}/fig1c-63mm-phi_a0.65-seed1-from60.summary.csv"),
+    (0.65, f"{ALIGNMENT}/fig1c-63mm-phi_a0.65-seed2-from60.summary.csv"),
     (0.80, f"{ALIGNMENT}/fig1c-63mm-phi_a0.80-seed1-from60.summary.csv"),
 ]
 ALIGNMENT_NOISE = [(float(d), f"{ALIGNMENT}/fig1f-38mm-D_r{d}-seed2-from30.summary.csv")
