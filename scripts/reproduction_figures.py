@@ -64,7 +64,8 @@ ROW38_WINDOW = (60.0, 180.0)
 ROW38_BLOCK = 15.0
 # The same row in the 63 mm box (50 polar rods): {φ_a: [(series table, window in s)]}, one entry
 # per seed. A run not yet at ROW38_WINDOW's end is drawn over the window it has (whole 15 s
-# blocks), as an open marker; the dashed line joins the means over each φ_a's seeds.
+# blocks), as an open marker; the dashed line joins the means over each φ_a's seeds that have the
+# whole window, since a mean over 15 s would weigh as much as one over 120 s.
 ROW63 = {
     0.05: [(f"{FIG1C_SERIES}/medium.area_fraction=0.05_extended_to_180_s.series.csv",
             ROW38_WINDOW)],
@@ -73,7 +74,8 @@ ROW63 = {
     0.65: [(f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.series.csv", ROW38_WINDOW),
            (f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.seed2.series.csv",
             ROW38_WINDOW)],
-    0.80: [(f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.8.series.csv", ROW38_WINDOW)],
+    0.80: [(f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.8.series.csv", ROW38_WINDOW),
+           (f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.8.seed2.series.csv", (60.0, 90.0))],
 }
 # The dense end's C(t) is taken over the last 150 s of its 270 s, past the growth of the flocks.
 DENSE38_CT_WINDOW = (120.0, 270.0)
@@ -478,7 +480,8 @@ def draw_row(plt):
                     whole_labelled = True
                 ax.errorbar([phi], [mean], yerr=[err], fmt="s", ms=5, capsize=2, color="C2",
                             mfc="C2" if whole else "none", label=label)
-                values.append(mean)
+                if whole:
+                    values.append(mean)
                 for key, value in zip(big, (phi, mean, err, list(window))):
                     big[key].append(value)
             if values:
