@@ -62,20 +62,18 @@ ROW38 = {
 }
 ROW38_WINDOW = (60.0, 180.0)
 ROW38_BLOCK = 15.0
-# The same row in the 63 mm box (50 polar rods): {φ_a: [(series table, window in s)]}, one entry
-# per seed. A run not yet at ROW38_WINDOW's end is drawn over the window it has (whole 15 s
-# blocks), as an open marker; the dashed line joins the means over each φ_a's seeds that have the
-# whole window, since a mean over 15 s would weigh as much as one over 120 s.
+# The same row in the 63 mm box (50 polar rods): {φ_a: [series table per seed]}. A run not yet
+# at ROW38_WINDOW's end is drawn over the part of it that its table covers (row63_window), as an
+# open marker, once that holds two blocks; the dashed line joins the means over each φ_a's seeds
+# that have the whole window, since a mean over 15 s would weigh as much as one over 120 s.
 ROW63 = {
-    0.05: [(f"{FIG1C_SERIES}/medium.area_fraction=0.05_extended_to_180_s.series.csv",
-            ROW38_WINDOW)],
-    0.20: [(f"{FIG1C_SERIES}/medium.area_fraction=0.2_extended_to_180_s.series.csv",
-            ROW38_WINDOW)],
-    0.65: [(f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.series.csv", ROW38_WINDOW),
-           (f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.seed2.series.csv",
-            ROW38_WINDOW)],
-    0.80: [(f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.8.series.csv", ROW38_WINDOW),
-           (f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.8.seed2.series.csv", (60.0, 90.0))],
+    0.05: [f"{FIG1C_SERIES}/medium.area_fraction=0.05_extended_to_180_s.series.csv"],
+    0.20: [f"{FIG1C_SERIES}/medium.area_fraction=0.2_extended_to_180_s.series.csv"],
+    0.50: [f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.5.series.csv"],
+    0.65: [f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.series.csv",
+           f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.seed2.series.csv"],
+    0.80: [f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.8.series.csv",
+           f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.8.seed2.series.csv"],
 }
 # The dense end's C(t) is taken over the last 150 s of its 270 s, past the growth of the flocks.
 DENSE38_CT_WINDOW = (120.0, 270.0)
@@ -434,6 +432,19 @@ def window_mean(relative, name, window, block):
     return mean, err, t
 
 
+def row63_window(relative):
+    """The part of ROW38_WINDOW that a run's series table covers, in whole ROW38_BLOCK blocks, or
+    None below two blocks. A last 1 s bin with fewer frames than the others (a run stopped
+    within it) does not count as covered."""
+    t = read_csv(relative)
+    for needed in ("t_from", "t_to", "frames"):
+        column(t, needed, relative)
+    end = t["t_to"][-1] if t["frames"][-1] >= t["frames"].max() else t["t_from"][-1]
+    start, stop = ROW38_WINDOW
+    blocks = int((min(end, stop) - start) // ROW38_BLOCK)
+    return (start, start + blocks * ROW38_BLOCK) if blocks >= 2 else None
+
+
 def draw_row(plt):
     """P, Σ and N_m against φ_a: in the 38 mm box each seed's 60–180 s mean (error from 15 s
     blocks) and the mean over the seeds; in the 63 mm box the same, each seed over 60–180 s
@@ -468,11 +479,14 @@ def draw_row(plt):
         whole_labelled = False
         for phi, seeds in ROW63.items():
             values = []
-            for relative, window in seeds:
+            for relative in seeds:
                 if not os.path.isfile(os.path.join(ROOT, relative)):
                     continue  # a seed not run yet
+                window = row63_window(relative)
+                if window is None:
+                    continue  # not yet two blocks past the window's start
                 mean, err, _ = window_mean(relative, name, window, ROW38_BLOCK)
-                whole = tuple(window) == ROW38_WINDOW
+                whole = window == ROW38_WINDOW
                 if not whole:
                     label = f"63 mm, {window[0]:g}–{window[1]:g} s so far"
                 else:

@@ -88,6 +88,18 @@ def block_mean(path, column, start, end, block=15.0):
     return sum(means) / len(means)
 
 
+def covered_window(path, start=60.0, stop=180.0, block=15.0):
+    """The whole blocks of [start, stop) that a series covers, read with the csv module: up to
+    the end of its last 1 s bin, or its start where that bin lacks frames (a run stopped within
+    it); None below two blocks."""
+    col, rows = read_table(path)
+    frames = [int(r[col["frames"]]) for r in rows]
+    last = rows[-1]
+    end = float(last[col["t_to"]] if frames[-1] >= max(frames) else last[col["t_from"]])
+    blocks = int((min(end, stop) - start) // block)
+    return (start, start + blocks * block) if blocks >= 2 else None
+
+
 def are_bin_means(curve, values, width):
     """Whether `curve` is the means of consecutive groups of `width` of `values` (a shorter
     remainder left out)."""
@@ -120,12 +132,16 @@ expected = [(float(phi), block_mean(os.path.join(source, relative), "P_polar", 6
             if os.path.isfile(os.path.join(source, relative))]
 check_points("row", list(zip(row["P_polar: seeds"]["x"], row["P_polar: seeds"]["y"])),
              expected, 8)
-present = [(phi, relative, tuple(window)) for phi, seeds in figures.ROW63.items()
-           for relative, window in seeds if os.path.isfile(os.path.join(source, relative))]
+present = [(phi, relative, covered_window(os.path.join(source, relative)))
+           for phi, seeds in figures.ROW63.items() for relative in seeds
+           if os.path.isfile(os.path.join(source, relative))]
+present = [entry for entry in present if entry[2] is not None]
 expected = [(phi, block_mean(os.path.join(source, relative), "P_polar", *window))
             for phi, relative, window in present]
 check_points("row", list(zip(row["P_polar: 63 mm"]["x"], row["P_polar: 63 mm"]["y"])),
              expected, 5)
+assert [tuple(w) for w in row["P_polar: 63 mm"]["window"]] == [w for _, _, w in present], \
+    (row["P_polar: 63 mm"]["window"], present)
 # The dashed line joins, at each φ_a, the mean of the seeds' points just checked that cover the
 # whole 60–180 s (a run still under way is drawn, but kept out of the mean).
 means = {}
