@@ -439,6 +439,8 @@ def row63_window(relative):
     t = read_csv(relative)
     for needed in ("t_from", "t_to", "frames"):
         column(t, needed, relative)
+    if t.size == 0:
+        raise TableError(f"{relative}: no bins")
     end = t["t_to"][-1] if t["frames"][-1] >= t["frames"].max() else t["t_from"][-1]
     start, stop = ROW38_WINDOW
     blocks = int((min(end, stop) - start) // ROW38_BLOCK)
