@@ -80,13 +80,16 @@ DENSE38_CT_WINDOW = (120.0, 270.0)
 # SI S3(a) in the same box: the polar rods' C(t) at each φ_a, from `rodsea analyze --observables
 # autocorrelation` over each run's window (φ_a, table, window in s). A φ_a not run yet is left
 # out.
-# The 63 mm box's 0.65 (two seeds) and 0.80 beside them, over 60–180 s (their whole runs past
-# the first minute).
+# The 63 mm box's 0.50, 0.65 (two seeds) and 0.80 beside them, over 60–180 s (their whole runs
+# past the first minute).
 CT = [(0.50, "38 mm", f"{DATA}/fig1c-dense-38mm/medium.area_fraction=0.5.seed2"
        ".orientation_autocorrelation.csv", (30.0, 90.0))] + [
     (phi, "38 mm",
      f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi:g}.orientation_autocorrelation.csv",
      DENSE38_CT_WINDOW) for phi in (0.65, 0.80)] + [
+    (0.50, "63 mm",
+     f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.5.orientation_autocorrelation.csv",
+     (60.0, 180.0))] + [
     (phi, "63 mm",
      f"{DATA}/fig1c-dense-63mm/medium.area_fraction={phi:g}.orientation_autocorrelation.csv",
      (60.0, 180.0)) for phi in (0.65, 0.80)] + [
@@ -174,9 +177,10 @@ ALIGNMENT_ROW = [
 ALIGNMENT_ROW_88MM = [
     (0.05, f"{ALIGNMENT}/fig1c-88mm-phi_a0.05-seed1-from60.summary.csv"),
 ]
-# The dense end in the 63 mm box (50 polar rods), over 60-180 s as the row's dilute points; 0.65
-# from both its seeds.
+# The row's middle and dense end in the 63 mm box (50 polar rods), over 60-180 s as the row's
+# dilute points; 0.65 from both its seeds.
 ALIGNMENT_ROW_63MM = [
+    (0.50, f"{ALIGNMENT}/fig1c-63mm-phi_a0.50-seed1-from60.summary.csv"),
     (0.65, f"{ALIGNMENT}/fig1c-63mm-phi_a0.65-seed1-from60.summary.csv"),
     (0.65, f"{ALIGNMENT}/fig1c-63mm-phi_a0.65-seed2-from60.summary.csv"),
     (0.80, f"{ALIGNMENT}/fig1c-63mm-phi_a0.80-seed1-from60.summary.csv"),
