@@ -459,6 +459,9 @@ def draw_row(plt):
     dump = {}
     panels = (("P_polar", "P (polar rods)"), ("Sigma", "Σ (segregation)"),
               ("N_m", "⟨N_m⟩ (rods per flock)"))
+    # Each 63 mm run's window, once for all three panels; a seed not run yet has none.
+    windows63 = {relative: row63_window(relative) for seeds in ROW63.values()
+                 for relative in seeds if os.path.isfile(os.path.join(ROOT, relative))}
     for ax, (name, title) in zip(axes, panels):
         xs, means = [], []
         seeds_x, seeds_y, seeds_err = [], [], []
@@ -486,11 +489,9 @@ def draw_row(plt):
         for phi, seeds in ROW63.items():
             values = []
             for relative in seeds:
-                if not os.path.isfile(os.path.join(ROOT, relative)):
-                    continue  # a seed not run yet
-                window = row63_window(relative)
+                window = windows63.get(relative)
                 if window is None:
-                    continue  # not yet two blocks past the window's start
+                    continue  # not run yet, or not yet two blocks past the window's start
                 mean, err, _ = window_mean(relative, name, window, ROW38_BLOCK)
                 whole = window == ROW38_WINDOW
                 if not whole:
