@@ -69,7 +69,8 @@ ROW38_BLOCK = 15.0
 ROW63 = {
     0.05: [f"{FIG1C_SERIES}/medium.area_fraction=0.05_extended_to_180_s.series.csv"],
     0.20: [f"{FIG1C_SERIES}/medium.area_fraction=0.2_extended_to_180_s.series.csv"],
-    0.50: [f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.5.series.csv"],
+    0.50: [f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.5.series.csv",
+           f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.5.seed2.series.csv"],
     0.65: [f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.series.csv",
            f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.seed2.series.csv"],
     0.80: [f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.8.series.csv",
@@ -515,10 +516,12 @@ def draw_row(plt):
         dump[f"{name}: 63 mm mean"] = big_mean
         ax.set_xlabel("φ_a")
         ax.set_title(title, fontsize=10)
-    axes[0].legend(loc="best", fontsize=7)
+    # Below the panels: inside, with the open markers added, it hid a point wherever it went.
+    handles, labels = axes[0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=4, fontsize=7, frameon=False)
     fig.suptitle("φ_p = 0.05, σ = 3.125, D_r = 0 in the 38 mm box (18 polar rods) and the 63 mm "
                  f"box (50): means over {ROW38_WINDOW[0]:g}–{ROW38_WINDOW[1]:g} s", fontsize=10)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0.0, 0.09, 1.0, 1.0))
     return fig, dump
 
 
