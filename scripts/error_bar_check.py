@@ -44,9 +44,11 @@ GROUPS = [
       for seed in ("", ".seed2")])
     for phi in ("0.65", "0.80")
 ] + [
-    ("Fig. 1c, 63 mm, φ_a = 0.65", "120 s", ROW,
-     [f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65{seed}.series.csv"
-      for seed in ("", ".seed2")]),
+    (f"Fig. 1c, 63 mm, φ_a = {phi}", "120 s", ROW,
+     [f"{DATA}/fig1c-dense-63mm/medium.area_fraction={phi.rstrip('0')}{seed}.series.csv"
+      for seed in ("", ".seed2")])
+    for phi in ("0.65", "0.80")
+] + [
     ("38 mm, φ_a = 0.05 at dt 2.5 µs, seeds 3–7", "120 s", ROW,
      "dilute-order/medium-mass-seeds/medium.mass=0.2.seed*.series.csv"),
     ("the same with medium mass 0.15, seeds 1–8", None, ROW,
