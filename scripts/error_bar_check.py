@@ -44,6 +44,10 @@ GROUPS = [
       for seed in ("", ".seed2")])
     for phi in ("0.65", "0.80")
 ] + [
+    ("Fig. 1c, 63 mm, φ_a = 0.05", "120 s", ROW,
+     [f"{DATA}/fig1c-phi_p0.05-long/medium.area_fraction=0.05_extended_to_180_s.series.csv",
+      f"{DATA}/finite-size/replicates63/medium.area_fraction=0.05.seed2.series.csv"]),
+] + [
     (f"Fig. 1c, 63 mm, φ_a = {phi}", "120 s", ROW,
      [f"{DATA}/fig1c-dense-63mm/medium.area_fraction={phi.rstrip('0')}{seed}.series.csv"
       for seed in ("", ".seed2")])

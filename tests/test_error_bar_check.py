@@ -12,7 +12,8 @@
   has two significant digits, so each is checked to 0.5 % of itself plus the last digit's half.
 - Errors from 8 blocks scatter as e sqrt(chi2_7 / 7), so honest seeds' chi2/dof has mean
   7/(7 - 2) = 1.4 and the 120 s pool's "errors x" factor is sqrt(chi2/dof / 1.4); 40 000 draws
-  put that mean within 1 % (the variance of 7/chi2_7 is finite), so the factor is checked to 2 %.
+  put that mean within 1 % (the variance of 7/chi2_7 is finite), so the factor is checked to 2 %
+  plus half its last printed digit.
 - Seeds offset by nothing give chi2/dof = 0 and p = 1; seeds offset by 3 errors (chi2/dof >= 4.5)
   give p below 0.01 for the 120 s pool.
 - A missing seed's table is refused with a message naming its point, and nothing is printed.
@@ -153,7 +154,10 @@ for (pool, block), (sum_chi2, dof) in pools.items():
     check(near(chi2, sum_chi2 / dof), f"{pool} pool, {block} s: {chi2}, exact {sum_chi2 / dof:.4g}")
     if (pool, block) == ("120 s", 15):
         expected = math.sqrt(sum_chi2 / dof / 1.4)
-        check(abs(factor - expected) <= 0.02 * expected + 0.005,
+        # The factor is printed with two significant digits too, so its rounding adds half a
+        # last digit (0.05 near 1) to the Monte Carlo's 2 %.
+        last_digit = 10 ** (math.floor(math.log10(expected)) - 1)
+        check(abs(factor - expected) <= 0.02 * expected + 0.5 * last_digit,
               f"errors x {factor} printed, sqrt(chi2/dof / 1.4) = {expected:.3f}")
 check(len(pools) == 3, f"pools {sorted(pools)}")
 
