@@ -82,7 +82,7 @@ DENSE38_CT_WINDOW = (120.0, 270.0)
 # SI S3(a) in the same box: the polar rods' C(t) at each φ_a, from `rodsea analyze --observables
 # autocorrelation` over each run's window (φ_a, table, window in s). A φ_a not run yet is left
 # out.
-# The 63 mm box's 0.50, 0.65 and 0.80 (two seeds each at the dense end) beside them, over 60–180 s (their whole runs
+# The 63 mm box's 0.50, 0.65 and 0.80 (two seeds each) beside them, over 60–180 s (their whole runs
 # past the first minute).
 CT = [(0.50, "38 mm", f"{DATA}/fig1c-dense-38mm/medium.area_fraction=0.5.seed2"
        ".orientation_autocorrelation.csv", (30.0, 90.0))] + [
@@ -95,6 +95,9 @@ CT = [(0.50, "38 mm", f"{DATA}/fig1c-dense-38mm/medium.area_fraction=0.5.seed2"
     (phi, "63 mm",
      f"{DATA}/fig1c-dense-63mm/medium.area_fraction={phi:g}.orientation_autocorrelation.csv",
      (60.0, 180.0)) for phi in (0.65, 0.80)] + [
+    (0.50, "63 mm, seed 2",
+     f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.5.seed2.orientation_autocorrelation.csv",
+     (60.0, 180.0))] + [
     (phi, "63 mm, seed 2",
      f"{DATA}/fig1c-dense-63mm/medium.area_fraction={phi:g}.seed2.orientation_autocorrelation.csv",
      (60.0, 180.0)) for phi in (0.65, 0.80)]
@@ -180,9 +183,10 @@ ALIGNMENT_ROW_88MM = [
     (0.05, f"{ALIGNMENT}/fig1c-88mm-phi_a0.05-seed1-from60.summary.csv"),
 ]
 # The row's middle and dense end in the 63 mm box (50 polar rods), over 60-180 s as the row's
-# dilute points; 0.65 and 0.80 from both their seeds.
+# dilute points; each from both its seeds.
 ALIGNMENT_ROW_63MM = [
     (0.50, f"{ALIGNMENT}/fig1c-63mm-phi_a0.50-seed1-from60.summary.csv"),
+    (0.50, f"{ALIGNMENT}/fig1c-63mm-phi_a0.50-seed2-from60.summary.csv"),
     (0.65, f"{ALIGNMENT}/fig1c-63mm-phi_a0.65-seed1-from60.summary.csv"),
     (0.65, f"{ALIGNMENT}/fig1c-63mm-phi_a0.65-seed2-from60.summary.csv"),
     (0.80, f"{ALIGNMENT}/fig1c-63mm-phi_a0.80-seed1-from60.summary.csv"),
@@ -862,7 +866,7 @@ def draw_dense38(plt):
 def draw_ct(plt):
     """SI S3(a): the polar rods' orientation autocorrelation C(t) against the lag, semilog, one
     curve per φ_a of the 38 mm box (solid) and of the 63 mm box (dashed; the second seeds
-    of 0.65 and 0.80 dotted), and the medium's C₂(t)."""
+    dotted), and the medium's C₂(t)."""
     fig, (polar, medium) = plt.subplots(1, 2, figsize=(10.0, 3.6))
     dump = {}
     drawn = 0
