@@ -26,6 +26,12 @@ from block_means import block_means, chi2_per_dof, honest_chi2, read_table  # no
 DATA = "data/reproduction"
 ROW = (60.0, 180.0)
 FIG1F = (30.0, 90.0)
+def seeds_1_and_2(folder, phi):
+    """Seed 1's and seed 2's series tables of one φ_a, kept side by side in `folder`."""
+    return [f"{DATA}/{folder}/medium.area_fraction={phi:g}{seed}.series.csv"
+            for seed in ("", ".seed2")]
+
+
 # (label, pool, window, [series tables of the seeds]). The medium masses 0.1 and 0.15 are shown
 # but pooled with nothing: their seeds end in different states (ordered or not), so their spread
 # is a bimodality, not noise.
@@ -39,24 +45,18 @@ GROUPS = [
       f"{DATA}/finite-size/replicates38/medium.area_fraction=0.2.seed2.series.csv",
       f"{DATA}/finite-size/replicates38/medium.area_fraction=0.2.seed3.series.csv"]),
 ] + [
-    (f"Fig. 1c, 38 mm, φ_a = {phi}", "120 s", ROW,
-     [f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi.rstrip('0')}{seed}.series.csv"
-      for seed in ("", ".seed2")])
-    for phi in ("0.65", "0.80")
+    (f"Fig. 1c, 38 mm, φ_a = {phi:.2f}", "120 s", ROW, seeds_1_and_2("fig1c-dense-38mm", phi))
+    for phi in (0.65, 0.80)
 ] + [
     ("Fig. 1c, 63 mm, φ_a = 0.05", "120 s", ROW,
      [f"{DATA}/fig1c-phi_p0.05-long/medium.area_fraction=0.05_extended_to_180_s.series.csv",
       f"{DATA}/finite-size/replicates63/medium.area_fraction=0.05.seed2.series.csv"]),
     # Not pooled: its seeds hold two states over the whole window (flocks and lone rods heading
     # together in one, apart in the other), which no block error of one seed can see.
-    ("Fig. 1c, 63 mm, φ_a = 0.50 (not pooled)", None, ROW,
-     [f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.5{seed}.series.csv"
-      for seed in ("", ".seed2")]),
+    ("Fig. 1c, 63 mm, φ_a = 0.50 (not pooled)", None, ROW, seeds_1_and_2("fig1c-mid-63mm", 0.5)),
 ] + [
-    (f"Fig. 1c, 63 mm, φ_a = {phi}", "120 s", ROW,
-     [f"{DATA}/fig1c-dense-63mm/medium.area_fraction={phi.rstrip('0')}{seed}.series.csv"
-      for seed in ("", ".seed2")])
-    for phi in ("0.65", "0.80")
+    (f"Fig. 1c, 63 mm, φ_a = {phi:.2f}", "120 s", ROW, seeds_1_and_2("fig1c-dense-63mm", phi))
+    for phi in (0.65, 0.80)
 ] + [
     ("38 mm, φ_a = 0.05 at dt 2.5 µs, seeds 3–7", "120 s", ROW,
      "dilute-order/medium-mass-seeds/medium.mass=0.2.seed*.series.csv"),
