@@ -26,6 +26,8 @@ from block_means import block_means, chi2_per_dof, honest_chi2, read_table  # no
 DATA = "data/reproduction"
 ROW = (60.0, 180.0)
 FIG1F = (30.0, 90.0)
+
+
 def seeds_1_and_2(folder, phi):
     """Seed 1's and seed 2's series tables of one φ_a, kept side by side in `folder`."""
     return [f"{DATA}/{folder}/medium.area_fraction={phi:g}{seed}.series.csv"
@@ -51,6 +53,9 @@ GROUPS = [
     ("Fig. 1c, 63 mm, φ_a = 0.05", "120 s", ROW,
      [f"{DATA}/fig1c-phi_p0.05-long/medium.area_fraction=0.05_extended_to_180_s.series.csv",
       f"{DATA}/finite-size/replicates63/medium.area_fraction=0.05.seed2.series.csv"]),
+    ("Fig. 1c, 63 mm, φ_a = 0.20", "120 s", ROW,
+     [f"{DATA}/fig1c-phi_p0.05-long/medium.area_fraction=0.2_extended_to_180_s.series.csv",
+      f"{DATA}/finite-size/replicates63/medium.area_fraction=0.2.seed2.series.csv"]),
     # Not pooled: its seeds hold two states over the whole window (flocks and lone rods heading
     # together in one, apart in the other), which no block error of one seed can see.
     ("Fig. 1c, 63 mm, φ_a = 0.50 (not pooled)", None, ROW, seeds_1_and_2("fig1c-mid-63mm", 0.5)),
