@@ -52,7 +52,8 @@ GROUPS = [
 ] + [
     ("Fig. 1c, 63 mm, φ_a = 0.05", "120 s", ROW,
      [f"{DATA}/fig1c-phi_p0.05-long/medium.area_fraction=0.05_extended_to_180_s.series.csv",
-      f"{DATA}/finite-size/replicates63/medium.area_fraction=0.05.seed2.series.csv"]),
+      f"{DATA}/finite-size/replicates63/medium.area_fraction=0.05.seed2.series.csv",
+      f"{DATA}/finite-size/replicates63/medium.area_fraction=0.05.seed3.series.csv"]),
     ("Fig. 1c, 63 mm, φ_a = 0.20", "120 s", ROW,
      [f"{DATA}/fig1c-phi_p0.05-long/medium.area_fraction=0.2_extended_to_180_s.series.csv",
       f"{DATA}/finite-size/replicates63/medium.area_fraction=0.2.seed2.series.csv"]),

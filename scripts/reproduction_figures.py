@@ -68,7 +68,8 @@ ROW38_BLOCK = 15.0
 # that have the whole window, since a mean over 15 s would weigh as much as one over 120 s.
 ROW63 = {
     0.05: [f"{FIG1C_SERIES}/medium.area_fraction=0.05_extended_to_180_s.series.csv",
-           f"{DATA}/finite-size/replicates63/medium.area_fraction=0.05.seed2.series.csv"],
+           f"{DATA}/finite-size/replicates63/medium.area_fraction=0.05.seed2.series.csv",
+           f"{DATA}/finite-size/replicates63/medium.area_fraction=0.05.seed3.series.csv"],
     0.20: [f"{FIG1C_SERIES}/medium.area_fraction=0.2_extended_to_180_s.series.csv",
            f"{DATA}/finite-size/replicates63/medium.area_fraction=0.2.seed2.series.csv"],
     0.50: [f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.5.series.csv",
