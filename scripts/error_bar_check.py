@@ -11,7 +11,8 @@ honest errors give at least the chi2/dof seen; for a pool, also the factor by wh
 would have to grow for its chi2/dof to be honest errors' mean. A pooled chi2/dof is
 sum(chi2_g dof_g) / sum(dof_g) over its groups; its range is drawn the same way from honest
 seeds (block_means.honest_chi2). A window cut into fewer than 4 blocks gets a dash: its errors
-would rest on one to three degrees of freedom each.
+would rest on one to three degrees of freedom each. A seed whose table ends before the
+window's end (a run still going) is left out of its point and counted beside its seeds.
 """
 import argparse
 import glob
@@ -22,49 +23,27 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from block_means import block_means, chi2_per_dof, honest_chi2, read_table  # noqa: E402
+from reproduction_rows import DATA, ROW38, ROW63  # noqa: E402
 
-DATA = "data/reproduction"
 ROW = (60.0, 180.0)
 FIG1F = (30.0, 90.0)
 
 
-def seeds_1_and_2(folder, phi):
-    """Seed 1's and seed 2's series tables of one φ_a, kept side by side in `folder`."""
-    return [f"{DATA}/{folder}/medium.area_fraction={phi:g}{seed}.series.csv"
-            for seed in ("", ".seed2")]
-
-
-# (label, pool, window, [series tables of the seeds]). The medium masses 0.1 and 0.15 are shown
-# but pooled with nothing: their seeds end in different states (ordered or not), so their spread
-# is a bimodality, not noise.
+# (label, pool, window, [series tables of the seeds]). The first row's seeds are
+# reproduction_rows.py's, which the figures draw; a φ_a with one seed has no spread to check.
+# The medium masses 0.1 and 0.15 are shown but pooled with nothing: their seeds end in different
+# states (ordered or not), so their spread is a bimodality, not noise.
 GROUPS = [
-    ("Fig. 1c, 38 mm, φ_a = 0.05", "120 s", ROW,
-     [f"{DATA}/finite-size/fig1c-phi_a0.05-scale0.15.series.csv",
-      f"{DATA}/finite-size/replicates38/medium.area_fraction=0.05.seed2.series.csv",
-      f"{DATA}/finite-size/replicates38/medium.area_fraction=0.05.seed3.series.csv"]),
-    ("Fig. 1c, 38 mm, φ_a = 0.20", "120 s", ROW,
-     [f"{DATA}/finite-size/fig1c-phi_a0.20-scale0.15.series.csv",
-      f"{DATA}/finite-size/replicates38/medium.area_fraction=0.2.seed2.series.csv",
-      f"{DATA}/finite-size/replicates38/medium.area_fraction=0.2.seed3.series.csv"]),
+    (f"Fig. 1c, 38 mm, φ_a = {phi}", "120 s", ROW, seeds)
+    for phi, seeds in ROW38.items() if len(seeds) > 1
 ] + [
-    (f"Fig. 1c, 38 mm, φ_a = {phi:.2f}", "120 s", ROW, seeds_1_and_2("fig1c-dense-38mm", phi))
-    for phi in (0.65, 0.80)
-] + [
-    # Pooled although its seeds disagree (chi2/dof 18): none holds one state over the whole
-    # window, and the point was pooled before its third seed came.
-    ("Fig. 1c, 63 mm, φ_a = 0.05", "120 s", ROW,
-     [f"{DATA}/fig1c-phi_p0.05-long/medium.area_fraction=0.05_extended_to_180_s.series.csv",
-      f"{DATA}/finite-size/replicates63/medium.area_fraction=0.05.seed2.series.csv",
-      f"{DATA}/finite-size/replicates63/medium.area_fraction=0.05.seed3.series.csv"]),
-    ("Fig. 1c, 63 mm, φ_a = 0.20", "120 s", ROW,
-     [f"{DATA}/fig1c-phi_p0.05-long/medium.area_fraction=0.2_extended_to_180_s.series.csv",
-      f"{DATA}/finite-size/replicates63/medium.area_fraction=0.2.seed2.series.csv"]),
-    # Not pooled: its seeds hold two states over the whole window (flocks and lone rods heading
-    # together in one, apart in the other), which no block error of one seed can see.
-    ("Fig. 1c, 63 mm, φ_a = 0.50 (not pooled)", None, ROW, seeds_1_and_2("fig1c-mid-63mm", 0.5)),
-] + [
-    (f"Fig. 1c, 63 mm, φ_a = {phi:.2f}", "120 s", ROW, seeds_1_and_2("fig1c-dense-63mm", phi))
-    for phi in (0.65, 0.80)
+    # 0.50 is not pooled: its seeds hold two states over the whole window (flocks and lone rods
+    # heading together in one, apart in the other), which no block error of one seed can see.
+    # 0.05 is pooled although its seeds disagree as much (chi2/dof 18 from three): none holds one
+    # state over the whole window, and the point was pooled before its third seed came.
+    (f"Fig. 1c, 63 mm, φ_a = {phi:.2f}" + (" (not pooled)" if phi == 0.50 else ""),
+     None if phi == 0.50 else "120 s", ROW, seeds)
+    for phi, seeds in ROW63.items()
 ] + [
     ("38 mm, φ_a = 0.05 at dt 2.5 µs, seeds 3–7", "120 s", ROW,
      "dilute-order/medium-mass-seeds/medium.mass=0.2.seed*.series.csv"),
@@ -90,6 +69,15 @@ def tables_of(root, spec):
         return [os.path.join(root, path) for path in spec]
     return sorted(path for pattern in spec.split()
                   for path in glob.glob(os.path.join(root, DATA, pattern)))
+
+
+def finished_seeds(paths, window):
+    """The tables that reach the window's end, and how many do not: a run still going (its
+    checkpoint kept, to be run on) is drawn by the figures over what it has, but its spread
+    against finished seeds would compare different windows."""
+    finished = [path for path in paths
+                if float(np.nanmax(read_table(path)["t_to"])) >= window[1] - 1e-9]
+    return finished, len(paths) - len(finished)
 
 
 def group_seeds(paths, window, block):
@@ -130,9 +118,13 @@ def main():
         f"chi2/dof, {b:g} s blocks (95 % range if honest; p)" for b in BLOCKS) + " |",
         "|---|---|" + "---|" * len(BLOCKS)]
     for index, (label, pool, window, spec) in enumerate(GROUPS):
-        paths = tables_of(args.root, spec)
+        try:
+            paths, running = finished_seeds(tables_of(args.root, spec), window)
+        except ValueError as e:
+            sys.exit(f"error_bar_check.py: {label}: {e}")
         if len(paths) < 2:
-            sys.exit(f"error_bar_check.py: {label}: fewer than two seeds' tables ({spec})")
+            sys.exit(f"error_bar_check.py: {label}: fewer than two seeds' tables past "
+                     f"{window[1]:g} s ({spec})")
         cells = []
         for block in BLOCKS:
             try:
@@ -153,7 +145,9 @@ def main():
                 total[0] += chi2 * dof
                 total[1] += dof
                 total[2] = total[2] + honest * dof
-        out.append(f"| {label}, {window[0]:g}–{window[1]:g} s | {len(paths)} | "
+        seeds_cell = f"{len(paths)}" + (f" (+{running} not yet at {window[1]:g} s)"
+                                         if running else "")
+        out.append(f"| {label}, {window[0]:g}–{window[1]:g} s | {seeds_cell} | "
                    + " | ".join(cells) + " |")
     for pool in dict.fromkeys(p for p, _ in pools):
         cells = []

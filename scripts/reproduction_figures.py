@@ -16,15 +16,16 @@ import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from reproduction_rows import DATA, FIG1C_SERIES, ROW38, ROW63  # noqa: E402
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-DATA = "data/reproduction"
 
 # Fig. 1c / 3a, first row of issue 19: the campaign tables, each one curve (label, file).
 FIG1C_POINTS = [
     ("10 s, 63 mm box", f"{DATA}/fig1c-phi_p0.05-small.points.csv"),
     ("60 s, 63 mm box", f"{DATA}/fig1c-phi_p0.05-long.points.csv"),
 ]
-FIG1C_SERIES = f"{DATA}/fig1c-phi_p0.05-long"
 # Item 3, finite size: the ordered (φ_a = 0.05) and the disordered (0.20) point in up to three
 # boxes each, and the dense end (0.65, 0.80) in two: {φ_a: [(label, series table, polar rods)]};
 # a box not run yet is left out.
@@ -46,39 +47,15 @@ FINITE_SIZE = {
     for phi in (0.65, 0.80)
 }
 
-# The first row in the 38 mm box (18 polar rods), 180 s per run: {φ_a: [series table per seed]};
-# each run's P, Σ and N_m over ROW38_WINDOW, errors from blocks of ROW38_BLOCK seconds. A seed not
-# run yet is left out. The dense end (0.65, 0.80) is fig1c-dense-38mm.toml's, continued to 270 s,
-# and its second seed's, stopped at 209 s; the row is compared over the window every run has.
-ROW38 = {
-    phi: [f"{DATA}/finite-size/fig1c-phi_a{phi}-scale0.15.series.csv"] + [
-        f"{DATA}/finite-size/replicates38/medium.area_fraction={phi.rstrip('0')}.seed{k}.series.csv"
-        for k in (2, 3) if phi in ("0.05", "0.20")]
-    for phi in ("0.05", "0.20", "0.35", "0.50")
-} | {
-    phi: [f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi.rstrip('0')}{seed}.series.csv"
-          for seed in ("", ".seed2")]
-    for phi in ("0.65", "0.80")
-}
+# The first row in the 38 mm box, 180 s per run: ROW38 of reproduction_rows.py. Each run's P, Σ
+# and N_m over ROW38_WINDOW, errors from blocks of ROW38_BLOCK seconds. A seed not run yet is left
+# out.
 ROW38_WINDOW = (60.0, 180.0)
 ROW38_BLOCK = 15.0
-# The same row in the 63 mm box (50 polar rods): {φ_a: [series table per seed]}. A run not yet
-# at ROW38_WINDOW's end is drawn over the part of it that its table covers (row63_window), as an
-# open marker, once that holds two blocks; the dashed line joins the means over each φ_a's seeds
-# that have the whole window, since a mean over 15 s would weigh as much as one over 120 s.
-ROW63 = {
-    0.05: [f"{FIG1C_SERIES}/medium.area_fraction=0.05_extended_to_180_s.series.csv",
-           f"{DATA}/finite-size/replicates63/medium.area_fraction=0.05.seed2.series.csv",
-           f"{DATA}/finite-size/replicates63/medium.area_fraction=0.05.seed3.series.csv"],
-    0.20: [f"{FIG1C_SERIES}/medium.area_fraction=0.2_extended_to_180_s.series.csv",
-           f"{DATA}/finite-size/replicates63/medium.area_fraction=0.2.seed2.series.csv"],
-    0.50: [f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.5.series.csv",
-           f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.5.seed2.series.csv"],
-    0.65: [f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.series.csv",
-           f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.65.seed2.series.csv"],
-    0.80: [f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.8.series.csv",
-           f"{DATA}/fig1c-dense-63mm/medium.area_fraction=0.8.seed2.series.csv"],
-}
+# The same row in the 63 mm box: ROW63 of reproduction_rows.py. A run not yet at ROW38_WINDOW's
+# end is drawn over the part of it that its table covers (row63_window), as an open marker, once
+# that holds two blocks; the dashed line joins the means over each φ_a's seeds that have the
+# whole window, since a mean over 15 s would weigh as much as one over 120 s.
 # The dense end's C(t) is taken over the last 150 s of its 270 s, past the growth of the flocks.
 DENSE38_CT_WINDOW = (120.0, 270.0)
 # SI S3(a) in the same box: the polar rods' C(t) at each φ_a, from `rodsea analyze --observables

@@ -16,6 +16,8 @@
   plus half its last printed digit.
 - Seeds offset by nothing give chi2/dof = 0 and p = 1; seeds offset by 3 errors (chi2/dof >= 4.5)
   give p below 0.01 for the 120 s pool.
+- A seed whose table ends before the window's end (a run still going) is left out and
+  counted; the finished seeds give their own chi2/dof exactly.
 - A missing seed's table is refused with a message naming its point, and nothing is printed.
 
     /usr/bin/python3 tests/test_error_bar_check.py SOURCE_DIR SCRATCH_DIR
@@ -174,6 +176,24 @@ for name, offset, test in (("alike", 0.0, lambda p: p == ("=", 1.0)),
     else:
         failures.append(f"{name}: no 120 s pool printed")
 
+# A seed still running (its table ends at 150 s, before the window's end) is left out and
+# counted: the two finished seeds, offset by 0 and d, give the two-seed chi2/dof exactly.
+root_running = make_root("running", OFFSET)
+label, _, window, spec = error_bar_check.GROUPS[0]
+last = os.path.join(root_running, seeds_of(spec)[-1])
+with open(last) as f:
+    kept = f.readlines()[:2 + 150]
+with open(last, "w") as f:
+    f.writelines(kept)
+result = run(root_running)
+row = next((cells(line) for line in result.stdout.splitlines()
+            if line.startswith(f"| {label},")), None)
+n = len(seeds_of(spec)) - 1
+check(result.returncode == 0 and row is not None
+      and row[1] == f"{n} (+1 not yet at {window[1]:g} s)"
+      and near(printed(row[2])[0], exact_chi2(n, error_of[("120", 15)], OFFSET)),
+      f"a seed still running: rc {result.returncode}, {row}, {result.stderr!r}")
+
 # A missing table.
 os.remove(os.path.join(root, seeds_of(error_bar_check.GROUPS[0][3])[1]))
 result = run(root)
@@ -186,4 +206,4 @@ for message in failures:
 if failures:
     sys.exit(1)
 print(f"error_bar_check.py: the document's {len(lines)} lines, {len(rows)} rows of known "
-      "chi2/dof, the pools, p at the extremes and a missing table")
+      "chi2/dof, the pools, p at the extremes, a seed still running and a missing table")
