@@ -34,7 +34,7 @@ def seeds_1_and_2(folder, phi):
 # is fig1c-mid-63mm-seed3.toml's.
 ROW63 = {
     0.05: [f"{FIG1C_SERIES}/medium.area_fraction=0.05_extended_to_180_s.series.csv"] + [
-        f"{REPLICATES63}/medium.area_fraction=0.05.seed{k}.series.csv" for k in (2, 3)],
+        f"{REPLICATES63}/medium.area_fraction=0.05.seed{k}.series.csv" for k in range(2, 7)],
     0.20: [f"{FIG1C_SERIES}/medium.area_fraction=0.2_extended_to_180_s.series.csv",
            f"{REPLICATES63}/medium.area_fraction=0.2.seed2.series.csv"],
     0.50: seeds_1_and_2("fig1c-mid-63mm", 0.5),
