@@ -5,6 +5,7 @@ quotes for runs too short for the automatic steady window.
     scripts/block_means.py SERIES.csv... --from T0 [--to T1] [--block SECONDS]
     scripts/block_means.py SERIES.csv... --from T0 [--to T1] --blocking [--column NAME]
     scripts/block_means.py SEED1.csv SEED2.csv... --from T0 --to T1 [--block S] --replicates
+    scripts/block_means.py SEED1.csv [SEED2.csv...] --from T0 --to T1 --correlation [--column NAME]
 
 SERIES.csv is a table of scripts/reproduction_series.py (time bins of P_polar, S_medium, Sigma,
 N_m, ...). The window [T0, T1) (s; T1 default: the table's end; bins by their middles) must lie
@@ -31,6 +32,14 @@ range is drawn by Monte Carlo, not taken from the chi2 distribution: each error 
 estimated from a few blocks, which widens the range (with 8 blocks per seed, honest errors give
 a mean of about 1.4; with 4 blocks, about 3). --to is required, so that every seed has the same
 window.
+
+--correlation says how long blocks must be: C(t) of --column, its bins' deviations from the
+mean over every seed's window, multiplied at a lag t and averaged over all pairs in all seeds,
+over their variance; printed at lags doubling from one bin to half the window, with the lag at
+which it first falls below 1/e (interpolated between bins). Because the deviations are taken
+from the common mean, a seed that holds another state than the rest for the whole window counts
+as correlation, as it should: its blocks cannot see it. Blocks much shorter than that lag give
+errors that are too small; independent blocks need several times it. --to is required.
 """
 import argparse
 import sys
@@ -108,6 +117,44 @@ def blocking(table, start, end, column):
     return rows, plateau, quoted
 
 
+def correlation(tables, start, end, column):
+    """Lags (in bins), C at each lag from 0 to half the window, the bin width (s) and the first
+    lag (s) where C < 1/e, or None: see the module's --correlation."""
+    series, widths = [], set()
+    for table in tables:
+        if column not in (table.dtype.names or ()) or column in BOOKKEEPING:
+            raise ValueError(f"no column {column}")
+        first, last = float(np.nanmin(table["t_from"])), float(np.nanmax(table["t_to"]))
+        if start < first - 1e-9 or end > last + 1e-9:
+            raise ValueError(f"the window {start:g}–{end:g} s is not within a table's "
+                             f"{first:g}–{last:g} s")
+        widths.add(round(float(np.median(table["t_to"] - table["t_from"])), 9))
+        middle = 0.5 * (table["t_from"] + table["t_to"])
+        series.append(table[column][(middle >= start) & (middle < end)])
+    if len(widths) != 1:
+        raise ValueError(f"the tables' bins differ ({sorted(widths)} s): lags would not match")
+    width = widths.pop()
+    bins = min(len(x) for x in series)
+    if bins < 8:
+        raise ValueError(f"the window {start:g}–{end:g} s holds fewer than 8 bins")
+    values = np.array([x[:bins] for x in series], dtype=float)
+    if not np.isfinite(values).any():
+        raise ValueError(f"column {column} holds no number in the window")
+    deviation = values - np.nanmean(values)
+    variance = np.nanmean(deviation**2)
+    if variance == 0:
+        raise ValueError(f"column {column} is constant: no correlation to measure")
+    lags = np.arange(bins // 2 + 1)
+    c = np.array([np.nanmean(deviation[:, :bins - lag] * deviation[:, lag:]) for lag in lags])
+    c /= variance
+    below = np.nonzero(c < np.exp(-1))[0]
+    crossing = None
+    if len(below):
+        k = below[0]  # c[k - 1] >= 1/e > c[k], with c[0] = 1
+        crossing = width * (k - 1 + (c[k - 1] - np.exp(-1)) / (c[k - 1] - c[k]))
+    return lags, c, width, crossing
+
+
 def chi2_per_dof(values, errors):
     """sum (x_i - mean)^2 / error_i^2 / (n - 1) along the last axis, the mean unweighted as in
     `rodsea analyze`'s replicate rows."""
@@ -163,17 +210,25 @@ def main():
     parser.add_argument("--replicates", action="store_true",
                         help="read the tables as seeds of one point: their spread against "
                              "their errors, for --column")
+    parser.add_argument("--correlation", action="store_true",
+                        help="read the tables as seeds of one point: the time correlation of "
+                             "--column about their common mean")
     parser.add_argument("--column", default="P_polar",
-                        help="the column --blocking and --replicates read (default P_polar)")
+                        help="the column --blocking, --replicates and --correlation read "
+                             "(default P_polar)")
     args = parser.parse_args()
-    if args.blocking and args.replicates:
-        sys.exit("block_means.py: --blocking and --replicates are two different readings; "
-                 "give one")
-    if args.replicates and args.end is None:
-        sys.exit("block_means.py: --replicates needs --to, so that every seed has the same "
-                 "window")
+    if args.blocking + args.replicates + args.correlation > 1:
+        sys.exit("block_means.py: --blocking, --replicates and --correlation are different "
+                 "readings; give one")
+    for flag, given in (("--replicates", args.replicates), ("--correlation", args.correlation)):
+        if given and args.end is None:
+            sys.exit(f"block_means.py: {flag} needs --to, so that every seed has the same "
+                     "window")
     if args.end is not None and args.end <= args.start:
         sys.exit(f"block_means.py: --to {args.end:g} s must be after --from {args.start:g} s")
+    if args.correlation:
+        print_correlation(args)
+        return
     seeds = []
     for path in args.tables:
         try:
@@ -212,6 +267,25 @@ def print_replicates(seeds, args):
                "the errors are too large" if chi2 < low else "the errors hold")
     print(f"  mean {mean:.4g} ± {spread:.2g} (from the spread); chi2/dof {chi2:.3g} "
           f"(95 % range for honest errors {low:.2g}–{high:.2g}): {verdict}")
+
+
+def print_correlation(args):
+    try:
+        lags, c, width, crossing = correlation([read_table(path) for path in args.tables],
+                                               args.start, args.end, args.column)
+    except ValueError as e:
+        sys.exit(f"block_means.py: {e}")
+    print(f"{args.column}, {args.start:g}–{args.end:g} s, {len(args.tables)} table(s): its "
+          "time correlation about their common mean")
+    lag = 1
+    while lag < len(lags):
+        print(f"  {lag * width:8.4g} s  C = {c[lag]:.3f}")
+        lag *= 2
+    if crossing is None:
+        print(f"  C stays above 1/e to half the window ({lags[-1] * width:g} s): the correlation "
+              "time is longer than that, and no block in this window is independent")
+    else:
+        print(f"  C falls below 1/e at {crossing:.3g} s")
 
 
 def print_blocking(path, start, end, column, rows, plateau, quoted):

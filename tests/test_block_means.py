@@ -23,6 +23,12 @@
   for honest, equal errors: with errors from very many blocks it is the chi2 law's for 2 degrees
   of freedom, -ln(0.975) to -ln(0.025); with 8 blocks per seed its mean is nu/(nu - 2) = 1.4 for
   nu = 7 (the mean of 1/s^2 for an error estimated with nu degrees of freedom).
+- --correlation on 8 AR(1) seeds of 4096 one-second bins with tau = 10 s: C(t) = exp(-t/tau),
+  so C at 1 s is exp(-0.1) = 0.905 and C falls below 1/e at tau. Their estimates scatter by
+  about sqrt((1 + a^2)/(1 - a^2)/32768) = 0.018 in C at tau, where C falls by 0.037 per bin,
+  so the crossing scatters by about half a bin: checked to 15 %, C at 1 s to 0.02 (its own
+  scatter is below 0.005). Two seeds that hold +1 and -1 for the whole window have C = 1 at
+  every lag (the spread between seeds counts as correlation): no crossing.
 - A window with --to before --from, one reaching past the table's ends, a column that is not
   there or holds no number, --replicates with one table or without --to, and --replicates with
   --blocking, are refused with a message and exit status 1, printing nothing on stdout.
@@ -202,6 +208,33 @@ check(abs(low / -math.log(0.975) - 1) < 0.1 and abs(high / -math.log(0.025) - 1)
 honest = block_means.honest_chi2([0.02] * 3, [8] * 3)
 check(abs(honest.mean() / 1.4 - 1) < 0.05, f"honest mean with 8 blocks {honest.mean():.3g}")
 
+rng = np.random.default_rng(23)
+seeds = [write_series(f"ar1-tau10-seed{k}.csv", {"P_polar": ar1(4096, 10.0, rng)})
+         for k in range(8)]
+result = run(*seeds, "--from", "0", "--to", "4096", "--correlation")
+crossing = re.search(r"C falls below 1/e at ([\d.e+-]+) s", result.stdout)
+first = re.search(r"^\s+1 s  C = ([\d.-]+)", result.stdout, re.M)
+check(result.returncode == 0 and crossing and abs(float(crossing.group(1)) / 10 - 1) < 0.15
+      and first and abs(float(first.group(1)) - math.exp(-0.1)) < 0.02,
+      f"AR(1) tau = 10 s correlation: {result.stdout!r} {result.stderr!r}")
+held = [write_series(f"held{k}.csv", {"P_polar": np.full(64, sign)})
+        for k, sign in enumerate((1.0, -1.0))]
+result = run(*held, "--from", "0", "--to", "64", "--correlation")
+check(result.returncode == 0 and "C stays above 1/e to half the window (32 s)" in result.stdout
+      and result.stdout.count("C = 1.000") == 6,
+      f"two seeds in two states: {result.stdout!r} {result.stderr!r}")
+half_bins = write_series("half-bins.csv", {"P_polar": ar1(64, 3.0, rng)}, width=0.5)
+for bad, says in ((["--from", "0", "--correlation"], "--correlation needs --to"),
+                  (["--from", "0", "--to", "64", "--correlation", "--replicates"], "give one"),
+                  (["--from", "0", "--to", "64", "--correlation", "--column", "nope"],
+                   "no column nope")):
+    result = run(held[0], *bad)
+    check(result.returncode == 1 and says in result.stderr and not result.stdout,
+          f"{bad}: exit {result.returncode}, stderr {result.stderr!r}, stdout {result.stdout!r}")
+result = run(held[0], half_bins, "--from", "0", "--to", "32", "--correlation")
+check(result.returncode == 1 and "bins differ" in result.stderr and not result.stdout,
+      f"tables of different bins: {result.returncode}, {result.stderr!r}")
+
 for bad, says in ((["--from", "50", "--to", "40", "--blocking"], "--to 40 s must be after"),
                   (["--from", "0", "--blocking", "--column", "nope"], "no column nope"),
                   (["--from", "0", "--blocking", "--column", "empty"],
@@ -218,5 +251,5 @@ for bad, says in ((["--from", "50", "--to", "40", "--blocking"], "--to 40 s must
 if failures:
     print("\n".join(failures))
     sys.exit(1)
-print("block_means: AR(1) plateau and its rates, ramp, constant, replicates, honest range and "
-      "bad input as expected")
+print("block_means: AR(1) plateau and its rates, ramp, constant, replicates, honest range, "
+      "correlation time and bad input as expected")
