@@ -49,14 +49,21 @@ import numpy as np
 BOOKKEEPING = ("t_from", "t_to", "frames", "steady")
 
 
-def block_means(table, start, end, block):
-    """{column: (mean of the block means, their error, blocks)} over [start, end). A window that
-    reaches past the table is refused: the blocks would average what there is under the window's
-    name, and a run not yet at the window's end would be quoted for a span it has not reached."""
+def require_window(table, start, end):
+    """Refuses a window that reaches past the table: its blocks would average what there is under
+    the window's name, and a run not yet at the window's end would be quoted for a span it has
+    not reached."""
     first, last = float(np.nanmin(table["t_from"])), float(np.nanmax(table["t_to"]))
     if start < first - 1e-9 or end > last + 1e-9:
         raise ValueError(f"the window {start:g}–{end:g} s is not within the table's "
                          f"{first:g}–{last:g} s")
+
+
+def block_means(table, start, end, block):
+    """{column: (mean of the block means, their error, blocks)} over [start, end). A window that
+    reaches past the table is refused: the blocks would average what there is under the window's
+    name, and a run not yet at the window's end would be quoted for a span it has not reached."""
+    require_window(table, start, end)
     time = 0.5 * (table["t_from"] + table["t_to"])
     edges = np.arange(start, end + 1e-9, block)
     if len(edges) < 3:
@@ -124,10 +131,7 @@ def correlation(tables, start, end, column):
     for table in tables:
         if column not in (table.dtype.names or ()) or column in BOOKKEEPING:
             raise ValueError(f"no column {column}")
-        first, last = float(np.nanmin(table["t_from"])), float(np.nanmax(table["t_to"]))
-        if start < first - 1e-9 or end > last + 1e-9:
-            raise ValueError(f"the window {start:g}–{end:g} s is not within a table's "
-                             f"{first:g}–{last:g} s")
+        require_window(table, start, end)
         widths.add(round(float(np.median(table["t_to"] - table["t_from"])), 9))
         middle = 0.5 * (table["t_from"] + table["t_to"])
         series.append(table[column][(middle >= start) & (middle < end)])

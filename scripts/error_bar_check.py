@@ -39,8 +39,9 @@ GROUPS = [
 ] + [
     # 0.50 is not pooled: its seeds hold two states over the whole window (flocks and lone rods
     # heading together in one, apart in the other), which no block error of one seed can see.
-    # 0.05 is pooled although its seeds disagree as much (chi2/dof 18 from three): none holds one
-    # state over the whole window, and the point was pooled before its third seed came.
+    # 0.05 is pooled although its seeds disagree as much (chi2/dof 23 from six): none holds one
+    # state over the whole window (they order and disorder in spells of 40-100 s), and the point
+    # was pooled before its third seed came.
     (f"Fig. 1c, 63 mm, φ_a = {phi:.2f}" + (" (not pooled)" if phi == 0.50 else ""),
      None if phi == 0.50 else "120 s", ROW, seeds)
     for phi, seeds in ROW63.items()

@@ -2,7 +2,8 @@
 seeds: one series table per seed, in one place, so that the figures
 (scripts/reproduction_figures.py) and the error-bar check (scripts/error_bar_check.py) read the
 same seeds. A seed added here is drawn and checked at once. Paths are relative to the
-repository; a table not yet committed is left out by each reader.
+repository. The figures leave out a table not yet committed; the error-bar check refuses it,
+and leaves out (and counts) one whose run has not reached its window's end.
 """
 DATA = "data/reproduction"
 FIG1C_SERIES = f"{DATA}/fig1c-phi_p0.05-long"
