@@ -60,9 +60,8 @@ def require_window(table, start, end):
 
 
 def block_means(table, start, end, block):
-    """{column: (mean of the block means, their error, blocks)} over [start, end). A window that
-    reaches past the table is refused: the blocks would average what there is under the window's
-    name, and a run not yet at the window's end would be quoted for a span it has not reached."""
+    """{column: (mean of the block means, their error, blocks)} over [start, end), which must lie
+    within the table (require_window)."""
     require_window(table, start, end)
     time = 0.5 * (table["t_from"] + table["t_to"])
     edges = np.arange(start, end + 1e-9, block)
