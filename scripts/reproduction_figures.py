@@ -61,8 +61,8 @@ DENSE38_CT_WINDOW = (120.0, 270.0)
 # SI S3(a) in the same box: the polar rods' C(t) at each φ_a, from `rodsea analyze --observables
 # autocorrelation` over each run's window (φ_a, table, window in s). A φ_a not run yet is left
 # out.
-# The 63 mm box's 0.50, 0.65 and 0.80 (two seeds each) beside them, over 60–180 s (their whole runs
-# past the first minute).
+# The 63 mm box's 0.50 (three seeds), 0.65 and 0.80 (two seeds each) beside them, over 60–180 s
+# (their whole runs past the first minute).
 CT = [(0.50, "38 mm", f"{DATA}/fig1c-dense-38mm/medium.area_fraction=0.5.seed2"
        ".orientation_autocorrelation.csv", (30.0, 90.0))] + [
     (phi, "38 mm",
@@ -79,7 +79,10 @@ CT = [(0.50, "38 mm", f"{DATA}/fig1c-dense-38mm/medium.area_fraction=0.5.seed2"
      (60.0, 180.0))] + [
     (phi, "63 mm, seed 2",
      f"{DATA}/fig1c-dense-63mm/medium.area_fraction={phi:g}.seed2.orientation_autocorrelation.csv",
-     (60.0, 180.0)) for phi in (0.65, 0.80)]
+     (60.0, 180.0)) for phi in (0.65, 0.80)] + [
+    (0.50, "63 mm, seed 3",
+     f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.5.seed3.orientation_autocorrelation.csv",
+     (60.0, 180.0))]
 
 # The dense end's whole runs, for the length of their transient: (φ_a, series table, polar rods);
 # DENSE38_BIN-second means of each quantity drawn. A φ_a not run yet is left out.
@@ -162,10 +165,11 @@ ALIGNMENT_ROW_88MM = [
     (0.05, f"{ALIGNMENT}/fig1c-88mm-phi_a0.05-seed1-from60.summary.csv"),
 ]
 # The row's middle and dense end in the 63 mm box (50 polar rods), over 60-180 s as the row's
-# dilute points; each from both its seeds.
+# dilute points; each from all its seeds (three at 0.50, two at 0.65 and 0.80).
 ALIGNMENT_ROW_63MM = [
     (0.50, f"{ALIGNMENT}/fig1c-63mm-phi_a0.50-seed1-from60.summary.csv"),
     (0.50, f"{ALIGNMENT}/fig1c-63mm-phi_a0.50-seed2-from60.summary.csv"),
+    (0.50, f"{ALIGNMENT}/fig1c-63mm-phi_a0.50-seed3-from60.summary.csv"),
     (0.65, f"{ALIGNMENT}/fig1c-63mm-phi_a0.65-seed1-from60.summary.csv"),
     (0.65, f"{ALIGNMENT}/fig1c-63mm-phi_a0.65-seed2-from60.summary.csv"),
     (0.80, f"{ALIGNMENT}/fig1c-63mm-phi_a0.80-seed1-from60.summary.csv"),
@@ -845,7 +849,7 @@ def draw_dense38(plt):
 def draw_ct(plt):
     """SI S3(a): the polar rods' orientation autocorrelation C(t) against the lag, semilog, one
     curve per φ_a of the 38 mm box (solid) and of the 63 mm box (dashed; the second seeds
-    dotted), and the medium's C₂(t)."""
+    dotted, the third dash-dotted), and the medium's C₂(t)."""
     fig, (polar, medium) = plt.subplots(1, 2, figsize=(10.0, 3.6))
     dump = {}
     drawn = 0
@@ -858,7 +862,7 @@ def draw_ct(plt):
             column(t, needed, relative)
         label = f"φ_a = {phi:g}, {box} ({window[0]:g}–{window[1]:g} s)"
         style = {"color": colours.get(phi, "k"),
-                 "ls": "-" if box == "38 mm" else ":" if "seed 2" in box else "--",
+                 "ls": {"38 mm": "-", "63 mm": "--", "63 mm, seed 2": ":"}.get(box, "-."),
                  "label": label}
         keep = t["C_polar"] > 0  # a log axis: the noise floor's negative values are not drawn
         polar.semilogy(t["t"][keep], t["C_polar"][keep], **style)
