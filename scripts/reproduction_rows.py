@@ -10,13 +10,16 @@ FIG1C_SERIES = f"{DATA}/fig1c-phi_p0.05-long"
 REPLICATES63 = f"{DATA}/finite-size/replicates63"
 
 # The 38 mm box (18 polar rods), 180 s per run: {φ_a as written in the file names: [table per
-# seed]}. The dense end (0.65, 0.80) is fig1c-dense-38mm.toml's, continued to 270 s, and its
-# second seed's, stopped at 209 s; the row is compared over the window every run has.
+# seed]}. Seed 1 of 0.05-0.50 is fig1c-phi_a*-scale0.15.toml's; the further seeds are
+# replicates38.toml's (0.05, 0.20) and replicates38-0.35-0.50.toml's. The dense end (0.65, 0.80)
+# is fig1c-dense-38mm.toml's, continued to 270 s, and its second seed's, stopped at 209 s; the
+# row is compared over the window every run has.
+REPLICATES38_SEEDS = {"0.05": (2, 3), "0.20": (2, 3), "0.35": (2,), "0.50": (2,)}
 ROW38 = {
     phi: [f"{DATA}/finite-size/fig1c-phi_a{phi}-scale0.15.series.csv"] + [
         f"{DATA}/finite-size/replicates38/medium.area_fraction={phi.rstrip('0')}.seed{k}.series.csv"
-        for k in (2, 3) if phi in ("0.05", "0.20")]
-    for phi in ("0.05", "0.20", "0.35", "0.50")
+        for k in seeds]
+    for phi, seeds in REPLICATES38_SEEDS.items()
 } | {
     phi: [f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi.rstrip('0')}{seed}.series.csv"
           for seed in ("", ".seed2")]
