@@ -59,12 +59,12 @@ ROW38_BLOCK = 15.0
 # The dense end's C(t) is taken over the last 150 s of its 270 s, past the growth of the flocks.
 DENSE38_CT_WINDOW = (120.0, 270.0)
 # SI S3(a) in the same box: the polar rods' C(t) at each φ_a, from `rodsea analyze --observables
-# autocorrelation` over each run's window (φ_a, table, window in s). A φ_a not run yet is left
-# out.
+# autocorrelation` over each run's window (φ_a, table, window in s): 0.50's seed 2 over 60–180 s,
+# as the 63 mm box's. A φ_a not run yet is left out.
 # The 63 mm box's 0.50 (three seeds), 0.65 and 0.80 (two seeds each) beside them, over 60–180 s
 # (their whole runs past the first minute).
-CT = [(0.50, "38 mm", f"{DATA}/fig1c-dense-38mm/medium.area_fraction=0.5.seed2"
-       ".orientation_autocorrelation.csv", (30.0, 90.0))] + [
+CT = [(0.50, "38 mm", f"{DATA}/finite-size/replicates38/medium.area_fraction=0.5.seed2"
+       ".orientation_autocorrelation.csv", (60.0, 180.0))] + [
     (phi, "38 mm",
      f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi:g}.orientation_autocorrelation.csv",
      DENSE38_CT_WINDOW) for phi in (0.65, 0.80)] + [
