@@ -151,13 +151,15 @@ FIG4A_MORE_STYLE = {"seed 2": ("D", "0.4", True, (0, (3, 1, 1, 1)), 0.0),
 # What carries P (the flocks observable's P_independent and flock_alignment): one
 # `rodsea analyze --observables order,flocks --from T` summary per run, (x, table), its window
 # in its name (from T to the run's end: 180 s for the row's 0.05 and 0.20, 270 s for 0.65 and
-# 0.80, 90 s for Fig. 1f's). Against φ_a, the 38 mm box's runs (0.50: Fig. 1f's seed-2 D_r = 0
-# run); a larger box's, if run, beside them; against D_r, Fig. 1f's seed 2.
+# 0.80, 90 s for Fig. 1f's). Against φ_a, the 38 mm box's runs (0.35 and 0.50: their seed 2, the
+# 0.50 one Fig. 1f's seed-2 D_r = 0 run on to 180 s); a larger box's, if run, beside them; against
+# D_r, Fig. 1f's seed 2.
 ALIGNMENT = f"{DATA}/flock-alignment"
 ALIGNMENT_ROW = [
     (0.05, f"{ALIGNMENT}/fig1c-38mm-phi_a0.05-seed1-from60.summary.csv"),
     (0.20, f"{ALIGNMENT}/fig1c-38mm-phi_a0.20-seed1-from60.summary.csv"),
-    (0.50, f"{ALIGNMENT}/fig1f-38mm-D_r0-seed2-from30.summary.csv"),
+    (0.35, f"{ALIGNMENT}/fig1c-38mm-phi_a0.35-seed2-from60.summary.csv"),
+    (0.50, f"{ALIGNMENT}/fig1c-38mm-phi_a0.50-seed2-from60.summary.csv"),
     (0.65, f"{ALIGNMENT}/fig1c-38mm-phi_a0.65-seed1-from180.summary.csv"),
     (0.80, f"{ALIGNMENT}/fig1c-38mm-phi_a0.80-seed1-from180.summary.csv"),
 ]
