@@ -14,7 +14,7 @@ REPLICATES63 = f"{DATA}/finite-size/replicates63"
 # replicates38.toml's (0.05, 0.20) and replicates38-0.35-0.50.toml's. The dense end (0.65, 0.80)
 # is fig1c-dense-38mm.toml's, continued to 270 s, and its second seed's, stopped at 209 s; the
 # row is compared over the window every run has.
-REPLICATES38_SEEDS = {"0.05": (2, 3), "0.20": (2, 3), "0.35": (2,), "0.50": (2,)}
+REPLICATES38_SEEDS = {"0.05": (2, 3), "0.20": (2, 3), "0.35": (2, 3), "0.50": (2, 3)}
 ROW38 = {
     phi: [f"{DATA}/finite-size/fig1c-phi_a{phi}-scale0.15.series.csv"] + [
         f"{DATA}/finite-size/replicates38/medium.area_fraction={phi.rstrip('0')}.seed{k}.series.csv"

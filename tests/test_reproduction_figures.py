@@ -306,10 +306,12 @@ for label, relative in band_runs:
 print(f"checked {bands_checked} longitudinal band series of fig4a against their tables")
 
 # What carries P: every point of the alignment figure is its run's summary value (mean and
-# error), read here with the csv module; the runs of the 38 mm row and of Fig. 1f are all drawn.
+# error), read here with the csv module; the runs of the 38 mm row (its third seeds too) and of
+# Fig. 1f are all drawn.
 alignment = drawn_figure("alignment")
 alignment_checked = 0
 for box, runs, axis in (("38 mm box", figures.ALIGNMENT_ROW, "φ_a"),
+                        ("38 mm box, seed 3", figures.ALIGNMENT_ROW_SEED3, "φ_a"),
                         ("63 mm box", figures.ALIGNMENT_ROW_63MM, "φ_a"),
                         ("88 mm box", figures.ALIGNMENT_ROW_88MM, "φ_a"),
                         ("38 mm box, seed 2", figures.ALIGNMENT_NOISE, "D_r")):
