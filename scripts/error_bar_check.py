@@ -44,7 +44,7 @@ GROUPS = [
     # was pooled before its third seed came.
     (f"Fig. 1c, 63 mm, φ_a = {phi:.2f}" + (" (not pooled)" if phi == 0.50 else ""),
      None if phi == 0.50 else "120 s", ROW, seeds)
-    for phi, seeds in ROW63.items()
+    for phi, seeds in ROW63.items() if len(seeds) > 1
 ] + [
     ("38 mm, φ_a = 0.05 at dt 2.5 µs, seeds 3–7", "120 s", ROW,
      "dilute-order/medium-mass-seeds/medium.mass=0.2.seed*.series.csv"),
