@@ -11,7 +11,8 @@ REPLICATES63 = f"{DATA}/finite-size/replicates63"
 
 # The 38 mm box (18 polar rods), 180 s per run: {φ_a as written in the file names: [table per
 # seed]}. Seed 1 of 0.05-0.50 is fig1c-phi_a*-scale0.15.toml's; the further seeds are
-# replicates38.toml's (0.05, 0.20) and replicates38-0.35-0.50.toml's. The dense end (0.65, 0.80)
+# replicates38.toml's (0.05, 0.20), replicates38-0.35-0.50.toml's (seed 2) and
+# replicates38-0.35-0.50-seed3.toml's. The dense end (0.65, 0.80)
 # is fig1c-dense-38mm.toml's, continued to 270 s, and its second seed's, stopped at 209 s; the
 # row is compared over the window every run has.
 REPLICATES38_SEEDS = {"0.05": (2, 3), "0.20": (2, 3), "0.35": (2, 3), "0.50": (2, 3)}
@@ -36,8 +37,8 @@ def seeds_1_and_2(folder, phi):
 # The 63 mm box (50 polar rods): {φ_a: [table per seed]}. Seed 1 of 0.05 and 0.20 is the long
 # campaign's, run on to 180 s; their further seeds are replicates63*.toml's. 0.50's third seed
 # is fig1c-mid-63mm-seed3.toml's, and 0.35 (one seed, under way) fig1c-mid-63mm-0.35.toml's. A
-# seed still running (listed here with its checkpoint kept to
-# run it on) is drawn once it has two blocks past 60 s and checked once it reaches 180 s.
+# seed still running (listed here with its checkpoint kept to run it on) is drawn once it has two
+# blocks past 60 s and checked once it reaches 180 s.
 ROW63 = {
     0.05: [f"{FIG1C_SERIES}/medium.area_fraction=0.05_extended_to_180_s.series.csv"] + [
         f"{REPLICATES63}/medium.area_fraction=0.05.seed{k}.series.csv" for k in range(2, 7)],
