@@ -61,13 +61,16 @@ DENSE38_CT_WINDOW = (120.0, 270.0)
 # SI S3(a) in the same box: the polar rods' C(t) at each φ_a, from `rodsea analyze --observables
 # autocorrelation` over each run's window (φ_a, table, window in s): 0.50's seed 2 over 60–180 s,
 # as the 63 mm box's. A φ_a not run yet is left out.
-# The 63 mm box's 0.50 (three seeds), 0.65 and 0.80 (two seeds each) beside them, over 60–180 s
-# (their whole runs past the first minute).
+# The 63 mm box's 0.35 (one seed), 0.50 (three seeds), 0.65 and 0.80 (two seeds each) beside
+# them, over 60–180 s (their whole runs past the first minute).
 CT = [(0.50, "38 mm", f"{DATA}/finite-size/replicates38/medium.area_fraction=0.5.seed2"
        ".orientation_autocorrelation.csv", (60.0, 180.0))] + [
     (phi, "38 mm",
      f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi:g}.orientation_autocorrelation.csv",
      DENSE38_CT_WINDOW) for phi in (0.65, 0.80)] + [
+    (0.35, "63 mm",
+     f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.35.orientation_autocorrelation.csv",
+     (60.0, 180.0)),
     (0.50, "63 mm",
      f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.5.orientation_autocorrelation.csv",
      (60.0, 180.0))] + [
@@ -173,8 +176,9 @@ ALIGNMENT_ROW_88MM = [
     (0.05, f"{ALIGNMENT}/fig1c-88mm-phi_a0.05-seed1-from60.summary.csv"),
 ]
 # The row's middle and dense end in the 63 mm box (50 polar rods), over 60-180 s as the row's
-# dilute points; each from all its seeds (three at 0.50, two at 0.65 and 0.80).
+# dilute points; each from all its seeds (one at 0.35, three at 0.50, two at 0.65 and 0.80).
 ALIGNMENT_ROW_63MM = [
+    (0.35, f"{ALIGNMENT}/fig1c-63mm-phi_a0.35-seed1-from60.summary.csv"),
     (0.50, f"{ALIGNMENT}/fig1c-63mm-phi_a0.50-seed1-from60.summary.csv"),
     (0.50, f"{ALIGNMENT}/fig1c-63mm-phi_a0.50-seed2-from60.summary.csv"),
     (0.50, f"{ALIGNMENT}/fig1c-63mm-phi_a0.50-seed3-from60.summary.csv"),
@@ -858,10 +862,10 @@ def draw_ct(plt):
     """SI S3(a): the polar rods' orientation autocorrelation C(t) against the lag, semilog, one
     curve per φ_a of the 38 mm box (solid) and of the 63 mm box (dashed; the second seeds
     dotted, the third dash-dotted), and the medium's C₂(t)."""
-    fig, (polar, medium) = plt.subplots(1, 2, figsize=(10.0, 3.6))
+    fig, (polar, medium) = plt.subplots(1, 2, figsize=(10.0, 4.6))
     dump = {}
     drawn = 0
-    colours = {0.50: "C0", 0.65: "C1", 0.80: "C2"}
+    colours = {0.35: "C4", 0.50: "C0", 0.65: "C1", 0.80: "C2"}
     for phi, box, relative, window in CT:
         if not os.path.isfile(os.path.join(ROOT, relative)):
             continue  # a φ_a not run yet
@@ -888,13 +892,15 @@ def draw_ct(plt):
     polar.minorticks_off()
     polar.set_xlabel("lag t (s)")
     polar.set_ylabel("C(t), polar rods")
-    polar.legend(loc="best", fontsize=7)
     medium.set_xlim(0, 5)
     medium.set_xlabel("lag t (s)")
     medium.set_ylabel("C₂(t), medium rods")
     fig.suptitle("SI S3(a, b): 38 mm box (18 polar rods, solid) and 63 mm box (50, dashed), "
                  "φ_p = 0.05, σ = 3.125, D_r = 0", fontsize=10)
-    fig.tight_layout()
+    # Below the panels: with eleven curves, inside the polar panel it hid some wherever it went.
+    handles, labels = polar.get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=4, fontsize=7, frameon=False)
+    fig.tight_layout(rect=(0.0, 0.17, 1.0, 1.0))
     return fig, dump
 
 

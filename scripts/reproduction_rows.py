@@ -36,7 +36,7 @@ def seeds_1_and_2(folder, phi):
 
 # The 63 mm box (50 polar rods): {φ_a: [table per seed]}. Seed 1 of 0.05 and 0.20 is the long
 # campaign's, run on to 180 s; their further seeds are replicates63*.toml's. 0.50's third seed
-# is fig1c-mid-63mm-seed3.toml's, and 0.35 (one seed, under way) fig1c-mid-63mm-0.35.toml's. A
+# is fig1c-mid-63mm-seed3.toml's, and 0.35 (one seed) fig1c-mid-63mm-0.35.toml's. A
 # seed still running (listed here with its checkpoint kept to run it on) is drawn once it has two
 # blocks past 60 s and checked once it reaches 180 s.
 ROW63 = {
