@@ -166,11 +166,12 @@ ALIGNMENT_ROW = [
     (0.65, f"{ALIGNMENT}/fig1c-38mm-phi_a0.65-seed1-from180.summary.csv"),
     (0.80, f"{ALIGNMENT}/fig1c-38mm-phi_a0.80-seed1-from180.summary.csv"),
 ]
-# The 38 mm box's third seeds of 0.35 and 0.50 over the same 60-180 s, drawn beside the line:
+# The 38 mm box's third seeds of 0.35, 0.50 and 0.65 over 60-180 s, drawn beside the line:
 # how far one seed's split between flocks and alignment can differ from another's.
 ALIGNMENT_ROW_SEED3 = [
     (0.35, f"{ALIGNMENT}/fig1c-38mm-phi_a0.35-seed3-from60.summary.csv"),
     (0.50, f"{ALIGNMENT}/fig1c-38mm-phi_a0.50-seed3-from60.summary.csv"),
+    (0.65, f"{ALIGNMENT}/fig1c-38mm-phi_a0.65-seed3-from60.summary.csv"),
 ]
 ALIGNMENT_ROW_88MM = [
     (0.05, f"{ALIGNMENT}/fig1c-88mm-phi_a0.05-seed1-from60.summary.csv"),

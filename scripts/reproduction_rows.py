@@ -13,8 +13,9 @@ REPLICATES63 = f"{DATA}/finite-size/replicates63"
 # seed]}. Seed 1 of 0.05-0.50 is fig1c-phi_a*-scale0.15.toml's; the further seeds are
 # replicates38.toml's (0.05, 0.20), replicates38-0.35-0.50.toml's (seed 2) and
 # replicates38-0.35-0.50-seed3.toml's. The dense end (0.65, 0.80)
-# is fig1c-dense-38mm.toml's, continued to 270 s, and its second seed's, stopped at 209 s; the
-# row is compared over the window every run has.
+# is fig1c-dense-38mm.toml's, continued to 270 s, its second seed's, stopped at 209 s, and (at
+# 0.65) its third seed's, fig1c-dense-38mm-seed3.toml's, run to 180 s; the row is compared over
+# the window every run has.
 REPLICATES38_SEEDS = {"0.05": (2, 3), "0.20": (2, 3), "0.35": (2, 3), "0.50": (2, 3)}
 ROW38 = {
     phi: [f"{DATA}/finite-size/fig1c-phi_a{phi}-scale0.15.series.csv"] + [
@@ -23,8 +24,8 @@ ROW38 = {
     for phi, seeds in REPLICATES38_SEEDS.items()
 } | {
     phi: [f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi.rstrip('0')}{seed}.series.csv"
-          for seed in ("", ".seed2")]
-    for phi in ("0.65", "0.80")
+          for seed in seeds]
+    for phi, seeds in (("0.65", ("", ".seed2", ".seed3")), ("0.80", ("", ".seed2")))
 }
 
 
