@@ -898,7 +898,7 @@ def draw_ct(plt):
     medium.set_ylabel("C₂(t), medium rods")
     fig.suptitle("SI S3(a, b): 38 mm box (18 polar rods, solid) and 63 mm box (50, dashed), "
                  "φ_p = 0.05, σ = 3.125, D_r = 0", fontsize=10)
-    # Below the panels: with eleven curves, inside the polar panel it hid some wherever it went.
+    # Below the panels: with a curve per run, inside the polar panel it hid some wherever it went.
     handles, labels = polar.get_legend_handles_labels()
     fig.legend(handles, labels, loc="lower center", ncol=4, fontsize=7, frameon=False)
     fig.tight_layout(rect=(0.0, 0.17, 1.0, 1.0))

@@ -17,6 +17,7 @@ REPLICATES63 = f"{DATA}/finite-size/replicates63"
 # 0.65) its third seed's, fig1c-dense-38mm-seed3.toml's, run to 180 s; the row is compared over
 # the window every run has.
 REPLICATES38_SEEDS = {"0.05": (2, 3), "0.20": (2, 3), "0.35": (2, 3), "0.50": (2, 3)}
+DENSE38_SEEDS = {"0.65": ("", ".seed2", ".seed3"), "0.80": ("", ".seed2")}  # file-name suffixes
 ROW38 = {
     phi: [f"{DATA}/finite-size/fig1c-phi_a{phi}-scale0.15.series.csv"] + [
         f"{DATA}/finite-size/replicates38/medium.area_fraction={phi.rstrip('0')}.seed{k}.series.csv"
@@ -25,7 +26,7 @@ ROW38 = {
 } | {
     phi: [f"{DATA}/fig1c-dense-38mm/medium.area_fraction={phi.rstrip('0')}{seed}.series.csv"
           for seed in seeds]
-    for phi, seeds in (("0.65", ("", ".seed2", ".seed3")), ("0.80", ("", ".seed2")))
+    for phi, seeds in DENSE38_SEEDS.items()
 }
 
 
