@@ -61,7 +61,7 @@ DENSE38_CT_WINDOW = (120.0, 270.0)
 # SI S3(a) in the same box: the polar rods' C(t) at each φ_a, from `rodsea analyze --observables
 # autocorrelation` over each run's window (φ_a, table, window in s): 0.50's seed 2 over 60–180 s,
 # as the 63 mm box's. A φ_a not run yet is left out.
-# The 63 mm box's 0.35 (one seed), 0.50 (three seeds), 0.65 and 0.80 (two seeds each) beside
+# The 63 mm box's 0.35, 0.65 and 0.80 (two seeds each) and 0.50 (three seeds) beside
 # them, over 60–180 s (their whole runs past the first minute).
 CT = [(0.50, "38 mm", f"{DATA}/finite-size/replicates38/medium.area_fraction=0.5.seed2"
        ".orientation_autocorrelation.csv", (60.0, 180.0))] + [
@@ -77,9 +77,9 @@ CT = [(0.50, "38 mm", f"{DATA}/finite-size/replicates38/medium.area_fraction=0.5
     (phi, "63 mm",
      f"{DATA}/fig1c-dense-63mm/medium.area_fraction={phi:g}.orientation_autocorrelation.csv",
      (60.0, 180.0)) for phi in (0.65, 0.80)] + [
-    (0.50, "63 mm, seed 2",
-     f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.5.seed2.orientation_autocorrelation.csv",
-     (60.0, 180.0))] + [
+    (phi, "63 mm, seed 2",
+     f"{DATA}/fig1c-mid-63mm/medium.area_fraction={phi:g}.seed2.orientation_autocorrelation.csv",
+     (60.0, 180.0)) for phi in (0.35, 0.50)] + [
     (phi, "63 mm, seed 2",
      f"{DATA}/fig1c-dense-63mm/medium.area_fraction={phi:g}.seed2.orientation_autocorrelation.csv",
      (60.0, 180.0)) for phi in (0.65, 0.80)] + [
@@ -166,20 +166,22 @@ ALIGNMENT_ROW = [
     (0.65, f"{ALIGNMENT}/fig1c-38mm-phi_a0.65-seed1-from180.summary.csv"),
     (0.80, f"{ALIGNMENT}/fig1c-38mm-phi_a0.80-seed1-from180.summary.csv"),
 ]
-# The 38 mm box's third seeds of 0.35, 0.50 and 0.65 over 60-180 s, drawn beside the line:
+# The 38 mm box's third seeds of 0.35-0.80 over 60-180 s, drawn beside the line:
 # how far one seed's split between flocks and alignment can differ from another's.
 ALIGNMENT_ROW_SEED3 = [
     (0.35, f"{ALIGNMENT}/fig1c-38mm-phi_a0.35-seed3-from60.summary.csv"),
     (0.50, f"{ALIGNMENT}/fig1c-38mm-phi_a0.50-seed3-from60.summary.csv"),
     (0.65, f"{ALIGNMENT}/fig1c-38mm-phi_a0.65-seed3-from60.summary.csv"),
+    (0.80, f"{ALIGNMENT}/fig1c-38mm-phi_a0.80-seed3-from60.summary.csv"),
 ]
 ALIGNMENT_ROW_88MM = [
     (0.05, f"{ALIGNMENT}/fig1c-88mm-phi_a0.05-seed1-from60.summary.csv"),
 ]
 # The row's middle and dense end in the 63 mm box (50 polar rods), over 60-180 s as the row's
-# dilute points; each from all its seeds (one at 0.35, three at 0.50, two at 0.65 and 0.80).
+# dilute points; each from all its seeds (three at 0.50, two at 0.35, 0.65 and 0.80).
 ALIGNMENT_ROW_63MM = [
     (0.35, f"{ALIGNMENT}/fig1c-63mm-phi_a0.35-seed1-from60.summary.csv"),
+    (0.35, f"{ALIGNMENT}/fig1c-63mm-phi_a0.35-seed2-from60.summary.csv"),
     (0.50, f"{ALIGNMENT}/fig1c-63mm-phi_a0.50-seed1-from60.summary.csv"),
     (0.50, f"{ALIGNMENT}/fig1c-63mm-phi_a0.50-seed2-from60.summary.csv"),
     (0.50, f"{ALIGNMENT}/fig1c-63mm-phi_a0.50-seed3-from60.summary.csv"),

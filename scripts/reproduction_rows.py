@@ -13,11 +13,11 @@ REPLICATES63 = f"{DATA}/finite-size/replicates63"
 # seed]}. Seed 1 of 0.05-0.50 is fig1c-phi_a*-scale0.15.toml's; the further seeds are
 # replicates38.toml's (0.05, 0.20), replicates38-0.35-0.50.toml's (seed 2) and
 # replicates38-0.35-0.50-seed3.toml's. The dense end (0.65, 0.80)
-# is fig1c-dense-38mm.toml's, continued to 270 s, its second seed's, stopped at 209 s, and (at
-# 0.65) its third seed's, fig1c-dense-38mm-seed3.toml's, run to 180 s; the row is compared over
-# the window every run has.
+# is fig1c-dense-38mm.toml's, continued to 270 s, its second seed's, stopped at 209 s, and its
+# third seed's, fig1c-dense-38mm-seed3.toml's, run to 180 s; the row is compared over the window
+# every run has.
 REPLICATES38_SEEDS = {"0.05": (2, 3), "0.20": (2, 3), "0.35": (2, 3), "0.50": (2, 3)}
-DENSE38_SEEDS = {"0.65": ("", ".seed2", ".seed3"), "0.80": ("", ".seed2")}  # file-name suffixes
+DENSE38_SEEDS = {"0.65": ("", ".seed2", ".seed3"), "0.80": ("", ".seed2", ".seed3")}  # file-name suffixes
 ROW38 = {
     phi: [f"{DATA}/finite-size/fig1c-phi_a{phi}-scale0.15.series.csv"] + [
         f"{DATA}/finite-size/replicates38/medium.area_fraction={phi.rstrip('0')}.seed{k}.series.csv"
@@ -38,7 +38,8 @@ def seeds_1_and_2(folder, phi):
 
 # The 63 mm box (50 polar rods): {φ_a: [table per seed]}. Seed 1 of 0.05 and 0.20 is the long
 # campaign's, run on to 180 s; their further seeds are replicates63*.toml's. 0.50's third seed
-# is fig1c-mid-63mm-seed3.toml's, and 0.35 (one seed) fig1c-mid-63mm-0.35.toml's. A
+# is fig1c-mid-63mm-seed3.toml's, and 0.35's seeds 1 and 2 fig1c-mid-63mm-0.35.toml's and
+# fig1c-mid-63mm-0.35-seed2.toml's. A
 # seed still running (listed here with its checkpoint kept to run it on) is drawn once it has two
 # blocks past 60 s and checked once it reaches 180 s.
 ROW63 = {
@@ -46,7 +47,7 @@ ROW63 = {
         f"{REPLICATES63}/medium.area_fraction=0.05.seed{k}.series.csv" for k in range(2, 7)],
     0.20: [f"{FIG1C_SERIES}/medium.area_fraction=0.2_extended_to_180_s.series.csv"] + [
         f"{REPLICATES63}/medium.area_fraction=0.2.seed{k}.series.csv" for k in (2, 3)],
-    0.35: [f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.35.series.csv"],
+    0.35: seeds_1_and_2("fig1c-mid-63mm", 0.35),
     0.50: seeds_1_and_2("fig1c-mid-63mm", 0.5) + [
         f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.5.seed3.series.csv"],
     0.65: seeds_1_and_2("fig1c-dense-63mm", 0.65),
