@@ -61,8 +61,8 @@ DENSE38_CT_WINDOW = (120.0, 270.0)
 # SI S3(a) in the same box: the polar rods' C(t) at each φ_a, from `rodsea analyze --observables
 # autocorrelation` over each run's window (φ_a, table, window in s): 0.50's seed 2 over 60–180 s,
 # as the 63 mm box's. A φ_a not run yet is left out.
-# The 63 mm box's 0.35, 0.65 and 0.80 (two seeds each) and 0.50 (three seeds) beside
-# them, over 60–180 s (their whole runs past the first minute).
+# The 38 mm box's third seed of 0.80, and the 63 mm box's 0.35, 0.65 and 0.80 (two seeds each)
+# and 0.50 (three seeds) beside them, over 60–180 s (their whole runs past the first minute).
 CT = [(0.50, "38 mm", f"{DATA}/finite-size/replicates38/medium.area_fraction=0.5.seed2"
        ".orientation_autocorrelation.csv", (60.0, 180.0))] + [
     (phi, "38 mm",
@@ -85,6 +85,9 @@ CT = [(0.50, "38 mm", f"{DATA}/finite-size/replicates38/medium.area_fraction=0.5
      (60.0, 180.0)) for phi in (0.65, 0.80)] + [
     (0.50, "63 mm, seed 3",
      f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.5.seed3.orientation_autocorrelation.csv",
+     (60.0, 180.0)),
+    (0.80, "38 mm, seed 3",
+     f"{DATA}/fig1c-dense-38mm/medium.area_fraction=0.8.seed3.orientation_autocorrelation.csv",
      (60.0, 180.0))]
 
 # The dense end's whole runs, for the length of their transient: (φ_a, series table, polar rods);
@@ -863,8 +866,8 @@ def draw_dense38(plt):
 
 def draw_ct(plt):
     """SI S3(a): the polar rods' orientation autocorrelation C(t) against the lag, semilog, one
-    curve per φ_a of the 38 mm box (solid) and of the 63 mm box (dashed; the second seeds
-    dotted, the third dash-dotted), and the medium's C₂(t)."""
+    curve per φ_a of the 38 mm box (solid; its third seed of 0.80 dash-dotted) and of the 63 mm
+    box (dashed; the second seeds dotted, the third dash-dotted), and the medium's C₂(t)."""
     fig, (polar, medium) = plt.subplots(1, 2, figsize=(10.0, 4.6))
     dump = {}
     drawn = 0
