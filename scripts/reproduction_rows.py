@@ -17,7 +17,8 @@ REPLICATES63 = f"{DATA}/finite-size/replicates63"
 # third seed's, fig1c-dense-38mm-seed3.toml's, run to 180 s; the row is compared over the window
 # every run has.
 REPLICATES38_SEEDS = {"0.05": (2, 3), "0.20": (2, 3), "0.35": (2, 3), "0.50": (2, 3)}
-DENSE38_SEEDS = {"0.65": ("", ".seed2", ".seed3"), "0.80": ("", ".seed2", ".seed3")}  # file-name suffixes
+# The dense end's seeds by file-name suffix.
+DENSE38_SEEDS = {"0.65": ("", ".seed2", ".seed3"), "0.80": ("", ".seed2", ".seed3")}
 ROW38 = {
     phi: [f"{DATA}/finite-size/fig1c-phi_a{phi}-scale0.15.series.csv"] + [
         f"{DATA}/finite-size/replicates38/medium.area_fraction={phi.rstrip('0')}.seed{k}.series.csv"
@@ -39,9 +40,8 @@ def seeds_1_and_2(folder, phi):
 # The 63 mm box (50 polar rods): {φ_a: [table per seed]}. Seed 1 of 0.05 and 0.20 is the long
 # campaign's, run on to 180 s; their further seeds are replicates63*.toml's. 0.50's third seed
 # is fig1c-mid-63mm-seed3.toml's, and 0.35's seeds 1 and 2 fig1c-mid-63mm-0.35.toml's and
-# fig1c-mid-63mm-0.35-seed2.toml's. A
-# seed still running (listed here with its checkpoint kept to run it on) is drawn once it has two
-# blocks past 60 s and checked once it reaches 180 s.
+# fig1c-mid-63mm-0.35-seed2.toml's. A seed still running (listed here with its checkpoint kept to
+# run it on) is drawn once it has two blocks past 60 s and checked once it reaches 180 s.
 ROW63 = {
     0.05: [f"{FIG1C_SERIES}/medium.area_fraction=0.05_extended_to_180_s.series.csv"] + [
         f"{REPLICATES63}/medium.area_fraction=0.05.seed{k}.series.csv" for k in range(2, 7)],
