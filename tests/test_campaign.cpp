@@ -302,7 +302,9 @@ TEST(Campaign, InterruptedAndContinuedWithNothingLostOrRunTwiceThenCollected) {
 
 // Three runs in a 20 mm box; the gamma = 7 one lasts 30 s of simulated time (about a minute of
 // one core here), so that with a one-minute wall time it is stopped by SLURM's signal at least
-// once and must be resubmitted; the other two take about a second each.
+// once and must be resubmitted; the other two take about a second each. On a loaded machine (two
+// simulations beside the test's two tasks on two cores) each task gets half a core, so the run
+// needs up to about eight one-minute slots: the resubmissions and the deadline allow twelve.
 const std::string kSlurmCampaign = R"([campaign]
 name = "cluster"
 
@@ -347,7 +349,7 @@ TEST(CampaignOnSlurm, AWallTimeHitIsResubmittedAndEveryRunFinishesExactlyOnce) {
     // SLURM's 30 s polling delivers 20 to 50 s into a task.
     const ChildResult submitted =
         run_rodsea({"campaign", "submit", file.string(), "--out", dir.string(), "--time", "1",
-                    "--signal-seconds", "40", "--pack", "2", "--resubmit", "6"},
+                    "--signal-seconds", "40", "--pack", "2", "--resubmit", "12"},
                    scratch.path());
     ASSERT_EQ(submitted.exit_code, 0) << submitted.out << submitted.err;
     EXPECT_NE(submitted.out.find("3 runs in 2 array tasks"), std::string::npos) << submitted.out;
@@ -358,7 +360,7 @@ TEST(CampaignOnSlurm, AWallTimeHitIsResubmittedAndEveryRunFinishesExactlyOnce) {
     ASSERT_EQ(twice.exit_code, 0) << twice.out << twice.err;
     EXPECT_NE(twice.out.find("nothing submitted"), std::string::npos) << twice.out;
 
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(8);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(13);
     std::string status;
     while (std::chrono::steady_clock::now() < deadline) {
         std::this_thread::sleep_for(std::chrono::seconds(5));
