@@ -37,8 +37,9 @@ GROUPS = [
     (f"Fig. 1c, 38 mm, φ_a = {phi}", "120 s", ROW, seeds)
     for phi, seeds in ROW38.items() if len(seeds) > 1
 ] + [
-    # 0.50 is not pooled: each of its seeds holds one state over the whole window (flocks and lone
-    # rods heading together, apart, or partly), which no block error of one seed can see.
+    # 0.50 is not pooled: its seeds 1-3 each hold one state over the whole window (flocks and lone
+    # rods heading together, apart, or partly) and seed 4 moves between those states for 50 s at
+    # a time, a spread between states that no block error of one seed can see.
     # 0.05 is pooled although its seeds disagree as much (chi2/dof 23 from six): none holds one
     # state over the whole window (they order and disorder in spells of 40-100 s), and the point
     # was pooled before its third seed came.
