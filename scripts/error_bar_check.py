@@ -38,8 +38,9 @@ GROUPS = [
     for phi, seeds in ROW38.items() if len(seeds) > 1
 ] + [
     # 0.50 is not pooled: its seeds 1-3 each hold one state over the whole window (flocks and lone
-    # rods heading together, apart, or partly) and seed 4 moves between those states for 50 s at
-    # a time, a spread between states that no block error of one seed can see.
+    # rods heading together, apart, or partly), seed 4 moves between those states for 50 s at a
+    # time and seed 5 holds one for 100 s: a spread between states that no block error of one seed
+    # can see.
     # 0.05 is pooled although its seeds disagree as much (chi2/dof 23 from six): none holds one
     # state over the whole window (they order and disorder in spells of 40-100 s), and the point
     # was pooled before its third seed came.

@@ -62,7 +62,7 @@ DENSE38_CT_WINDOW = (120.0, 270.0)
 # autocorrelation` over each run's window (φ_a, table, window in s): 0.50's seed 2 over 60–180 s,
 # as the 63 mm box's. A φ_a not run yet is left out.
 # The 38 mm box's third seed of 0.80, and the 63 mm box's 0.35, 0.65 and 0.80 (two seeds each)
-# and 0.50 (four seeds) beside them, over 60–180 s (their whole runs past the first minute).
+# and 0.50 (five seeds) beside them, over 60–180 s (their whole runs past the first minute).
 CT = [(0.50, "38 mm", f"{DATA}/finite-size/replicates38/medium.area_fraction=0.5.seed2"
        ".orientation_autocorrelation.csv", (60.0, 180.0))] + [
     (phi, "38 mm",
@@ -88,6 +88,9 @@ CT = [(0.50, "38 mm", f"{DATA}/finite-size/replicates38/medium.area_fraction=0.5
      (60.0, 180.0)),
     (0.50, "63 mm, seed 4",
      f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.5.seed4.orientation_autocorrelation.csv",
+     (60.0, 180.0)),
+    (0.50, "63 mm, seed 5",
+     f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.5.seed5.orientation_autocorrelation.csv",
      (60.0, 180.0)),
     (0.80, "38 mm, seed 3",
      f"{DATA}/fig1c-dense-38mm/medium.area_fraction=0.8.seed3.orientation_autocorrelation.csv",
@@ -184,7 +187,7 @@ ALIGNMENT_ROW_88MM = [
     (0.05, f"{ALIGNMENT}/fig1c-88mm-phi_a0.05-seed1-from60.summary.csv"),
 ]
 # The row's middle and dense end in the 63 mm box (50 polar rods), over 60-180 s as the row's
-# dilute points; each from all its seeds (four at 0.50, two at 0.35, 0.65 and 0.80).
+# dilute points; each from all its seeds (five at 0.50, two at 0.35, 0.65 and 0.80).
 ALIGNMENT_ROW_63MM = [
     (0.35, f"{ALIGNMENT}/fig1c-63mm-phi_a0.35-seed1-from60.summary.csv"),
     (0.35, f"{ALIGNMENT}/fig1c-63mm-phi_a0.35-seed2-from60.summary.csv"),
@@ -192,6 +195,7 @@ ALIGNMENT_ROW_63MM = [
     (0.50, f"{ALIGNMENT}/fig1c-63mm-phi_a0.50-seed2-from60.summary.csv"),
     (0.50, f"{ALIGNMENT}/fig1c-63mm-phi_a0.50-seed3-from60.summary.csv"),
     (0.50, f"{ALIGNMENT}/fig1c-63mm-phi_a0.50-seed4-from60.summary.csv"),
+    (0.50, f"{ALIGNMENT}/fig1c-63mm-phi_a0.50-seed5-from60.summary.csv"),
     (0.65, f"{ALIGNMENT}/fig1c-63mm-phi_a0.65-seed1-from60.summary.csv"),
     (0.65, f"{ALIGNMENT}/fig1c-63mm-phi_a0.65-seed2-from60.summary.csv"),
     (0.80, f"{ALIGNMENT}/fig1c-63mm-phi_a0.80-seed1-from60.summary.csv"),
@@ -871,7 +875,8 @@ def draw_dense38(plt):
 def draw_ct(plt):
     """SI S3(a): the polar rods' orientation autocorrelation C(t) against the lag, semilog, one
     curve per φ_a of the 38 mm box (solid; its third seed of 0.80 dash-dotted) and of the 63 mm
-    box (dashed; the second seeds dotted, the third dash-dotted, the fourth dash-dot-dotted),
+    box (dashed; the second seeds dotted, the third dash-dotted, the fourth dash-dot-dotted,
+    the fifth long-dashed),
     and the medium's C₂(t)."""
     fig, (polar, medium) = plt.subplots(1, 2, figsize=(10.0, 4.6))
     dump = {}
@@ -886,7 +891,8 @@ def draw_ct(plt):
         label = f"φ_a = {phi:g}, {box} ({window[0]:g}–{window[1]:g} s)"
         style = {"color": colours.get(phi, "k"),
                  "ls": {"38 mm": "-", "63 mm": "--", "63 mm, seed 2": ":",
-                        "63 mm, seed 4": (0, (4, 1, 1, 1, 1, 1))}.get(box, "-."),
+                        "63 mm, seed 4": (0, (4, 1, 1, 1, 1, 1)),
+                        "63 mm, seed 5": (0, (8, 3))}.get(box, "-."),
                  "label": label}
         keep = t["C_polar"] > 0  # a log axis: the noise floor's negative values are not drawn
         polar.semilogy(t["t"][keep], t["C_polar"][keep], **style)

@@ -38,8 +38,8 @@ def seeds_1_and_2(folder, phi):
 
 
 # The 63 mm box (50 polar rods): {φ_a: [table per seed]}. Seed 1 of 0.05 and 0.20 is the long
-# campaign's, run on to 180 s; their further seeds are replicates63*.toml's. 0.50's third and
-# fourth seeds are fig1c-mid-63mm-seed{3,4}.toml's, and 0.35's seeds 1 and 2
+# campaign's, run on to 180 s; their further seeds are replicates63*.toml's. 0.50's third to
+# fifth seeds are fig1c-mid-63mm-seed{3,4,5}.toml's, and 0.35's seeds 1 and 2
 # fig1c-mid-63mm-0.35.toml's and fig1c-mid-63mm-0.35-seed2.toml's. A seed still running (listed
 # here with its checkpoint kept to run it on) is drawn once it has two blocks past 60 s and
 # checked once it reaches 180 s.
@@ -50,7 +50,7 @@ ROW63 = {
         f"{REPLICATES63}/medium.area_fraction=0.2.seed{k}.series.csv" for k in (2, 3)],
     0.35: seeds_1_and_2("fig1c-mid-63mm", 0.35),
     0.50: seeds_1_and_2("fig1c-mid-63mm", 0.5) + [
-        f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.5.seed{k}.series.csv" for k in (3, 4)],
+        f"{DATA}/fig1c-mid-63mm/medium.area_fraction=0.5.seed{k}.series.csv" for k in (3, 4, 5)],
     0.65: seeds_1_and_2("fig1c-dense-63mm", 0.65),
     0.80: seeds_1_and_2("fig1c-dense-63mm", 0.8),
 }
