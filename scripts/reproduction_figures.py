@@ -18,6 +18,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from reproduction_rows import DATA, FIG1C_SERIES, ROW38, ROW63  # noqa: E402
+from medium_drift import slope_through_origin  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -296,6 +297,12 @@ FIG5B_PROFILES = [
     (f"φ_a = {phi}", f"{DATA}/fig5b-63mm/medium_velocity_phi_a{phi}.csv")
     for phi in ("0.05", "0.20", "0.50")
 ]
+
+# Fig. 5b in the End Matter's reading, v = (α/Γ_f) P: the medium's mean velocity along the polar
+# rods' mean heading against their |P|, as block means of the 63 mm box's runs past their first
+# minute (`scripts/medium_drift.py --blocks-out`), one table per φ_a holding all its seeds.
+FIG5B_DRIFT = [(phi, f"{DATA}/fig5b-63mm/drift-against-order/phi_a{phi}.blocks.csv")
+               for phi in ("0.05", "0.20", "0.35", "0.50", "0.65", "0.80")]
 
 # Fig. 5b at the paper's d = 100 mm: the 214 mm box on an H100, t = 1-11.6 s (fig5b-gpu/). Each
 # time base of the velocities (`medium_velocity.lag`): (label, file infix).
@@ -832,6 +839,46 @@ def draw_fig5b_gpu(plt):
     return fig, dump
 
 
+def draw_fig5b_drift(plt):
+    """The End Matter's reading of Fig. 5b at steady state: the medium's drift along the polar
+    rods' mean heading against their order, one point per block, with the slope through the
+    origin (α/Γ_f) of each φ_a; and α/Γ_f against φ_a with its jackknife error over the blocks."""
+    fig, (scatter, slopes) = plt.subplots(1, 2, figsize=(10.0, 3.8))
+    dump = {}
+    phis, values, errors = [], [], []
+    for (phi, relative), colour in zip(FIG5B_DRIFT, [f"C{i}" for i in range(10)]):
+        if not os.path.isfile(os.path.join(ROOT, relative)):
+            continue  # a φ_a not analysed yet
+        t = read_csv(relative)
+        p = column(t, "P_polar", relative)
+        v = column(t, "v_medium_along_polar", relative)
+        if len(p) < 3:
+            raise TableError(f"{relative}: fewer than three blocks")
+        slope, error = slope_through_origin(p, v)
+        scatter.plot(p, v, "o", ms=3, color=colour, alpha=0.7,
+                     label=f"φ_a = {phi}: {slope:.2f} ± {error:.2f} mm/s")
+        line = np.array([0.0, float(p.max())])
+        scatter.plot(line, slope * line, color=colour, lw=1.0)
+        dump[f"blocks: φ_a = {phi}"] = {"x": p.tolist(), "y": v.tolist()}
+        phis.append(float(phi))
+        values.append(slope)
+        errors.append(error)
+    scatter.axhline(0.0, color="0.6", lw=0.8)
+    scatter.set_xlim(left=0.0)
+    scatter.set_xlabel("polar order |P| (block mean)")
+    scatter.set_ylabel("medium's mean velocity along the\npolar rods' heading (mm/s)")
+    scatter.legend(loc="upper left", fontsize=7, title="α/Γ_f (slope)", title_fontsize=7)
+    slopes.errorbar(phis, values, yerr=errors, marker="o", capsize=3, lw=1.2, color="k")
+    dump["alpha/Gamma_f"] = {"x": phis, "y": values, "err": errors}
+    slopes.set_ylim(bottom=0.0)
+    slopes.set_xlabel("medium area fraction φ_a")
+    slopes.set_ylabel("α/Γ_f = v/P (mm/s)")
+    fig.suptitle("The medium's drift against the polar rods' order, 63 mm box, φ_p = 0.05, "
+                 "D_r = 0, past 60 s", fontsize=10)
+    fig.tight_layout()
+    return fig, dump
+
+
 def bin_means(t, name, relative, width):
     """`name` in means of `width` consecutive 1 s bins of a series table, at the bins' middles
     (a shorter remainder at the end is left out)."""
@@ -1099,7 +1146,7 @@ FIGURES = {"fig1c": draw_fig1c, "fig1c-series": draw_fig1c_series,
            "dilute-choices": draw_dilute_choices, "dilute-seeds": draw_dilute_seeds,
            "fig1f": draw_fig1f,
            "beads": draw_beads, "beads-light": draw_beads_light, "fig4a": draw_fig4a,
-           "fig5b": draw_fig5b, "fig5b-gpu": draw_fig5b_gpu}
+           "fig5b": draw_fig5b, "fig5b-gpu": draw_fig5b_gpu, "fig5b-drift": draw_fig5b_drift}
 
 
 def main(argv):
