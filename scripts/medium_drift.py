@@ -64,8 +64,8 @@ def read_table(path, columns):
 
 
 def read_run(directory, start, end):
-    """The window's frames of one analysis directory: (time, |P|, v_par); end None is the last
-    frame's end."""
+    """The window's frames of one analysis directory: (time, |P|, v_par, the frames' interval in
+    s); end None is the last frame's end."""
     order = read_table(os.path.join(directory, "order_parameters.csv"), ("time", "P_polar"))
     drift = read_table(os.path.join(directory, "drift.csv"), ("time", "v_medium_along_polar"))
     if len(order["time"]) != len(drift["time"]) or \
@@ -73,15 +73,16 @@ def read_run(directory, start, end):
         raise ValueError(f"{directory}: order_parameters.csv and drift.csv do not share their "
                          "frames' times (made by different analyses?)")
     time = order["time"]
-    last = time[-1] + frame_interval(time, directory)
+    interval = frame_interval(time, directory)
+    last = time[-1] + interval
     end = last if end is None else end
     # A run continued from a checkpoint starts its frames one interval after the time it was
     # continued from, which a window may name.
-    if start < time[0] - frame_interval(time, directory) - 1e-9 or end > last + 1e-9:
+    if start < time[0] - interval - 1e-9 or end > last + 1e-9:
         raise ValueError(f"{directory}: the window {start:g}–{end:g} s is not within its frames' "
                          f"{time[0]:g}–{time[-1]:g} s")
     keep = (time >= start - 1e-9) & (time < end - 1e-9)
-    return time[keep], order["P_polar"][keep], drift["v_medium_along_polar"][keep]
+    return time[keep], order["P_polar"][keep], drift["v_medium_along_polar"][keep], interval
 
 
 def frame_interval(time, where):
@@ -104,16 +105,15 @@ def mean_and_error(blocks):
 
 def slope_through_origin(order, velocity):
     """α/Γ_f from block means and its jackknife error (leave one block out)."""
-    slope = float(np.dot(order, velocity) / np.dot(order, order))
+    cross, square = float(np.dot(order, velocity)), float(np.dot(order, order))
+    slope = cross / square
     n = len(order)
-    left_out = np.array([(np.dot(order, velocity) - order[i] * velocity[i]) /
-                         (np.dot(order, order) - order[i] ** 2) for i in range(n)])
+    left_out = (cross - order * velocity) / (square - order ** 2)
     error = math.sqrt((n - 1) / n * float(np.sum((left_out - left_out.mean()) ** 2)))
     return slope, error
 
 
-def describe(name, time, order, velocity, block_s):
-    interval = frame_interval(time, name)
+def describe(name, time, order, velocity, interval, block_s):
     per_block = int(round(block_s / interval))
     if per_block < 1 or len(time) // per_block < 3:
         raise ValueError(f"{name}: fewer than three blocks of {block_s:g} s in the window")
@@ -171,8 +171,8 @@ def main(argv):
             raise ValueError(f"--to ({args.end:g} s) must come after --from ({args.start:g} s)")
         rows = []
         for directory in args.directories:
-            time, order, velocity = read_run(directory, args.start, args.end)
-            rows.append(describe(directory, time, order, velocity, args.block))
+            rows.append(describe(directory, *read_run(directory, args.start, args.end),
+                                 args.block))
     except ValueError as error:
         print(f"medium_drift: {error}", file=sys.stderr)
         return 1
