@@ -206,6 +206,43 @@ TEST_F(ConfigFromCalibrationTable, TheCommittedTableGivesThePapersNoiseAtTheDefa
     }
 }
 
+// Each noise mode has its own map: a table with a noise_mode column answers a run from its own
+// mode's rows, and names the mode when it has none; a table without the column (written before
+// there were two modes) holds add rows.
+TEST_F(ConfigFromCalibrationTable, EachNoiseModeReadsItsOwnRows) {
+    {
+        std::ofstream out(path("modes.csv"));
+        out << "species,gap,dt,noise_mode,epsilon,D_r\n";
+        out << "polar_rod," << exact(kGap) << ',' << exact(kDt) << ",add,0,0\n";
+        out << "polar_rod," << exact(kGap) << ',' << exact(kDt) << ",add,0.02,0.4\n";
+        out << "polar_rod," << exact(kGap) << ',' << exact(kDt) << ",set,1,0.1\n";
+        out << "polar_rod," << exact(kGap) << ',' << exact(kDt) << ",set,3,0.9\n";
+    }
+    EXPECT_NEAR(load("modes.csv", 0.2).engine.noise_epsilon, 0.01, 1e-12);
+    const RunPlan set = load("modes.csv", 0.5, "mode = \"set\"\n");
+    EXPECT_EQ(set.engine.noise_mode, physics::NoiseMode::set);
+    EXPECT_NEAR(set.engine.noise_epsilon, 2.0, 1e-12);  // halfway from 0.1 to 0.9
+    // The stored config keeps the mode beside the ε it resolved to.
+    const RunPlan stored = load_config_string(set.config_toml, "stored");
+    EXPECT_EQ(stored.engine.noise_mode, physics::NoiseMode::set);
+    EXPECT_EQ(stored.engine.noise_epsilon, set.engine.noise_epsilon);
+    try {
+        load("cal.csv", 0.2, "mode = \"set\"\n");  // no noise_mode column: add rows only
+        ADD_FAILURE() << "a table of add rows answered a set run";
+    } catch (const InvalidParameter& e) {
+        const std::string what = e.what();
+        EXPECT_EQ(e.name(), "noise.calibration_table");
+        EXPECT_NE(what.find("noise.mode = set"), std::string::npos) << what;
+        EXPECT_NE(what.find("its noise modes: add"), std::string::npos) << what;
+    }
+    {
+        std::ofstream out(path("bad-mode.csv"));
+        out << "species,gap,dt,noise_mode,epsilon,D_r\n";
+        out << "polar_rod," << exact(kGap) << ',' << exact(kDt) << ",kick,0,0\n";
+    }
+    EXPECT_THROW(load("bad-mode.csv", 0.2), FileError);
+}
+
 TEST_F(ConfigFromCalibrationTable, RefusesWhatTheTableCannotAnswer) {
     const auto message = [&](const std::string& table, double d_r) {
         try {

@@ -75,15 +75,15 @@ std::string calibration_csv(const std::vector<PointResult>& points) {
     out << "# rodsea " << RODSEA_VERSION
         << " calibration: single bodies in the vibrated cell, one row per point; units: gap [mm], "
            "dt [s], epsilon [1/mm], D_r [rad^2/s], speeds [mm/s], duration [s]\n";
-    out << "species,gap,dt,epsilon,D_r,D_r_err,speed,speed_err,transverse_speed,"
+    out << "species,gap,dt,noise_mode,epsilon,D_r,D_r_err,speed,speed_err,transverse_speed,"
            "transverse_speed_err,forward_fraction,speed_p10,speed_p50,speed_p90,copies,duration,"
            "unresolved\n";
     for (const PointResult& p : points) {
         const SingleBodyExperiment& e = p.experiment;
         const SingleBodyResult& r = p.result;
         out << to_string(e.species.kind) << ',' << exact_number(e.drive.gap) << ','
-            << exact_number(e.dt) << ',' << exact_number(e.epsilon) << ','
-            << exact_number(r.rotational_diffusion.mean) << ','
+            << exact_number(e.dt) << ',' << to_string(e.noise_mode) << ','
+            << exact_number(e.epsilon) << ',' << exact_number(r.rotational_diffusion.mean) << ','
             << exact_number(r.rotational_diffusion.error) << ',' << exact_number(r.axial_speed.mean)
             << ',' << exact_number(r.axial_speed.error) << ','
             << exact_number(r.transverse_speed.mean) << ','

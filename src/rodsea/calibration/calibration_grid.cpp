@@ -16,7 +16,9 @@ const char* const kCalibrationKeysHelp =
   species   "polar_rod" (default), "apolar_rod" or "bead", with the paper's shapes and
             coefficients (MODEL.md §2, §3)
   length    mm, apolar rods only: ℓ_a, [1, 20] (default 2.5)
-  epsilon   1/mm, noise amplitudes, each in [0, 0.5] (default [0.0])
+  noise_mode "add" (default: ω_z += ε|u_n|η) or "set" (ω_z = ε|u_n|η), docs/model.md §3
+  epsilon   1/mm, noise amplitudes, each in [0, 0.5] under add, [0, 20] under set
+            (default [0.0])
   gap       mm, plate gaps w, each in (largest sphere diameter, 20] (default [1.40])
   dt        s, time steps, each in [1e-8, 1e-4] (default [1.25e-6])
   copies    independent bodies per point, [2, 10000] (default 8); at most 10^5
@@ -28,8 +30,8 @@ const char* const kCalibrationKeysHelp =
 
 namespace {
 
-const std::vector<std::string> kKeys{"species", "length",   "epsilon", "gap", "dt",
-                                     "copies",  "duration", "warmup",  "seed"};
+const std::vector<std::string> kKeys{"species", "length", "noise_mode", "epsilon", "gap",
+                                     "dt",      "copies", "duration",   "warmup",  "seed"};
 
 std::string key(const std::string& name) {
     return "calibrate." + name;
@@ -74,6 +76,7 @@ std::vector<SingleBodyExperiment> CalibrationGrid::experiments() const {
                 x.drive.gap = w;
                 x.dt = step;
                 x.epsilon = e;
+                x.noise_mode = noise_mode;
                 x.copies = copies;
                 x.duration = duration;
                 x.warmup = warmup;
@@ -106,7 +109,7 @@ CalibrationGrid parse_calibration_grid(std::string_view text, const std::string&
         if (std::find(kKeys.begin(), kKeys.end(), given) != kKeys.end()) continue;
         const auto guess = config::closest_match(given, kKeys);
         throw InvalidParameter(key(given), "an unknown key",
-                               "one of species, length, epsilon, gap, "
+                               "one of species, length, noise_mode, epsilon, gap, "
                                "dt, copies, duration, warmup, seed",
                                guess ? "did you mean '" + *guess + "'?" : "");
     }
@@ -127,7 +130,14 @@ CalibrationGrid parse_calibration_grid(std::string_view text, const std::string&
         throw InvalidParameter(key("species"), "'" + kind + "'",
                                "\"polar_rod\", \"apolar_rod\" or \"bead\"");
     }
-    g.epsilon = number_list(*t, "epsilon", 0.0, kMaxNoiseEpsilon, "1/mm", g.epsilon);
+    const toml::node* mode_node = t->get("noise_mode");
+    if (mode_node && !mode_node->is_string())
+        throw InvalidParameter(key("noise_mode"), "not text", "\"add\" or \"set\"");
+    const std::string mode = mode_node ? *mode_node->value<std::string>() : std::string("add");
+    if (mode != "add" && mode != "set")
+        throw InvalidParameter(key("noise_mode"), "'" + mode + "'", "\"add\" or \"set\"");
+    g.noise_mode = mode == "set" ? physics::NoiseMode::set : physics::NoiseMode::add;
+    g.epsilon = number_list(*t, "epsilon", 0.0, max_noise_epsilon(g.noise_mode), "1/mm", g.epsilon);
     // The largest sphere must fit between the plates (MODEL.md §1), with room to move.
     const double thickest = 2.0 * g.species.shape.max_radius;
     g.gap = number_list(*t, "gap", 0.0, 20.0, "mm", g.gap);

@@ -12,7 +12,8 @@ namespace rodsea {
 
 struct CalibrationGrid {
     Species species;
-    std::vector<double> epsilon{0.0};                // 1/mm
+    std::vector<double> epsilon{0.0};  // 1/mm
+    physics::NoiseMode noise_mode = physics::NoiseMode::add;
     std::vector<double> gap{DriveParameters{}.gap};  // mm
     std::vector<double> dt{EngineParameters{}.dt};   // s
     int copies = 8;

@@ -40,7 +40,8 @@ std::string joined(const std::set<double>& values) {
 
 }  // namespace
 
-CalibrationTable CalibrationTable::read(const std::filesystem::path& path, double gap, double dt) {
+CalibrationTable CalibrationTable::read(const std::filesystem::path& path, double gap, double dt,
+                                        physics::NoiseMode mode) {
     std::istringstream in(read_text_file(path));
     std::string line;
     std::vector<std::string> header;
@@ -48,6 +49,7 @@ CalibrationTable CalibrationTable::read(const std::filesystem::path& path, doubl
     CalibrationTable table;
     table.path_ = path;
     std::set<double> gaps, steps;
+    std::set<std::string> modes;
     long row = 0;
     while (std::getline(in, line)) {
         if (line.empty() || line[0] == '#') continue;
@@ -81,22 +83,33 @@ CalibrationTable CalibrationTable::read(const std::filesystem::path& path, doubl
                                                    "]");
             return v;
         };
+        const std::string row_mode =
+            column.count("noise_mode") ? cells[column["noise_mode"]] : std::string("add");
+        if (row_mode != "add" && row_mode != "set")
+            throw FileError(path.string(), "row " + std::to_string(row) + ", column noise_mode: '" +
+                                               row_mode + "'; allowed: add or set");
         const double g = value("gap", 1e-6, 1e3), s = value("dt", 1e-12, 1.0);
         gaps.insert(g);
         steps.insert(s);
-        if (same(g, gap) && same(s, dt))
+        modes.insert(row_mode);
+        if (same(g, gap) && same(s, dt) && row_mode == to_string(mode))
             table.points_.push_back(
-                {value("epsilon", 0.0, kMaxNoiseEpsilon), value("D_r", 0.0, 1e6)});
+                {value("epsilon", 0.0, max_noise_epsilon(mode)), value("D_r", 0.0, 1e6)});
     }
     std::sort(table.points_.begin(), table.points_.end(),
               [](const Point& a, const Point& b) { return a.epsilon < b.epsilon; });
-    if (table.points_.size() < 2)
-        throw InvalidParameter("noise.calibration_table", path.string(),
-                               "a table with at least two polar_rod rows at gap " +
-                                   format_number(gap) + " mm and dt " + format_number(dt) + " s",
-                               "it has " + std::to_string(table.points_.size()) +
-                                   " (its gaps: " + joined(gaps) + " mm; its dt: " + joined(steps) +
-                                   " s); run rodsea calibrate at this gap and dt");
+    if (table.points_.size() < 2) {
+        std::string mode_list;
+        for (const std::string& m : modes)
+            mode_list += (mode_list.empty() ? "" : ", ") + m;
+        throw InvalidParameter(
+            "noise.calibration_table", path.string(),
+            "a table with at least two polar_rod rows at gap " + format_number(gap) + " mm, dt " +
+                format_number(dt) + " s and noise.mode = " + to_string(mode),
+            "it has " + std::to_string(table.points_.size()) + " (its gaps: " + joined(gaps) +
+                " mm; its dt: " + joined(steps) + " s; its noise modes: " + mode_list +
+                "); run rodsea calibrate at this gap, dt and mode");
+    }
     for (std::size_t i = 1; i < table.points_.size(); ++i) {
         const Point &a = table.points_[i - 1], &b = table.points_[i];
         if (!(b.d_r > a.d_r))
@@ -129,9 +142,8 @@ double CalibrationTable::epsilon_for(double d_r) const {
 }
 
 EpsilonLookup calibration_table_lookup() {
-    return [](const std::filesystem::path& table, double gap, double dt, double d_r) {
-        return CalibrationTable::read(table, gap, dt).epsilon_for(d_r);
-    };
+    return [](const std::filesystem::path& table, double gap, double dt, physics::NoiseMode mode,
+              double d_r) { return CalibrationTable::read(table, gap, dt, mode).epsilon_for(d_r); };
 }
 
 }  // namespace rodsea

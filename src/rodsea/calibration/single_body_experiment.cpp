@@ -70,6 +70,7 @@ Simulation single_body_copy(const SingleBodyExperiment& e, int index,
     params.drive = e.drive;
     params.dt = e.dt;
     params.noise_epsilon = e.epsilon;
+    params.noise_mode = e.noise_mode;
     params.seed = e.seed + 7919ULL * static_cast<std::uint64_t>(index);
     BodyState body;
     body.add(0, {0.5 * kBoxSide, 0.5 * kBoxSide, resting_height(e.species.shape, q, e.drive)}, q,

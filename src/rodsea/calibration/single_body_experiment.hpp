@@ -19,9 +19,10 @@ struct SingleBodyExperiment {
     DriveParameters drive;
     double dt = EngineParameters{}.dt;  // s
     double epsilon = 0.0;               // 1/mm, the noise amplitude (polar rods only)
-    int copies = 8;                     // independent bodies
-    double warmup = 0.2;                // s discarded after the start (coasting, settling)
-    double duration = 2.0;              // s measured per copy
+    physics::NoiseMode noise_mode = physics::NoiseMode::add;
+    int copies = 8;         // independent bodies
+    double warmup = 0.2;    // s discarded after the start (coasting, settling)
+    double duration = 2.0;  // s measured per copy
     std::uint64_t seed = 1;
 };
 

@@ -29,11 +29,13 @@ class ConfigSyntaxError : public std::invalid_argument {
     long column_;
 };
 
-// Turns the paper's D_r (rad²/s) into ε (1/mm) for a run at this gap (mm) and dt (s) through the
-// calibration table at `table`: what noise.rotational_diffusion needs. The config layer reads no
-// calibration tables itself; calibration_table_lookup() (calibration/) is the one that does.
-using EpsilonLookup = std::function<double(const std::filesystem::path& table, double gap,
-                                           double dt, double rotational_diffusion)>;
+// Turns the paper's D_r (rad²/s) into ε (1/mm) for a run at this gap (mm), dt (s) and noise mode
+// through the calibration table at `table`: what noise.rotational_diffusion needs. The config layer
+// reads no calibration tables itself; calibration_table_lookup() (calibration/) is the one that
+// does.
+using EpsilonLookup =
+    std::function<double(const std::filesystem::path& table, double gap, double dt,
+                         physics::NoiseMode mode, double rotational_diffusion)>;
 
 // Throws FileError when the file is missing or unreadable, otherwise as load_config_string.
 RunPlan load_config_file(const std::filesystem::path& path, const EpsilonLookup& epsilon = {});

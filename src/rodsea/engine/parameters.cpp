@@ -17,6 +17,20 @@ const char* to_string(BodyKind kind) {
     return "unknown";
 }
 
+const char* to_string(physics::NoiseMode mode) {
+    return mode == physics::NoiseMode::set ? "set" : "add";
+}
+
+double max_noise_epsilon(physics::NoiseMode mode) {
+    return mode == physics::NoiseMode::set ? kMaxNoiseEpsilonSet : kMaxNoiseEpsilonAdd;
+}
+
+double polar_rod_density() {
+    static const double density =
+        kPolarRodMass / make_shape(polar_rod_spheres({}), kPolarRodMass, "polar_rod").volume;
+    return density;
+}
+
 Species polar_rod_species(double mass) {
     // Table S2: polar rod – plate μ = 0.03, e = 0.10.
     return {"polar_rod",
@@ -56,7 +70,10 @@ void validate(const EngineParameters& p) {
     require_positive("drive.gap", p.drive.gap, "mm");
     require_non_negative("drive.gravity", p.drive.gravity, "mm/s^2");
     require_positive("dt", p.dt, "s");
-    require_non_negative("noise_epsilon", p.noise_epsilon, "1/mm");
+    if (p.noise_mode != physics::NoiseMode::add && p.noise_mode != physics::NoiseMode::set)
+        throw InvalidParameter("noise_mode", std::to_string(static_cast<int>(p.noise_mode)),
+                               "add or set");
+    require_in_closed_range("noise_epsilon", p.noise_epsilon, 0.0, max_noise_epsilon(p.noise_mode));
     require_positive_count("max_sweeps", p.max_sweeps);
     require_non_negative("approach_tolerance", p.approach_tolerance, "mm/s");
     if (p.species.empty()) throw InvalidParameter("species", "none", "at least one species");

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "rodsea/engine/physics/contact.hpp"
+#include "rodsea/engine/physics/plate_noise.hpp"
 #include "rodsea/engine/physics/plates.hpp"
 #include "rodsea/shape/shape.hpp"
 
@@ -38,9 +39,15 @@ struct Species {
 
 // Masses in an arbitrary unit: only ratios matter, and the paper's m_apolar / m_polar = 0.20
 // (MODEL.md CHOICE: kept for every ℓ_a and for beads).
-// The largest noise.epsilon (1/mm): 10× the calibrated range (0.05 /mm gives D_r ≈ 5 rad²/s);
-// at 1 /mm polar rods spin up without bound, at 3 /mm a run blows up within 20 ms.
-inline constexpr double kMaxNoiseEpsilon = 0.5;
+// The largest noise.epsilon (1/mm) per noise mode. add: 10× the calibrated range (0.05 /mm gives
+// D_r ≈ 5 rad²/s); at 1 /mm polar rods spin up without bound, at 3 /mm a run blows up within
+// 20 ms. set: a set spin cannot accumulate, so larger ε stays bounded; the paper's largest D_r
+// needs ε of a few /mm (data/calibration.csv), and this bound leaves room above it.
+inline constexpr double kMaxNoiseEpsilonAdd = 0.5;
+inline constexpr double kMaxNoiseEpsilonSet = 20.0;
+inline constexpr double kMaxNoiseEpsilon = kMaxNoiseEpsilonSet;  // of either mode
+double max_noise_epsilon(physics::NoiseMode mode);
+const char* to_string(physics::NoiseMode mode);
 
 // The most bodies one run may hold, in all species together: 250× the paper's largest system,
 // ~100 GB of memory.
@@ -48,6 +55,12 @@ inline constexpr long long kMaxBodies = 100'000'000;
 
 inline constexpr double kPolarRodMass = 1.0;
 inline constexpr double kMediumMass = 0.2;
+
+// The paper's polar rod's density (mass units per mm³): kPolarRodMass in the volume of its
+// default 13-sphere shape (2.568 mm³). A species given by its density relative to the polar rod
+// (the other reading of the paper's "mass ratio 0.20", MODEL.md §2) weighs that many times this
+// density times its own volume.
+double polar_rod_density();
 
 // The paper's species with MODEL.md's defaults (Table S2 coefficients, mass ratio 0.20).
 Species polar_rod_species(double mass = kPolarRodMass);
@@ -68,7 +81,8 @@ struct EngineParameters {
     ContactCoefficients body_body;
     std::vector<ContactCoefficients> body_body_by_pair;
     double dt = 1.25e-6;         // s (CHOICE by convergence, docs/model.md: 4000 per period), > 0
-    double noise_epsilon = 0.0;  // ε, 1/mm: ω_z += ε |u_n| η at plate hits of polar rods, >= 0
+    double noise_epsilon = 0.0;  // ε, 1/mm: ω_z += (or =) ε |u_n| η at polar rods' plate hits
+    physics::NoiseMode noise_mode = physics::NoiseMode::add;  // MODEL.md §3, docs/model.md
     std::uint64_t seed = 1;
     int max_sweeps = 2000;  // impulse sweeps per step before contacts count as unresolved
     // Relative normal speeds above −tolerance count as not approaching (mm/s). 1 nm/s moves a

@@ -88,6 +88,7 @@ StepContext step_context(const EngineParameters& params, std::uint64_t step) {
     context.approach_tolerance = params.approach_tolerance;
     context.max_sweeps = params.max_sweeps;
     context.noise_epsilon = params.noise_epsilon;
+    context.noise_mode = params.noise_mode;
     context.seed = params.seed;
     return context;
 }

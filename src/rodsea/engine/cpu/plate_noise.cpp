@@ -9,24 +9,22 @@ namespace rodsea::cpu {
 
 namespace {
 
-// The kicks of hits[begin, end), sorted by body and plate, with `begin` and `end` on body
-// boundaries.
+// The noise of hits[begin, end), sorted by body and plate, with `begin` and `end` on body
+// boundaries: each body's fastest approach to each plate, then the one rule of physics/.
 size_t kick(const std::vector<PlateHit>& hits, size_t begin, size_t end, BodyView bodies,
             const SpeciesTable& species, const StepContext& step) {
     size_t kicks = 0;
     for (size_t i = begin; i < end;) {
-        const PlateHit& first = hits[i];
-        double speed = 0.0;
-        size_t j = i;
-        for (; j < end && hits[j].body == first.body && hits[j].plate == first.plate; ++j)
-            speed = std::max(speed, hits[j].approach_speed);
-        if (species.polar[bodies.species[first.body]]) {
-            bodies.spin[first.body].z +=
-                step.noise_epsilon * speed *
-                physics::noise_sign(step.seed, step.step, first.body, first.plate);
-            ++kicks;
+        const std::uint32_t body = hits[i].body;
+        physics::PlateApproach approach;
+        for (; i < end && hits[i].body == body; ++i) {
+            double& fastest = hits[i].plate == kLidPlate ? approach.lid : approach.base;
+            fastest = std::max(fastest, hits[i].approach_speed);
         }
-        i = j;
+        if (species.polar[bodies.species[body]])
+            kicks += static_cast<size_t>(
+                physics::apply_plate_noise(bodies.spin[body].z, step.noise_mode, step.noise_epsilon,
+                                           step.seed, step.step, body, approach));
     }
     return kicks;
 }
@@ -38,7 +36,9 @@ constexpr size_t kHitsWorthThreads = 1024;
 
 size_t apply_plate_noise(std::vector<PlateHit>& hits, BodyView bodies, const SpeciesTable& species,
                          const StepContext& step, int threads) {
-    if (step.noise_epsilon == 0.0 || hits.empty()) return 0;
+    // Under add, ε = 0 changes nothing; under set it still stops the spin of every rod that hit.
+    if ((step.noise_mode == physics::NoiseMode::add && step.noise_epsilon == 0.0) || hits.empty())
+        return 0;
     std::sort(hits.begin(), hits.end(), [](const PlateHit& x, const PlateHit& y) {
         return x.body != y.body ? x.body < y.body : x.plate < y.plate;
     });

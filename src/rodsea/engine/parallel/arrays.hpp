@@ -6,6 +6,7 @@
 
 #include "rodsea/engine/parallel/system_run.hpp"
 #include "rodsea/engine/physics/contact.hpp"
+#include "rodsea/engine/physics/plate_noise.hpp"
 #include "rodsea/engine/physics/rigid_rotation.hpp"
 #include "rodsea/engine/physics/step_context.hpp"
 #include "rodsea/math/hostdevice.hpp"
@@ -50,10 +51,7 @@ struct SpeciesArrays {
 
 // A body's fastest approach to each plate among the impulses it got from it this step (mm/s;
 // 0: none): what a polar body's noise kicks scale with (MODEL.md §3).
-struct PlateHits {
-    double base = 0.0;
-    double lid = 0.0;
-};
+using PlateHits = physics::PlateApproach;
 
 // The end of a list of contacts.
 inline constexpr std::uint32_t kNoContact = 0xffffffffu;

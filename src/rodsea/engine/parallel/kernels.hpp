@@ -148,11 +148,10 @@ struct PlaceSpheres {
 };
 
 // Stage 5, per body: out of the plates by its deepest overlap (plate_projection.hpp says why),
-// and a polar body's spin kick for each plate it hit this step (MODEL.md §3), the lid's before
-// the base's as on the CPU, with the fastest approach that got an impulse (the sweeps kept it).
-// The overlaps are those the contacts were found with: the spheres have not moved since. The
-// noise hashes the body's index in its own system. No kick at ε = 0 (the CPU's rule: a kick of
-// ±0 would still change the sign of a zero spin).
+// and a polar body's noise for the plates it hit this step (MODEL.md §3; the one rule of
+// physics::apply_plate_noise, as on the CPU), with the fastest approach that got an impulse (the
+// sweeps kept it). The overlaps are those the contacts were found with: the spheres have not
+// moved since. The noise hashes the body's index in its own system.
 struct ProjectAndKick {
     BodyArrays bodies;
     SpeciesArrays species;
@@ -178,21 +177,12 @@ struct ProjectAndKick {
             for (std::uint32_t s = first; s < last; ++s)
                 spheres.position[s].z += dz;
         }
-        if (step.noise_epsilon == 0.0 || !species.polar[bodies.species[b]]) return;
-        const PlateHits hit = plate_hit[b];
-        const std::uint32_t own = b - systems.first_body[system];
-        std::uint64_t kicks = 0;
-        if (hit.lid > 0.0) {
-            bodies.spin[b].z += step.noise_epsilon * hit.lid *
-                                physics::noise_sign(step.seed, step.step, own, kLidPlate);
-            ++kicks;
-        }
-        if (hit.base > 0.0) {
-            bodies.spin[b].z += step.noise_epsilon * hit.base *
-                                physics::noise_sign(step.seed, step.step, own, kBasePlate);
-            ++kicks;
-        }
-        if (kicks > 0) atomic_add(&systems.counts[system].noise_kicks, kicks);
+        if (!species.polar[bodies.species[b]]) return;
+        const int kicks = physics::apply_plate_noise(bodies.spin[b].z, step.noise_mode,
+                                                     step.noise_epsilon, step.seed, step.step,
+                                                     b - systems.first_body[system], plate_hit[b]);
+        if (kicks > 0)
+            atomic_add(&systems.counts[system].noise_kicks, static_cast<std::uint64_t>(kicks));
     }
 };
 

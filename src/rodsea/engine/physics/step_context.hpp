@@ -3,6 +3,7 @@
 // b2StepContext), plain numbers only, so that a device takes it by value.
 #include <cstdint>
 
+#include "rodsea/engine/physics/plate_noise.hpp"
 #include "rodsea/engine/physics/plates.hpp"
 #include "rodsea/math/hostdevice.hpp"
 #include "rodsea/math/periodic_box.hpp"
@@ -17,6 +18,7 @@ struct StepContext {
     double approach_tolerance = 0.0;  // mm/s: slower normal approach counts as none
     int max_sweeps = 1;               // impulse sweeps before contacts count as unresolved
     double noise_epsilon = 0.0;       // ε, 1/mm
+    physics::NoiseMode noise_mode = physics::NoiseMode::add;
     std::uint64_t seed = 0;
     std::uint64_t step = 0;  // the number of the step being taken, from 1: the noise hashes it
 
