@@ -288,6 +288,18 @@ std::vector<KeyCase> key_cases() {
          [](const RunPlan& p) { EXPECT_EQ(p.engine.species[0].shape.sphere_count(), 7u); }},
         {"species.mass", species_block("name = \"p\"\nkind = \"polar_rod\"\ncount = 1\nmass = 2.5"),
          [](const RunPlan& p) { EXPECT_EQ(p.engine.species[0].shape.mass, 2.5); }},
+        {"species.density",
+         polar + species_block("name = \"m\"\nkind = \"apolar_rod\"\nlength = 2.5\ncount = "
+                               "5\ndensity = 0.2"),
+         [](const RunPlan& p) {
+             // The volumes of the union of spheres: 0.6364 mm³ (ℓ_a = 2.5 mm, 9 spheres) and
+             // 3.119 mm³ (the polar rod, mass 1), 0.2 × 0.6364 / 3.119 = 0.0408 polar-rod masses;
+             // the frustums the profiles bound hold 0.733 and 3.06 mm³, a bound the unions of
+             // spheres stay below.
+             const Shape& rod = p.engine.species[1].shape;
+             EXPECT_NEAR(rod.mass, 0.2 * rod.volume / p.engine.species[0].shape.volume, 1e-12);
+             EXPECT_NEAR(rod.mass, 0.0408, 0.0002);
+         }},
         {"species.plate_friction",
          species_block("name = \"p\"\nkind = \"bead\"\ncount = 1\nplate_friction = 0.2"),
          [](const RunPlan& p) { EXPECT_EQ(p.engine.species[0].plate.friction, 0.2); }},
@@ -324,6 +336,11 @@ std::vector<KeyCase> key_cases() {
              EXPECT_EQ(p.engine.pair_coefficients(0, 0).restitution, 0.9);
              EXPECT_EQ(p.engine.pair_coefficients(0, 1).restitution, 0.4);
              EXPECT_EQ(p.engine.pair_coefficients(1, 1).restitution, 0.4);
+         }},
+        {"noise.mode", "[noise]\nmode = \"set\"\nepsilon = 3.5",
+         [](const RunPlan& p) {
+             EXPECT_EQ(p.engine.noise_mode, physics::NoiseMode::set);
+             EXPECT_EQ(p.engine.noise_epsilon, 3.5);  // beyond the add rule's 0.5 /mm
          }},
         {"noise.epsilon", "[noise]\nepsilon = 0.25",
          [](const RunPlan& p) { EXPECT_EQ(p.engine.noise_epsilon, 0.25); }},
@@ -608,6 +625,13 @@ TEST(ConfigErrors, CrossKeyChecksNameTheKey) {
     expect_invalid(
         "[box]\nside = 8\n" + species_block("kind = \"apolar_rod\"\nlength = 4.5\ncount = 1"),
         "box.side", {"8 mm", ">= 9 mm", "apolar_rod 'apolar_rod'"});
+    // Each noise mode has its own ε range: an added kick accumulates, a set one cannot.
+    expect_invalid("[noise]\nepsilon = 3.5", "noise.epsilon",
+                   {"3.5 1/mm", "[0, 0.5] 1/mm", "noise.mode = \"add\""});
+    expect_invalid("[noise]\nmode = \"set\"\nepsilon = 25", "noise.epsilon", {"25 1/mm"});
+    // A mass and a density are two answers to one question.
+    expect_invalid(species_block("kind = \"bead\"\ncount = 1\nmass = 0.1\ndensity = 0.2"),
+                   "species[0].density", {"alternatives"});
     // The engine's own validation comes through: the paper's 1.2 mm gap cannot hold the polar
     // rod's 1.375 mm thick end.
     expect_invalid("[drive]\ngap = 1.2", "drive.gap", {"1.2 mm", "> 1.375 mm", "polar_rod"});

@@ -86,7 +86,7 @@ double epsilon_from_calibration(ConfigValues& c, const EngineParameters& engine,
     if (table.is_relative() && std::filesystem::is_regular_file(c.source))
         table = config_dir / table;  // relative to the config file, like a path in a Makefile
     const double d_r = noise.real("rotational_diffusion");
-    const double epsilon = lookup(table, engine.drive.gap, engine.dt, d_r);
+    const double epsilon = lookup(table, engine.drive.gap, engine.dt, engine.noise_mode, d_r);
     const long line = noise.entries.at("rotational_diffusion").line;
     noise.entries.erase("rotational_diffusion");
     noise.entries.erase("calibration_table");
@@ -277,6 +277,8 @@ void build_time_and_output(ConfigValues& c, RunPlan& plan) {
 }
 
 void build_the_rest(ConfigValues& c, RunPlan& plan, const EpsilonLookup& epsilon) {
+    plan.engine.noise_mode =
+        c.one("noise").text("mode") == "set" ? physics::NoiseMode::set : physics::NoiseMode::add;
     plan.engine.noise_epsilon = c.one("noise").has("rotational_diffusion")
                                     ? epsilon_from_calibration(c, plan.engine, epsilon)
                                     : c.one("noise").real("epsilon");
@@ -285,9 +287,10 @@ void build_the_rest(ConfigValues& c, RunPlan& plan, const EpsilonLookup& epsilon
     plan.control.threads = static_cast<int>(run.integer("threads"));
     parse_backend(run.text("backend"), plan.control.backend);  // one of the key's options
     const TableValues& initial = c.one("initial");
-    plan.builder.orientation = initial.text("orientation") == "aligned"
-                                   ? InitialOrientation::aligned
-                                   : InitialOrientation::isotropic;
+    const std::string& orientation = initial.text("orientation");
+    plan.builder.orientation = orientation == "aligned"         ? InitialOrientation::aligned
+                               : orientation == "polar_aligned" ? InitialOrientation::polar_aligned
+                                                                : InitialOrientation::isotropic;
     plan.builder.randomisation_sweeps = static_cast<int>(initial.integer("randomisation_sweeps"));
     plan.builder.domain_size = initial.real("domain_size");
     const TableValues& engine = c.one("engine");
@@ -298,6 +301,18 @@ void build_the_rest(ConfigValues& c, RunPlan& plan, const EpsilonLookup& epsilon
 // Checks across keys, each naming the key the user wrote.
 void check_across_keys(const ConfigValues& c, const RunPlan& plan) {
     const EngineParameters& e = plan.engine;
+    // Each noise mode has its own ε range: an added kick accumulates, a set one cannot.
+    if (const TableValues& noise = c.one("noise");
+        noise.has("epsilon") && e.noise_epsilon > max_noise_epsilon(e.noise_mode))
+        throw InvalidParameter(
+            noise.key_path("epsilon"), shown(noise, "noise", "epsilon"),
+            "[0, " + format_number(max_noise_epsilon(e.noise_mode)) + "] 1/mm",
+            join_why(std::string("the range of noise.mode = \"") + to_string(e.noise_mode) + "\"" +
+                         (e.noise_mode == physics::NoiseMode::add
+                              ? ": added kicks accumulate, and above it the rods spin up "
+                                "without bound"
+                              : ""),
+                     noise.where("epsilon", c.source)));
     // The box first: a box too small for its bodies also rounds every count to 0.
     const Species* longest = &e.species.front();
     for (const Species& s : e.species)

@@ -115,13 +115,26 @@ std::vector<KeySpec> make_keys() {
     k.push_back(real("species", "mass")
                     .unit("mass units")
                     .range(left_open(0.0, 1e6))
+                    .alternative("density")
                     .choice("the paper's m_apolar/m_polar = 0.20, kept for every ℓ_a and for "
-                            "beads; MODEL.md §2",
+                            "beads; MODEL.md §2 (under test against density = 0.2)",
                             kApolarRod | kBead)
-                    .doc("Mass in arbitrary units (only ratios matter); the inertia tensor "
-                         "scales with it. A bead's mass decides whether dense beads cage the "
-                         "polar rods (0.2 cages them at φ_a = 0.70; 0.033, aluminium on brass, "
-                         "does not): docs/reproduction.md, SI S5."));
+                    .doc("Mass in arbitrary units, the polar rod's being 1 (only ratios "
+                         "matter); the inertia tensor scales with it. A bead's mass decides "
+                         "whether dense beads cage the polar rods (0.2 cages them at φ_a = "
+                         "0.70; 0.033, aluminium on brass, does not): docs/reproduction.md, "
+                         "SI S5."));
+    k.push_back(real("species", "density")
+                    .unit("× the polar rod's density")
+                    .def_text("(from mass)")
+                    .example(0.2)
+                    .range(left_open(0.0, 1e6))
+                    .alternative("mass")
+                    .doc("The body's density relative to the paper's polar rod's (mass 1 in its "
+                         "3.119 mm³, the union of its 13 spheres); its mass follows from its own "
+                         "volume: 0.2 gives the ℓ_a = 2.5 mm rod 0.041 and a bead 0.017 of a "
+                         "polar rod's mass (the paper's \"mass ratio 0.20\" read as a density "
+                         "ratio). `rodsea info` prints both."));
     k.push_back(
         real("species", "plate_friction")
             .range(closed(0.0, 10.0))
@@ -159,17 +172,31 @@ std::vector<KeySpec> make_keys() {
                     .range(closed(0.0, 1.0))
                     .doc("e for this pair, both orders."));
     // [noise]
+    k.push_back(
+        Key("noise", "mode", ValueType::option)
+            .def(std::string(to_string(engine.noise_mode)))
+            .options({"add", "set"})
+            .choice("under test by a screening study: the SI imposes ω_z = ε v_rel η at each plate "
+                    "collision (set); MODEL.md first read it as a kick added to ω_z "
+                    "(add); docs/model.md §3")
+            .doc("How a polar rod's plate collision meets its spin about z. add: ω_z += "
+                 "ε |u_n| η; set: ω_z = ε |u_n| η, so at ε = 0 every plate collision "
+                 "stops the rod turning. Each mode has its own ε range and calibration "
+                 "rows."));
     k.push_back(real("noise", "epsilon")
                     .unit("1/mm")
                     .def(engine.noise_epsilon)
                     .range(closed(0.0, kMaxNoiseEpsilon))
                     .alternative("rotational_diffusion")
-                    .choice("the kick is added to ω_z (not set), scaled by the pre-collision "
-                            "normal speed |u_n|; MODEL.md §3")
-                    .doc("ε: at each collision of a polar rod with a plate, ω_z += ε |u_n| η, "
-                         "η = ±1. D_r grows as ε²: 0.05 /mm gives ~5 rad²/s "
-                         "(data/calibration.csv); above 0.5 /mm the rods spin up without "
-                         "bound."));
+                    .choice("the kick is scaled by the pre-collision normal speed |u_n|; "
+                            "MODEL.md §3")
+                    .doc("ε: at each collision of a polar rod with a plate, ε |u_n| η, η = ±1, "
+                         "joins ω_z (noise.mode = add) or becomes it (set). add: at most " +
+                         format_number(kMaxNoiseEpsilonAdd) +
+                         " /mm (D_r grows as ε², 0.05 /mm gives ~5 rad²/s; above 0.5 /mm the "
+                         "rods spin up without bound); set: at most " +
+                         format_number(kMaxNoiseEpsilonSet) +
+                         " /mm (data/calibration.csv has both modes' D_r)."));
     k.push_back(real("noise", "rotational_diffusion")
                     .unit("rad²/s")
                     .def_text("none")
@@ -267,8 +294,11 @@ std::vector<KeySpec> make_keys() {
         Key("initial", "orientation", ValueType::option)
             .def(std::string(builder.orientation == InitialOrientation::isotropic ? "isotropic"
                                                                                   : "aligned"))
-            .options({"isotropic", "aligned"})
-            .doc("isotropic: random in-plane angles; aligned: every rod along +x."));
+            .options({"isotropic", "aligned", "polar_aligned"})
+            .doc("isotropic: random in-plane angles; aligned: every rod along x (polar rods +x; "
+                 "a lattice above area fraction 0.505, which aligns a dense medium too); "
+                 "polar_aligned: the polar rods along +x in an isotropic medium, at any "
+                 "density (does an ordered state survive?)."));
     k.push_back(integer("initial", "randomisation_sweeps")
                     .def(std::int64_t{builder.randomisation_sweeps})
                     .integers(0, 100'000)

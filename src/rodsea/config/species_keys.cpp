@@ -80,6 +80,7 @@ void complete_species(TableValues& t, const std::string& source) {
     const double length = kind == BodyKind::apolar_rod ? apolar_length(t) : 0.0;
     for (const KeySpec* spec : keys_of("species")) {
         if (t.has(spec->name) || !(spec->kinds & kind_bit(kind))) continue;
+        if (!spec->alternative.empty() && t.has(spec->alternative)) continue;
         if (auto v = species_default(spec->name, kind, length)) t.entries[spec->name] = {*v, 0};
     }
 
@@ -106,7 +107,6 @@ void complete_species(TableValues& t, const std::string& source) {
 Species make_species(const TableValues& t) {
     const BodyKind kind = parse_kind(t.text("kind"));
     const int spheres = static_cast<int>(t.integer("spheres"));
-    const double mass = t.real("mass");
     const std::string& name = t.text("name");
     SphereList chain;
     switch (kind) {
@@ -126,6 +126,10 @@ Species make_species(const TableValues& t) {
             chain = bead_spheres({});
             break;
     }
+    // A density relative to the polar rod's gives the mass through this body's own volume.
+    const double mass = t.has("density") ? t.real("density") * polar_rod_density() *
+                                               make_shape(chain, kPolarRodMass, name).volume
+                                         : t.real("mass");
     return {name,
             kind,
             make_shape(chain, mass, name),

@@ -161,8 +161,10 @@ void describe_plan(const RunPlan& plan, std::ostream& out, bool brief) {
         << " um, peak plate speed A*Omega = " << fixed(d.amplitude() * d.angular_frequency, 2)
         << " mm/s\n";
     out << "         gap w = " << d.gap << " mm, g = " << d.gravity << " mm/s^2\n";
-    out << "species  name          kind         spheres  area/mm^2   mass     count    phi"
-           "      plate mu/e\n";
+    // Mass in the polar rod's mass unit, density relative to the paper's polar rod's: the two
+    // readings of the paper's "mass ratio 0.20" side by side.
+    out << "species  name          kind         spheres  area/mm^2  vol/mm^3    mass  density"
+           "     count    phi      plate mu/e\n";
     const ResourceEstimate e = estimate_resources(plan);
     double phi_total = 0.0;
     for (size_t s = 0; s < p.species.size(); ++s) {
@@ -170,9 +172,11 @@ void describe_plan(const RunPlan& plan, std::ostream& out, bool brief) {
         const double phi = static_cast<double>(plan.counts[s]) * sp.shape.projected_area / area;
         phi_total += phi;
         char line[256];
-        std::snprintf(line, sizeof line, "         %-13s %-12s %7zu  %9.5f  %6.3f  %8lld  %6.4f",
+        std::snprintf(line, sizeof line,
+                      "         %-13s %-12s %7zu  %9.5f  %8.4f  %6.4f  %7.4f  %8lld  %6.4f",
                       sp.name.c_str(), to_string(sp.kind), sp.shape.sphere_count(),
-                      sp.shape.projected_area, sp.shape.mass, plan.counts[s], phi);
+                      sp.shape.projected_area, sp.shape.volume, sp.shape.mass,
+                      sp.shape.mass / sp.shape.volume / polar_rod_density(), plan.counts[s], phi);
         out << line;
         if (plan.requested_area_fraction[s] >= 0)
             out << " (asked " << plan.requested_area_fraction[s] << ")";
@@ -182,8 +186,10 @@ void describe_plan(const RunPlan& plan, std::ostream& out, bool brief) {
         << fixed(phi_total, 4) << "\n";
     out << "contacts body-body mu = " << p.body_body.friction << ", e = " << p.body_body.restitution
         << (p.body_body_by_pair.empty() ? " (all pairs)" : " (with per-pair overrides)") << "\n";
-    out << "noise    epsilon = " << p.noise_epsilon
-        << " 1/mm (spin kick of polar rods at plate hits)\n";
+    out << "noise    epsilon = " << p.noise_epsilon << " 1/mm, mode " << to_string(p.noise_mode)
+        << (p.noise_mode == physics::NoiseMode::set
+                ? " (each plate hit of a polar rod sets omega_z = epsilon |u_n| eta)\n"
+                : " (each plate hit of a polar rod adds epsilon |u_n| eta to omega_z)\n");
     const double duration = static_cast<double>(plan.total_steps()) * p.dt;
     const double period = 2.0 * std::numbers::pi / d.angular_frequency;
     out << "time     dt = " << p.dt * 1e6 << " us, " << plan.total_steps()
