@@ -182,6 +182,29 @@ TEST(BuilderAligned, PolarRodsAllPointAlongPlusX) {
     }
 }
 
+TEST(BuilderPolarAligned, PolarRodsAlongPlusXInAnIsotropicMediumAtEveryDensity) {
+    // Insertion, compression and the mosaic (φ_a = 0.80 in the 38 mm box, the screening study's
+    // dense point): P = 1 exactly for the polar rods, and a medium at the chance level of its
+    // independent directions, S < 3/√N.
+    for (const double phi : {0.10, 0.70, 0.80}) {
+        const Request r = mixture(0.05, 2.5, phi, 37.8);
+        BuilderOptions options;
+        options.orientation = InitialOrientation::polar_aligned;
+        BuildReport report;
+        const BodyState bodies = build_initial_state(r.params, r.counts, options, 4, &report);
+        std::printf("[ measured ] phi %.2f: %s; medium S %.3f (N %lld)\n", phi,
+                    describe_start(report).c_str(), orientational_order(bodies, 1, 2), r.counts[1]);
+        EXPECT_EQ(report.start, phi < 0.5    ? StartKind::insertion
+                                : phi < 0.75 ? StartKind::compression
+                                             : StartKind::mosaic);
+        EXPECT_EQ(orientational_order(bodies, 0, 1), 1.0) << "phi " << phi;
+        EXPECT_LT(orientational_order(bodies, 1, 2),
+                  3.0 / std::sqrt(static_cast<double>(r.counts[1])))
+            << "phi " << phi;
+        expect_valid_start(r, bodies, phi > 0.5);  // dilute: no pairs across the seam
+    }
+}
+
 TEST(BuilderDeterminism, SameSeedSameStateOtherSeedOther) {
     // Each start: insertion, compression, mosaic (the lattice: BuilderAligned is exact).
     const std::vector<std::pair<double, StartKind>> cases{

@@ -3,7 +3,11 @@
 
 namespace rodsea {
 
-enum class InitialOrientation { isotropic, aligned };
+// isotropic: every body at a random angle. aligned: every rod along ±x, polar rods +x (a lattice
+// above random insertion's limit, so a dense medium starts aligned too). polar_aligned: the polar
+// rods along +x in an isotropic medium, at every density: an ordered state's survival, tested
+// without waiting for it to form.
+enum class InitialOrientation { isotropic, aligned, polar_aligned };
 
 struct BuilderOptions {
     InitialOrientation orientation = InitialOrientation::isotropic;

@@ -54,7 +54,7 @@ CompressionResult compress_from_random(const std::vector<Species>& species,
     OverlapRelaxationOptions relax;
     relax.clearance = options.clearance;
     relax.max_iterations = options.max_iterations;
-    relax.rotate = orientation == InitialOrientation::isotropic;
+    relax.rotate = orientation != InitialOrientation::aligned;  // polar_aligned: feet frozen
     result.relaxation = relax_overlaps(bodies, feet, box, relax);
     result.complete = result.relaxation.converged;
     return result;

@@ -150,7 +150,7 @@ bool start_randomly(const EngineParameters& params, const std::vector<Footprint>
         kind = StartKind::insertion;
         if (inserted.complete) return true;
     }
-    if (options.orientation != InitialOrientation::isotropic) return false;
+    if (options.orientation == InitialOrientation::aligned) return false;
 
     SplitMix64 compression_rng(splitmix64(seed ^ kCompressionStream));
     CompressionOptions compression;
@@ -172,6 +172,7 @@ bool start_randomly(const EngineParameters& params, const std::vector<Footprint>
     mosaic.clearance = kMonteCarloClearance;
     mosaic.lattice_clearance = kLatticeClearance;
     mosaic.max_iterations = kRelaxationIterations;
+    mosaic.guest_orientation = options.orientation;
     const double largest = std::max(params.box.lx, params.box.ly);
     mosaic.domain_size = std::min(options.domain_size, largest);
     for (;;) {
@@ -239,11 +240,18 @@ BodyState build_initial_state(const EngineParameters& params, const std::vector<
     }
     validate(params);
 
+    // A polar-aligned start keeps its polar rods' angles through every relaxation and sweep: to
+    // those stages, a polar rod does not turn.
+    std::vector<Footprint> turning = feet;
+    if (options.orientation == InitialOrientation::polar_aligned)
+        for (size_t s = 0; s < params.species.size(); ++s)
+            if (params.species[s].kind == BodyKind::polar_rod) turning[s].rotatable = false;
+
     // 1. Start: the first of insertion, compression, mosaic and lattice that succeeds.
     PlanarBodies planar;
     StartKind kind = StartKind::lattice;
     BuildReport attempts;
-    if (start_randomly(params, feet, counts, options, seed, planar, kind, attempts) == false) {
+    if (start_randomly(params, turning, counts, options, seed, planar, kind, attempts) == false) {
         if (!plan.fits)
             throw InvalidParameter("species", counts_text(params, counts),
                                    "counts that random insertion or a lattice can place",
@@ -257,8 +265,8 @@ BodyState build_initial_state(const EngineParameters& params, const std::vector<
     MonteCarloOptions mc;
     mc.clearance = kMonteCarloClearance;
     mc.sweeps = options.randomisation_sweeps;
-    mc.rotate = options.orientation == InitialOrientation::isotropic;
-    const MonteCarloResult randomised = randomise(planar, feet, params.box, mc, mc_rng);
+    mc.rotate = options.orientation != InitialOrientation::aligned;
+    const MonteCarloResult randomised = randomise(planar, turning, params.box, mc, mc_rng);
 
     // 3. Onto the base, and check the result independently.
     SplitMix64 velocity_rng(splitmix64(seed ^ kVelocityStream));
@@ -321,9 +329,10 @@ std::string describe_start(const BuildReport& r) {
             break;
         case StartKind::mosaic:
             text = "mosaic: random compression jams; the medium ";
-            text += r.domains == 1 ? std::string("as one domain at a random angle")
-                                   : "in " + std::to_string(r.domains) + " domains of " +
-                                         format_number(r.domain_size) + " mm at random directions";
+            text += r.domains == 1
+                        ? std::string("as one domain at a random angle")
+                        : "in " + std::to_string(r.domains) + " domains of " +
+                              format_number(r.domain_size) + " mm at evenly spaced directions";
             text += ", the other species at random (" + std::to_string(r.relaxation_iterations) +
                     " relaxation iterations)";
             break;
@@ -346,7 +355,11 @@ std::string planned_start(const EngineParameters& params, const std::vector<long
     return "compression: shrunk bodies inserted at random, grown back, overlaps relaxed; if the "
            "random packing jams (above area fraction ~0.75-0.84, docs/builder.md), a mosaic of " +
            format_number(options.domain_size) +
-           " mm domains of the medium at random directions with the other species at random";
+           " mm domains of the medium at evenly spaced directions with the other species at "
+           "random" +
+           (options.orientation == InitialOrientation::polar_aligned
+                ? std::string("; the polar rods along +x")
+                : std::string());
 }
 
 }  // namespace rodsea

@@ -234,8 +234,8 @@ PlanarBodies place_lattice(const LatticePlan& plan, const std::vector<Species>& 
             if (!f.rotatable) {
                 angle = aligned ? 0.0 : rng.uniform(-std::numbers::pi, std::numbers::pi);
             } else {
-                const bool keep_plus_x =
-                    aligned && species[row.species].kind == BodyKind::polar_rod;
+                const bool keep_plus_x = orientation != InitialOrientation::isotropic &&
+                                         species[row.species].kind == BodyKind::polar_rod;
                 angle = (keep_plus_x || rng.uniform() < 0.5) ? 0.0 : std::numbers::pi;
             }
             bodies.add(row.species, x, row_y, angle);

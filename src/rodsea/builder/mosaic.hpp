@@ -11,11 +11,13 @@
 // before; a random choice of the host's count of them stays (the rest are vacancies spread through
 // the domains), and when too few cleared, clashing sites are added back and the overlaps pushed
 // apart (overlap_relaxation.hpp). The guests are thus random and isotropic; the host's directors
-// are random from domain to domain, so its S is ~1/√domains, not 1/√N. A host without an axis
+// are evenly spaced over π and dealt to the domains so that their area-weighted Q tensors cancel,
+// which leaves S near chance even with the few domains of a small box. A host without an axis
 // (beads) is one domain: boundaries between crystals only cost room.
 #include <cstdint>
 #include <vector>
 
+#include "rodsea/builder/builder_options.hpp"
 #include "rodsea/builder/footprint.hpp"
 #include "rodsea/builder/overlap_relaxation.hpp"
 #include "rodsea/builder/planar_bodies.hpp"
@@ -29,6 +31,8 @@ struct MosaicOptions {
     double lattice_clearance = 0.005;  // between bodies in a domain's rows, mm
     double domain_size = 10.0;         // mm: the box is cut into about (L / size)² domains
     int max_iterations = 4000;         // of the overlap relaxation, when one is needed
+    // isotropic, or polar_aligned: the guests' polar rods along +x.
+    InitialOrientation guest_orientation = InitialOrientation::isotropic;
 };
 
 struct MosaicResult {

@@ -30,13 +30,14 @@ InsertionResult insert_randomly(const std::vector<Species>& species,
     bodies = {};
     for (std::uint32_t b = 0; b < body_species.size(); ++b) {
         const std::uint32_t s = body_species[b];
-        const bool plus_x_only = aligned && species[s].kind == BodyKind::polar_rod;
+        const bool plus_x_only =
+            orientation != InitialOrientation::isotropic && species[s].kind == BodyKind::polar_rod;
         for (;;) {
             if (static_cast<double>(result.attempts) >= budget) return result;
             ++result.attempts;
             const double x = rng.uniform(0.0, box.lx), y = rng.uniform(0.0, box.ly);
             double angle = 0.0;
-            if (!aligned)
+            if (!aligned && !plus_x_only)
                 angle = rng.uniform(-std::numbers::pi, std::numbers::pi);
             else if (feet[s].rotatable && !plus_x_only && rng.uniform() < 0.5)
                 angle = std::numbers::pi;

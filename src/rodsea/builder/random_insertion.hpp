@@ -21,7 +21,8 @@ struct InsertionResult {
 
 // Inserts the bodies of the largest footprint first (the hardest to fit later). Gives up, with
 // `bodies` partly filled, once the attempts exceed `attempts_per_body` times the body count.
-// Orientation as place_lattice: isotropic, or polar rods +x and other rods ±x (aligned).
+// Orientation as place_lattice: isotropic, polar rods +x and other rods ±x (aligned), or polar
+// rods +x and the others at random (polar_aligned).
 InsertionResult insert_randomly(const std::vector<Species>& species,
                                 const std::vector<Footprint>& feet,
                                 const std::vector<long long>& counts, const Box& box,
