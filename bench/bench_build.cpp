@@ -3,8 +3,8 @@
 // ℓ_a = 2.5 mm at 0.80 and of 4.5 mm at 0.75. Start (compression or mosaic) plus the default 50
 // Monte Carlo sweeps. The counters give the build's own wall time, how it started (0 insertion,
 // 1 compression, 2 mosaic, 3 lattice), and how random the start is: S and P per species against
-// 1/√N, and the segregation Σ (cells of 2 ℓ_p = 9 mm, MODEL.md §4) against the mean and spread of
-// Σ for the same bodies at random positions.
+// 1/√N, and the segregation Σ (cells of 2 ℓ_p = 9 mm, docs/model.md §4) against the mean and spread
+// of Σ for the same bodies at random positions.
 #include <benchmark/benchmark.h>
 
 #include <cmath>

@@ -77,10 +77,10 @@ BENCHMARK(BM_StepScaling)
     ->MinTime(2.0)
     ->UseRealTime();
 
-// The paper's largest system by size (MODEL.md §6: ≈ 3.5×10⁵ spheres): 3203 polar rods and 37147
-// apolar rods of 9 spheres (ℓ_a = 2.5 mm), 3.76×10⁵ spheres. The paper packs them into
-// L = 252 mm, denser than the lattice start can reach, so the box here is widened to φ_a = 0.5
-// (L ≈ 350 mm): the same bodies and spheres at the reference mixture's density.
+// The paper's largest system by size (docs/model.md §6: ≈ 3.5×10⁵ spheres): 3203 polar rods and
+// 37147 apolar rods of 9 spheres (ℓ_a = 2.5 mm), 3.76×10⁵ spheres. The paper packs them into L =
+// 252 mm, denser than the lattice start can reach, so the box here is widened to φ_a = 0.5 (L ≈ 350
+// mm): the same bodies and spheres at the reference mixture's density.
 void BM_StepPaperLargest(benchmark::State& state) {
     const double apolar_area = rodsea::apolar_rod_species(2.5).shape.projected_area;
     const double polar_area = rodsea::polar_rod_species().shape.projected_area;

@@ -289,7 +289,7 @@ DILUTE_SEED_SERIES = {
     0.2: [("seed 1", f"{DILUTE}/dt-38mm-2.5e-06.series.csv")]
     + [(f"seed {k}", f"{DILUTE_SEEDS}/medium.mass=0.2.seed{k}.series.csv") for k in range(3, 8)],
 }
-PAPER_MEDIUM_MASS = 0.2  # MODEL.md §2, the paper's m_apolar / m_polar
+PAPER_MEDIUM_MASS = 0.2  # docs/model.md §2, the paper's m_apolar / m_polar
 
 # Fig. 5b, first look: the medium's velocity around polar rods against distance in the 63 mm box
 # (label, profile table) from `rodsea analyze --observables medium_velocity`.
@@ -802,7 +802,7 @@ def draw_fig5b(plt):
 def draw_fig5b_gpu(plt):
     """At the paper's d in a 214 mm box: the medium's mean velocity along the rods' axis against r
     (the flow the rods drive, from 1 s displacements), and the comoving-frame speed at d against
-    φ_a for each time base of the velocities (what MODEL.md reads as the paper's |v|)."""
+    φ_a for each time base of the velocities (what docs/model.md reads as the paper's |v|)."""
     fig, (along, at_d) = plt.subplots(1, 2, figsize=(10.0, 3.8))
     dump = {}
     for phi, colour in zip(FIG5B_GPU_PHI, ("C0", "C1", "C2")):

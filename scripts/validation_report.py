@@ -24,7 +24,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from scipy import stats as scipy_stats  # noqa: E402
 
-# MODEL.md §3 and §7: the paper's D_r values and the experiment's single-rod speed.
+# docs/model.md §3 and §7: the paper's D_r values and the experiment's single-rod speed.
 PAPER_DR = [0.026, 0.23, 1.21, 1.87]  # rad²/s
 EXPERIMENT_SPEED = (3.6, 2.5)  # mm/s, thick → thin, Kumar et al. 2014
 DEFAULT_DT = 1.25e-6  # s

@@ -1,4 +1,4 @@
-// Observables on constructed frames with known answers (MODEL.md §4).
+// Observables on constructed frames with known answers (docs/model.md §4).
 #include <gtest/gtest.h>
 
 #include <algorithm>

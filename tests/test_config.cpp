@@ -1,5 +1,5 @@
-// The config module: TOML → validated RunPlan. Every number checked here is fixed by MODEL.md or
-// the paper (defaults, Table S1 counts, A = Γg/Ω²) or by the key table itself (each key's value
+// The config module: TOML → validated RunPlan. Every number checked here is fixed by docs/model.md
+// or the paper (defaults, Table S1 counts, A = Γg/Ω²) or by the key table itself (each key's value
 // lands in its RunPlan field in engine units), and every error names the key.
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -152,11 +152,11 @@ TEST(ConfigDefaults, EmptyFileIsThePapersMainSystemWithModelMdValues) {
     EXPECT_EQ(e.box.ly, 252.0);
     EXPECT_EQ(e.drive.gamma, 7.0);
     EXPECT_DOUBLE_EQ(e.drive.angular_frequency, 400.0 * kPi);
-    // A = Γg/Ω² = 7 × 9810 / (400π)² = 0.043487 mm: MODEL.md's 43.49 µm to its 4 digits.
+    // A = Γg/Ω² = 7 × 9810 / (400π)² = 0.043487 mm: docs/model.md's 43.49 µm to its 4 digits.
     EXPECT_NEAR(e.drive.amplitude() * 1000.0, 43.49, 0.005);
     EXPECT_EQ(e.drive.gap, 1.40);  // docs/model.md: a lone polar rod goes thick → thin
     EXPECT_EQ(e.drive.gravity, 9810.0);
-    EXPECT_EQ(e.dt, 1.25e-6);  // docs/model.md: MODEL.md's 5 µs is not converged
+    EXPECT_EQ(e.dt, 1.25e-6);  // docs/model.md: the first specification's 5 µs is not converged
     EXPECT_EQ(e.noise_epsilon, 0.0);
     EXPECT_EQ(e.seed, 1u);
     EXPECT_EQ(e.max_sweeps, 2000);
@@ -470,7 +470,7 @@ TEST(ConfigCounts, MatchThePapersTableS1AtFullSize) {
         {"kind = \"apolar_rod\"\nlength = 2.5", 0.80, 37147},
         {"kind = \"apolar_rod\"\nlength = 4.5", 0.05, 1261},
         {"kind = \"apolar_rod\"\nlength = 4.5", 0.75, 18915},
-        // The paper's 801 needs A = 3.964 mm²; 13 spheres give 3.971 mm² (MODEL.md §2).
+        // The paper's 801 needs A = 3.964 mm²; 13 spheres give 3.971 mm² (docs/model.md §2).
         {"kind = \"polar_rod\"", 0.05, 800},
     };
     for (const Row& r : rows) {
@@ -660,13 +660,14 @@ TEST(ConfigChoices, ListEveryChoiceInForceAndWhetherItIsTheDefault) {
           "drive.gravity = 9810 mm/s² (", "time.dt = 1.25e-06 s (the CHOICE default",
           "species[0].spheres = 13 (polar_rod 'polar'",
           "species[1].spheres = 9 (apolar_rod 'medium'", "species[1].mass = 0.2 mass units (",
-          "noise.epsilon = 0 1/mm (", "sphere chains:"}) {
+          "noise.mode = \"add\" (the CHOICE default", "noise.epsilon = 0 1/mm (",
+          "sphere chains:"}) {
         EXPECT_TRUE(has_line_starting(p.choices, start)) << start;
     }
     // The polar rod's mass is the unit, not a CHOICE; plate coefficients of rods are the paper's.
     EXPECT_FALSE(has_line_starting(p.choices, "species[0].mass"));
     EXPECT_FALSE(has_line_starting(p.choices, "species[1].plate_friction"));
-    EXPECT_EQ(p.choices.size(), 8u);
+    EXPECT_EQ(p.choices.size(), 9u);
 
     const RunPlan q = load("[drive]\ngap = 1.6\n" +
                            species_block("kind = \"bead\"\ncount = 5\nplate_friction = 0.02"));

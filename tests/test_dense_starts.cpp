@@ -21,7 +21,7 @@ namespace {
 
 using namespace test;
 
-// Σ in cells of 2 ℓ_p = 9 mm, the analysis default (MODEL.md §4).
+// Σ in cells of 2 ℓ_p = 9 mm, the analysis default (docs/model.md §4).
 constexpr double kSegregationCell = 9.0;
 
 double sigma_of(const Request& r, const BodyState& bodies) {

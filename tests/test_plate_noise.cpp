@@ -1,4 +1,4 @@
-// The rotational noise (MODEL.md §3): per polar rod and plate it hit, ε |u_n| η with |u_n| its
+// The rotational noise (docs/model.md §3): per polar rod and plate it hit, ε |u_n| η with |u_n| its
 // fastest approach to that plate in the step, added to ω_z (noise.mode = add) or imposed as ω_z
 // (set; two plates in one step impose their sum). Checked against a direct evaluation of that
 // rule, on a hit list long enough to be split over threads, and on constructed collisions.

@@ -1,6 +1,6 @@
 // Jolt's reference-integrator test: a polar rod bouncing between the vibrating plates, stepped
-// by the engine and, beside it, by an independent integrator written here from MODEL.md §3 alone:
-// rotation matrices and Rodrigues' formula instead of quaternions and series, the collision
+// by the engine and, beside it, by an independent integrator written here from docs/model.md §3
+// alone: rotation matrices and Rodrigues' formula instead of quaternions and series, the collision
 // matrix inverted by Gauss–Jordan elimination instead of Cramer's rule, contacts found by looping
 // over the spheres. The two are compared after every step.
 #include <gtest/gtest.h>
@@ -72,7 +72,7 @@ Vec3 solve_linear(Matrix m, Vec3 b) {
     return {r[0] / m[0][0], r[1] / m[1][1], r[2] / m[2][2]};
 }
 
-// One rigid body between the plates, stepped by the rules of MODEL.md §3.
+// One rigid body between the plates, stepped by the rules of docs/model.md §3.
 class ReferenceRod {
   public:
     ReferenceRod(const EngineParameters& p, const Vec3& x, const Matrix& r, const Vec3& v,
@@ -163,8 +163,8 @@ class ReferenceRod {
         d[2][2] = 1.0 / i.z;
         return product(product(r_, d), transposed(r_));
     }
-    // MODEL.md §3: the sticking impulse if it lies in the friction cone, else sliding along the
-    // slip; a plate has infinite mass.
+    // docs/model.md §3: the sticking impulse if it lies in the friction cone, else sliding along
+    // the slip; a plate has infinite mass.
     template <class Hit>
     Vec3 stronge(const Vec3& u, double un, const Hit& h) {
         const Matrix arm = cross_matrix(h.arm), inv = world_inverse_inertia();

@@ -38,7 +38,7 @@ TEST(MassProperties, TwoTouchingEqualSpheresMatchParallelAxis) {
 }
 
 // Independent check of the piecewise-exact integration of an overlapping chain: a plain
-// midpoint rule on ρ(x)² with 2·10⁵ slices (error ~1e-9 relative, far below the 1e-4 MODEL.md
+// midpoint rule on ρ(x)² with 2·10⁵ slices (error ~1e-9 relative, far below the 1e-4 docs/model.md
 // asks for).
 TEST(MassProperties, PolarRodAgreesWithBruteForceIntegration) {
     const SphereList spheres = polar_rod_spheres({});
@@ -61,7 +61,7 @@ TEST(MassProperties, PolarRodAgreesWithBruteForceIntegration) {
     EXPECT_NEAR(mp.centre_of_mass.x, xc, 1e-7);
     EXPECT_NEAR(mp.inertia(0, 0), ixx, 1e-7 * ixx);
     EXPECT_NEAR(mp.inertia(1, 1), 0.5 * ixx + m2 - v * xc * xc, 1e-7 * mp.inertia(1, 1));
-    // MODEL.md: the centre of mass sits ≈ 0.68 mm from the geometric centre, toward the thick
+    // docs/model.md: the centre of mass sits ≈ 0.68 mm from the geometric centre, toward the thick
     // (−x) end.
     EXPECT_NEAR(mp.centre_of_mass.x, -0.68, 0.01);
 }
@@ -81,7 +81,7 @@ TEST(ProjectedArea, TwoOverlappingDiscsMatchTheLensFormula) {
     EXPECT_NEAR(projected_area({{{0, 0, 0}, r1}, {{0, 0, 0}, r1}}), kPi * r1 * r1, 1e-14);
 }
 
-// MODEL.md §2 gives the areas to 5 decimals; the construction must reproduce all of them.
+// docs/model.md §2 gives the areas to 5 decimals; the construction must reproduce all of them.
 TEST(ProjectedArea, ApolarRodsAndBeadsMatchModel) {
     const std::pair<double, double> expected[] = {
         {1.0, 0.56258}, {1.5, 0.80975}, {2.0, 1.08494}, {2.5, 1.36762}, {4.5, 2.51796}};
@@ -101,7 +101,7 @@ struct TableS1Row {
     long long n_lo, n_hi;
 };
 
-// The paper's Table S1 ends for L = 252 mm (MODEL.md §2).
+// The paper's Table S1 ends for L = 252 mm (docs/model.md §2).
 TEST(Counts, ReproduceTableS1) {
     const Box box{252.0, 252.0};
     const TableS1Row rows[] = {

@@ -1,5 +1,5 @@
 // One rod alone on the vibrated base, no noise (ε = 0). A polar rod must travel along its axis
-// in a consistent direction, thick → thin at the default gap as in experiments (MODEL.md §7:
+// in a consistent direction, thick → thin at the default gap as in experiments (docs/model.md §7:
 // 3.6 ± 2.5 mm/s; docs/model.md chooses the gap for it). An apolar rod must show no drift.
 #include <gtest/gtest.h>
 

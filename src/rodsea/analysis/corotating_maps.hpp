@@ -1,6 +1,6 @@
 #pragma once
 // g(r,θ) and G(r,θ) of rods in the frame that moves and turns with a reference rod (x' along
-// its axis, thick → thin), every rod of a frame in turn the reference (MODEL.md §4). Maps
+// its axis, thick → thin), every rod of a frame in turn the reference (docs/model.md §4). Maps
 // accumulate over frames and add up, so that time blocks can be kept apart and summed.
 #include <cstddef>
 #include <span>

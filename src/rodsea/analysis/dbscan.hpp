@@ -1,5 +1,5 @@
 #pragma once
-// Density-based clustering of rod centres, to find the flocks of polar rods (MODEL.md §4) in a
+// Density-based clustering of rod centres, to find the flocks of polar rods (docs/model.md §4) in a
 // periodic box. The semantics are scikit-learn's DBSCAN exactly, labels and their numbering
 // included, so that results can be cross-checked against (and compared with) Python analyses.
 #include <span>

@@ -1,5 +1,5 @@
 #pragma once
-// The flow of the medium around polar rods (MODEL.md §4; paper Fig. 5b): for every polar rod i
+// The flow of the medium around polar rods (docs/model.md §4; paper Fig. 5b): for every polar rod i
 // and medium body j at distance r, the medium's in-plane velocity in the rod's corotating axes
 // (along its axis, thick → thin, and across it), its speed, and the same relative to the rod
 // (the comoving frame), averaged per distance bin over rods and frames.

@@ -1,7 +1,7 @@
 #pragma once
-// Radial pair correlations with minimum-image distances (MODEL.md §4), accumulated over frames:
-// g(r), the pair density over the ideal-gas density (1 for an uncorrelated fluid);
-// G(r) = ⟨cos(θ_i − θ_j)⟩_r and G₂(r) = ⟨cos 2(θ_i − θ_j)⟩_r over ordered pairs.
+// Radial pair correlations with minimum-image distances (docs/model.md §4), accumulated over
+// frames: g(r), the pair density over the ideal-gas density (1 for an uncorrelated fluid); G(r) =
+// ⟨cos(θ_i − θ_j)⟩_r and G₂(r) = ⟨cos 2(θ_i − θ_j)⟩_r over ordered pairs.
 #include <cstddef>
 #include <span>
 #include <vector>

@@ -1,9 +1,9 @@
 #pragma once
-// Segregation Σ = (1 / 2φ(1−φ)) Σ_i (n_i / n_tot) |φ_i − φ| over square cells of side a (MODEL.md
-// §4): φ_i the polar number fraction in cell i, φ the global one, n_i all bodies in cell i. Σ is
-// 0 when every cell holds the global mixture and 1 when every cell holds one species. Finite
-// counts make Σ > 0 even for random mixing: random_mixing_segregation gives that baseline, the
-// mean Σ of the same bodies at uniformly random positions (CHOICE: subtracted).
+// Segregation Σ = (1 / 2φ(1−φ)) Σ_i (n_i / n_tot) |φ_i − φ| over square cells of side a
+// (docs/model.md §4): φ_i the polar number fraction in cell i, φ the global one, n_i all bodies in
+// cell i. Σ is 0 when every cell holds the global mixture and 1 when every cell holds one species.
+// Finite counts make Σ > 0 even for random mixing: random_mixing_segregation gives that baseline,
+// the mean Σ of the same bodies at uniformly random positions (CHOICE: subtracted).
 #include <cstdint>
 #include <span>
 #include <vector>

@@ -1,6 +1,6 @@
 #pragma once
 // Orientational autocorrelation C_m(τ) = ⟨cos m(θ_i(t+τ) − θ_i(t))⟩ over bodies i and every time
-// origin t, and the rotational diffusion coefficient from it (MODEL.md §4).
+// origin t, and the rotational diffusion coefficient from it (docs/model.md §4).
 #include <cstddef>
 #include <span>
 #include <vector>

@@ -1,6 +1,6 @@
 #pragma once
 // One trajectory frame as the analysis sees it: in-plane centres wrapped into the box, the
-// in-plane axis angle θ (thick → thin for polar rods, MODEL.md §4), velocity, spin about z and
+// in-plane axis angle θ (thick → thin for polar rods, docs/model.md §4), velocity, spin about z and
 // species. Built once per frame, so that no observable redoes the quaternion → angle work.
 #include <cstdint>
 #include <string>

@@ -99,18 +99,18 @@ std::vector<KeySpec> make_keys() {
             .unit("mm")
             .def_text("ℓ_p / 2")
             .range(closed(1e-3, 1e6))
-            .choice("the paper gives none; MODEL.md §4")
+            .choice("the paper gives none; docs/model.md §4")
             .doc("DBSCAN neighbourhood radius"),
         integer("flocks", "min_samples")
             .def(count(d.flock_min_samples))
             .integers(1, 1'000'000)
-            .choice("the paper gives none; MODEL.md §4")
+            .choice("the paper gives none; docs/model.md §4")
             .doc("DBSCAN core-point count, the point included"),
         real("segregation", "cell")
             .unit("mm")
             .def_text("2 ℓ_p")
             .range(closed(0.01, 1e6))
-            .choice("MODEL.md §4")
+            .choice("docs/model.md §4")
             .doc("side a of the square cells of Σ"),
         integer("segregation", "baseline_samples")
             .def(count(d.segregation_baseline_samples))
@@ -318,7 +318,7 @@ std::string analysis_options_reference() {
     out << "| key | unit | default | allowed | meaning |\n|---|---|---|---|---|\n";
     for (const KeySpec& k : analysis_option_keys()) {
         std::string meaning = k.doc;
-        if (!k.choice.empty()) meaning += " (MODEL.md CHOICE)";
+        if (!k.choice.empty()) meaning += " (docs/model.md CHOICE)";
         out << "| `" << k.path() << "` | " << (k.unit.empty() ? "–" : k.unit) << " | "
             << k.default_doc() << " | " << config::markdown_cell(k.allowed_text()) << " | "
             << config::markdown_cell(meaning) << " |\n";
@@ -330,7 +330,7 @@ std::string analysis_options_help() {
     std::ostringstream out;
     for (const KeySpec& k : analysis_option_keys())
         out << "  " << k.path() << ": " << k.doc << "; default " << k.default_doc() << ", allowed "
-            << k.allowed_text() << (k.choice.empty() ? "" : " (MODEL.md CHOICE)") << "\n";
+            << k.allowed_text() << (k.choice.empty() ? "" : " (docs/model.md CHOICE)") << "\n";
     return out.str();
 }
 

@@ -26,9 +26,9 @@ struct AnalysisOptions {
     double contour_level = 0.7;              // fraction of max g(r,θ) (the paper's 70 %)
     double autocorrelation_max_lag = kAuto;  // s; auto: half the steady window
     double autocorrelation_fit_floor = 0.2;  // fit −ln C = D_r t where C ≥ this
-    double flock_eps = kAuto;                // mm; auto: ℓ_p / 2 (MODEL.md CHOICE)
-    int flock_min_samples = 3;               // MODEL.md CHOICE
-    double segregation_cell = kAuto;         // mm; auto: 2 ℓ_p (MODEL.md CHOICE)
+    double flock_eps = kAuto;                // mm; auto: ℓ_p / 2 (docs/model.md CHOICE)
+    int flock_min_samples = 3;               // docs/model.md CHOICE
+    double segregation_cell = kAuto;         // mm; auto: 2 ℓ_p (docs/model.md CHOICE)
     int segregation_baseline_samples = 200;
     double band_threshold = 3.0;     // times the random mean √(π/4N) (CHOICE)
     double medium_distance = 100.0;  // mm, the paper's d

@@ -1,9 +1,9 @@
 #pragma once
 // C(t) = ⟨cos(θ_i(t+τ) − θ_i(τ))⟩ of polar rods and C₂(t) (2θ) of every rod species, over rods
-// and time origins in the steady window (MODEL.md §4), and the rotational diffusion coefficient
-// from C = exp(−D_r t) (polar) or C₂ = exp(−4 D_r t) (apolar): a least-squares fit of −ln C
-// through the origin over the lags before C first falls below `fit_floor`, where the estimate is
-// still far above its statistical noise. Error bars: the same fit on each time block.
+// and time origins in the steady window (docs/model.md §4), and the rotational diffusion
+// coefficient from C = exp(−D_r t) (polar) or C₂ = exp(−4 D_r t) (apolar): a least-squares fit of
+// −ln C through the origin over the lags before C first falls below `fit_floor`, where the estimate
+// is still far above its statistical noise. Error bars: the same fit on each time block.
 #include "rodsea/analyze/analysis_options.hpp"
 #include "rodsea/analyze/observable.hpp"
 

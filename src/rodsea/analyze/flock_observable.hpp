@@ -1,6 +1,6 @@
 #pragma once
-// Flocks: DBSCAN on polar-rod centres with periodic distances (analysis/dbscan.hpp; MODEL.md §4,
-// CHOICE eps = ℓ_p/2, min_samples = 3), every frame: the largest flock N_m(t), the number of
+// Flocks: DBSCAN on polar-rod centres with periodic distances (analysis/dbscan.hpp; docs/model.md
+// §4, CHOICE eps = ℓ_p/2, min_samples = 3), every frame: the largest flock N_m(t), the number of
 // flocks, the fraction of polar rods in a flock, the labels per frame, and over the steady window
 // ⟨N_m⟩, the histogram of N_m and the distribution of flock sizes; how much of P the flocks
 // explain (analysis/flock_order.hpp); and the flocks followed in time (analysis/flock_tracks.hpp,

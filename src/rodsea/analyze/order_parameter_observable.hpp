@@ -1,5 +1,5 @@
 #pragma once
-// P and S per species, every frame (MODEL.md §4): the time series over the whole run and the
+// P and S per species, every frame (docs/model.md §4): the time series over the whole run and the
 // steady-state means. Beads are spheres, so their axis means nothing and they are skipped.
 #include "rodsea/analyze/observable.hpp"
 

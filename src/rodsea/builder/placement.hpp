@@ -4,7 +4,7 @@
 
 namespace rodsea {
 
-// N = round(φ L² / A), MODEL.md §2 (the paper's Table S1).
+// N = round(φ L² / A), docs/model.md §2 (the paper's Table S1).
 long long count_for_area_fraction(double area_fraction, const Box& box, const Shape& shape);
 
 // Orientation of a body lying flat with its axis at `angle` (rad) to x.

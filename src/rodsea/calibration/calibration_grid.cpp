@@ -14,7 +14,7 @@ namespace rodsea {
 const char* const kCalibrationKeysHelp =
     R"(  [calibrate]
   species   "polar_rod" (default), "apolar_rod" or "bead", with the paper's shapes and
-            coefficients (MODEL.md §2, §3)
+            coefficients (docs/model.md §2, §3)
   length    mm, apolar rods only: ℓ_a, [1, 20] (default 2.5)
   noise_mode "add" (default: ω_z += ε|u_n|η) or "set" (ω_z = ε|u_n|η), docs/model.md §3
   epsilon   1/mm, noise amplitudes, each in [0, 0.5] under add, [0, 20] under set
@@ -138,7 +138,7 @@ CalibrationGrid parse_calibration_grid(std::string_view text, const std::string&
         throw InvalidParameter(key("noise_mode"), "'" + mode + "'", "\"add\" or \"set\"");
     g.noise_mode = mode == "set" ? physics::NoiseMode::set : physics::NoiseMode::add;
     g.epsilon = number_list(*t, "epsilon", 0.0, max_noise_epsilon(g.noise_mode), "1/mm", g.epsilon);
-    // The largest sphere must fit between the plates (MODEL.md §1), with room to move.
+    // The largest sphere must fit between the plates (docs/model.md §1), with room to move.
     const double thickest = 2.0 * g.species.shape.max_radius;
     g.gap = number_list(*t, "gap", 0.0, 20.0, "mm", g.gap);
     for (double w : g.gap)

@@ -1,7 +1,7 @@
 #pragma once
 // The ε → D_r map of a polar rod, read from the calibration.csv that `rodsea calibrate` writes,
 // for the gap and time step of a run: what lets a config give the paper's control parameter D_r
-// instead of ε (MODEL.md §3).
+// instead of ε (docs/model.md §3).
 #include <filesystem>
 #include <vector>
 

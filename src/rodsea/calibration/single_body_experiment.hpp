@@ -2,8 +2,8 @@
 // One body alone in the vibrated cell, measured over many independent copies (each its own
 // simulation with its own start and noise seed, so that copies never interact): how fast and in
 // which direction it travels along its axis, how its axis diffuses. This is the evidence that
-// ties the model to the experiment (MODEL.md §7) and the ε → D_r map the paper's control
-// parameter needs (MODEL.md §3).
+// ties the model to the experiment (docs/model.md §7) and the ε → D_r map the paper's control
+// parameter needs (docs/model.md §3).
 #include <cstdint>
 #include <functional>
 #include <optional>

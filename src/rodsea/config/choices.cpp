@@ -52,7 +52,7 @@ std::vector<std::string> list_choices(const ConfigValues& c, const RunPlan& plan
         lines.push_back(
             "sphere chains: equally spaced centres, the end centres one end radius inside the "
             "rod's ends, each diameter the profile's at its centre (CHOICE: reproduces the "
-            "paper's Table S1 counts; MODEL.md §2)");
+            "paper's Table S1 counts; docs/model.md §2)");
     }
     return lines;
 }

@@ -54,7 +54,7 @@ std::string config_reference_markdown() {
           "`species[1].length`, counting [[species]] from 0), the value and what is allowed, "
           "with a suggestion for a misspelt key. A run stores the resolved config (every key "
           "with its value) in its outputs, and lists the CHOICEs in force.\n\n"
-          "**CHOICE** marks a default that MODEL.md chose where the paper is silent or "
+          "**CHOICE** marks a default that docs/model.md chose where the paper is silent or "
           "inconsistent; each is listed at the end.\n\n"
           "The examples in `examples/` reproduce the paper's figure families.\n";
     for (const TableSpec& t : config::config_tables()) {
@@ -83,7 +83,7 @@ std::string config_reference_markdown() {
     }
     md << "| sphere-chain construction | — | equally spaced centres, the end centres one end "
           "radius inside the rod's ends, each diameter the profile's at its centre: reproduces "
-          "the paper's Table S1 counts; MODEL.md §2 |\n";
+          "the paper's Table S1 counts; docs/model.md §2 |\n";
     return md.str();
 }
 

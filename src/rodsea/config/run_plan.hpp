@@ -35,7 +35,7 @@ struct RunPlan {
     BuilderOptions builder;
     RunControl control;
     std::string config_toml;           // the full resolved config, every key, as TOML
-    std::vector<std::string> choices;  // each MODEL.md CHOICE in force, one line each
+    std::vector<std::string> choices;  // each docs/model.md CHOICE in force, one line each
 
     std::uint64_t total_steps() const;       // round(duration / dt)
     std::uint64_t steps_per_output() const;  // round(output_interval / dt), >= 1

@@ -67,7 +67,7 @@ std::vector<KeySpec> make_keys() {
                     .unit("mm/s²")
                     .def(engine.drive.gravity)
                     .range(closed(0.0, 1e6))
-                    .choice("the paper does not give g: 9.81 m/s²; MODEL.md §1")
+                    .choice("the paper does not give g: 9.81 m/s²; docs/model.md §1")
                     .doc("g, pulling every body toward the base between collisions."));
     // [[species]]
     k.push_back(Key("species", "name", ValueType::text)
@@ -79,7 +79,7 @@ std::vector<KeySpec> make_keys() {
                     .required()
                     .doc("polar_rod: ℓ_p = 4.5 mm, 1.375 mm thick at one end and 0.4 mm at the "
                          "other; apolar_rod: 0.8 mm at the centre, 0.4 mm at both ends; bead: "
-                         "a 0.8 mm sphere (MODEL.md §2)."));
+                         "a 0.8 mm sphere (docs/model.md §2)."));
     k.push_back(real("species", "length")
                     .unit("mm")
                     .def_text("required (apolar_rod)")
@@ -98,26 +98,26 @@ std::vector<KeySpec> make_keys() {
                     .range(left_open(0.0, kMaxAreaFraction))
                     .alternative("count")
                     .doc("φ: the count is round(φL²/A), A the area of the body lying flat "
-                         "(MODEL.md §2); 0.9069 is the densest packing of discs."));
+                         "(docs/model.md §2); 0.9069 is the densest packing of discs."));
     k.push_back(integer("species", "count")
                     .unit("bodies")
                     .def_text("(from area_fraction)")
                     .integers(0, kMaxBodies)
                     .alternative("area_fraction")
                     .doc("The number of bodies."));
-    k.push_back(
-        integer("species", "spheres")
-            .def_text("13 (polar_rod), 4ℓ_a/mm − 1 (apolar_rod), 1 (bead)")
-            .integers(1, 200)
-            .choice("reproduces the paper's Table S1 counts; MODEL.md §2", kPolarRod | kApolarRod)
-            .doc("Spheres in the rigid chain: at least 2 for a polar rod, exactly 1 "
-                 "for a bead."));
+    k.push_back(integer("species", "spheres")
+                    .def_text("13 (polar_rod), 4ℓ_a/mm − 1 (apolar_rod), 1 (bead)")
+                    .integers(1, 200)
+                    .choice("reproduces the paper's Table S1 counts; docs/model.md §2",
+                            kPolarRod | kApolarRod)
+                    .doc("Spheres in the rigid chain: at least 2 for a polar rod, exactly 1 "
+                         "for a bead."));
     k.push_back(real("species", "mass")
                     .unit("mass units")
                     .range(left_open(0.0, 1e6))
                     .alternative("density")
                     .choice("the paper's m_apolar/m_polar = 0.20, kept for every ℓ_a and for "
-                            "beads; MODEL.md §2 (under test against density = 0.2)",
+                            "beads; docs/model.md §2 (under test against density = 0.2)",
                             kApolarRod | kBead)
                     .doc("Mass in arbitrary units, the polar rod's being 1 (only ratios "
                          "matter); the inertia tensor scales with it. A bead's mass decides "
@@ -138,13 +138,15 @@ std::vector<KeySpec> make_keys() {
     k.push_back(
         real("species", "plate_friction")
             .range(closed(0.0, 10.0))
-            .choice("the paper gives no bead–plate values: the apolar rod's; MODEL.md §3", kBead)
+            .choice("the paper gives no bead–plate values: the apolar rod's; docs/model.md §3",
+                    kBead)
             .doc("μ, Coulomb friction of collisions with the base and the lid (paper, "
                  "Table S2)."));
     k.push_back(
         real("species", "plate_restitution")
             .range(closed(0.0, 1.0))
-            .choice("the paper gives no bead–plate values: the apolar rod's; MODEL.md §3", kBead)
+            .choice("the paper gives no bead–plate values: the apolar rod's; docs/model.md §3",
+                    kBead)
             .doc("e, normal restitution of collisions with the base and the lid (paper, "
                  "Table S2)."));
     // [collisions]
@@ -177,7 +179,7 @@ std::vector<KeySpec> make_keys() {
             .def(std::string(to_string(engine.noise_mode)))
             .options({"add", "set"})
             .choice("under test by a screening study: the SI imposes ω_z = ε v_rel η at each plate "
-                    "collision (set); MODEL.md first read it as a kick added to ω_z "
+                    "collision (set); the first model specification read it as a kick added to ω_z "
                     "(add); docs/model.md §3")
             .doc("How a polar rod's plate collision meets its spin about z. add: ω_z += "
                  "ε |u_n| η; set: ω_z = ε |u_n| η, so at ε = 0 every plate collision "
@@ -189,7 +191,7 @@ std::vector<KeySpec> make_keys() {
                     .range(closed(0.0, kMaxNoiseEpsilon))
                     .alternative("rotational_diffusion")
                     .choice("the kick is scaled by the pre-collision normal speed |u_n|; "
-                            "MODEL.md §3")
+                            "docs/model.md §3")
                     .doc("ε: at each collision of a polar rod with a plate, ε |u_n| η, η = ±1, "
                          "joins ω_z (noise.mode = add) or becomes it (set). add: at most " +
                          format_number(kMaxNoiseEpsilonAdd) +
@@ -218,7 +220,7 @@ std::vector<KeySpec> make_keys() {
                     .unit("s")
                     .def(engine.dt)
                     .range(closed(1e-9, 1e-3))
-                    .choice("4000 steps per 5 ms drive period: 5 µs makes a lone polar rod 16 % "
+                    .choice("4000 steps per 5 ms drive period: 5 µs makes a lone polar rod 13 % "
                             "too fast; at 1.25 µs D_r agrees with dt/4 and the speed to 3–5 %; "
                             "docs/model.md")
                     .doc("The time step."));
@@ -496,20 +498,21 @@ std::string KeySpec::default_doc() const {
 
 const std::vector<TableSpec>& config_tables() {
     static const std::vector<TableSpec> tables = {
-        {"box", false, "The square box, periodic in x and y (MODEL.md §1)."},
+        {"box", false, "The square box, periodic in x and y (docs/model.md §1)."},
         {"drive", false,
-         "The vibrating plates: base at A cos Ωt, lid at A cos Ωt + w, A = Γg/Ω² (MODEL.md §1)."},
+         "The vibrating plates: base at A cos Ωt, lid at A cos Ωt + w, A = Γg/Ω² (docs/model.md "
+         "§1)."},
         {"species", true,
-         "One table per kind of body (MODEL.md §2), in the order the outputs use. Without any "
+         "One table per kind of body (docs/model.md §2), in the order the outputs use. Without any "
          "[[species]] the paper's main system is used: polar rods named \"polar\" at φ = 0.05 "
          "in apolar rods of ℓ_a = 2.5 mm (σ = 3.125) named \"medium\" at φ = 0.50. Give exactly "
          "one of area_fraction and count, and for an apolar rod exactly one of length and "
          "aspect_ratio; a key that does not apply to the kind is an error."},
-        {"collisions", false, "Body–body collisions: the Stronge impulse of MODEL.md §3."},
+        {"collisions", false, "Body–body collisions: the Stronge impulse of docs/model.md §3."},
         {"collisions.pair", true,
          "Optional, repeatable: coefficients for one pair of species, overriding [collisions]."},
         {"noise", false,
-         "Rotational noise of polar rods at their collisions with the plates (MODEL.md §3)."},
+         "Rotational noise of polar rods at their collisions with the plates (docs/model.md §3)."},
         {"time", false, "The time step and the length of the run."},
         {"output", false, "How often the run writes frames, rows and checkpoints."},
         {"run", false, "Seed and threads."},

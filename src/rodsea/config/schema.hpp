@@ -1,7 +1,7 @@
 #pragma once
 // The key table: every key of the config file with its type, unit, default, allowed range,
-// one-line description and, when MODEL.md marks its default a CHOICE, why. Parsing, validation,
-// defaults, the resolved TOML and docs/config.md are all driven by it.
+// one-line description and, when docs/model.md marks its default a CHOICE, why. Parsing,
+// validation, defaults, the resolved TOML and docs/config.md are all driven by it.
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -48,7 +48,7 @@ struct KeySpec {
     std::int64_t max_integer = std::numeric_limits<std::int64_t>::max();
     std::vector<std::string> options;  // ValueType::option
     std::string doc;
-    std::string choice;  // why MODEL.md makes the default a CHOICE; empty when it is not one
+    std::string choice;  // why docs/model.md makes the default a CHOICE; empty when it is not one
     KindMask choice_kinds = kAllKinds;  // [[species]] keys: the kinds for which it is a CHOICE
     std::string alternative;            // key of the same table it excludes
     KindMask kinds = kAllKinds;         // [[species]] keys: the kinds it applies to

@@ -1,5 +1,5 @@
 // The [[species]] tables: what each kind of body accepts and defaults to, and the Species it
-// builds (MODEL.md §2, with the sphere count and mass configurable).
+// builds (docs/model.md §2, with the sphere count and mass configurable).
 #include <algorithm>
 
 #include "rodsea/config/detail/resolve.hpp"

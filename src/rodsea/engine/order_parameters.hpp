@@ -1,5 +1,5 @@
 #pragma once
-// In-plane orientation of rods and the order parameters of MODEL.md §4. θ is the angle of the
+// In-plane orientation of rods and the order parameters of docs/model.md §4. θ is the angle of the
 // body x axis in the x-y plane: thick → thin for polar rods.
 #include <cmath>
 #include <cstdint>

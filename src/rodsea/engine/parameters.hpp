@@ -1,6 +1,6 @@
 #pragma once
-// Everything the engine needs besides the bodies, with MODEL.md's defaults. Units: mm, s, and an
-// arbitrary mass unit (the polar rod's mass is 1 by default; only ratios matter).
+// Everything the engine needs besides the bodies, with docs/model.md's defaults. Units: mm, s, and
+// an arbitrary mass unit (the polar rod's mass is 1 by default; only ratios matter).
 #include <cstdint>
 #include <numbers>
 #include <string>
@@ -18,7 +18,7 @@ struct DriveParameters {
     double gamma = 7.0;                                   // Γ = AΩ²/g, dimensionless, [0, 1000]
     double angular_frequency = 400.0 * std::numbers::pi;  // Ω, rad/s, > 0
     double gap = 1.40;        // w, mm (CHOICE by calibration, docs/model.md), > 0
-    double gravity = 9810.0;  // g, mm/s² (MODEL.md CHOICE 9.81 m/s²), >= 0
+    double gravity = 9810.0;  // g, mm/s² (docs/model.md CHOICE 9.81 m/s²), >= 0
 
     double amplitude() const {  // A, mm
         return gamma * gravity / (angular_frequency * angular_frequency);
@@ -38,7 +38,7 @@ struct Species {
 };
 
 // Masses in an arbitrary unit: only ratios matter, and the paper's m_apolar / m_polar = 0.20
-// (MODEL.md CHOICE: kept for every ℓ_a and for beads).
+// (docs/model.md CHOICE: kept for every ℓ_a and for beads).
 // The largest noise.epsilon (1/mm) per noise mode. add: 10× the calibrated range (0.05 /mm gives
 // D_r ≈ 5 rad²/s); at 1 /mm polar rods spin up without bound, at 3 /mm a run blows up within
 // 20 ms. set: a set spin cannot accumulate, so larger ε stays bounded; the paper's largest D_r
@@ -58,11 +58,11 @@ inline constexpr double kMediumMass = 0.2;
 
 // The paper's polar rod's density (mass units per mm³): kPolarRodMass in the volume of its
 // default 13-sphere shape (2.568 mm³). A species given by its density relative to the polar rod
-// (the other reading of the paper's "mass ratio 0.20", MODEL.md §2) weighs that many times this
-// density times its own volume.
+// (the other reading of the paper's "mass ratio 0.20", docs/model.md §2) weighs that many times
+// this density times its own volume.
 double polar_rod_density();
 
-// The paper's species with MODEL.md's defaults (Table S2 coefficients, mass ratio 0.20).
+// The paper's species with docs/model.md's defaults (Table S2 coefficients, mass ratio 0.20).
 Species polar_rod_species(double mass = kPolarRodMass);
 Species apolar_rod_species(double length_mm, double mass = kMediumMass);
 Species bead_species(double mass = kMediumMass);
@@ -82,7 +82,7 @@ struct EngineParameters {
     std::vector<ContactCoefficients> body_body_by_pair;
     double dt = 1.25e-6;         // s (CHOICE by convergence, docs/model.md: 4000 per period), > 0
     double noise_epsilon = 0.0;  // ε, 1/mm: ω_z += (or =) ε |u_n| η at polar rods' plate hits
-    physics::NoiseMode noise_mode = physics::NoiseMode::add;  // MODEL.md §3, docs/model.md
+    physics::NoiseMode noise_mode = physics::NoiseMode::add;  // docs/model.md §3, docs/model.md
     std::uint64_t seed = 1;
     int max_sweeps = 2000;  // impulse sweeps per step before contacts count as unresolved
     // Relative normal speeds above −tolerance count as not approaching (mm/s). 1 nm/s moves a
@@ -94,8 +94,8 @@ struct EngineParameters {
     }
 };
 
-// Every parameter at its default: the paper's values and MODEL.md's CHOICEs, the ones the config
-// schema documents and fills in (one source of defaults: the initialisers above).
+// Every parameter at its default: the paper's values and docs/model.md's CHOICEs, the ones the
+// config schema documents and fills in (one source of defaults: the initialisers above).
 inline EngineParameters default_engine_parameters() {
     return {};
 }

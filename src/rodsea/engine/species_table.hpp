@@ -33,7 +33,7 @@ struct SpeciesTable {
     std::vector<double> sphere_radius;        // mm
     std::vector<ContactCoefficients> plate;   // with the base and the lid
     std::vector<ContactCoefficients> pair;    // body–body, species × species, row-major
-    std::vector<std::uint8_t> polar;          // 1: the plates kick it (MODEL.md §3 noise)
+    std::vector<std::uint8_t> polar;          // 1: the plates kick it (docs/model.md §3 noise)
 
     static SpeciesTable from(const EngineParameters& params);
 

@@ -1,5 +1,5 @@
 #pragma once
-// The paper's minimal mean-field model (End Matter, eqs. P_eom and v_eom; MODEL.md §5): the
+// The paper's minimal mean-field model (End Matter, eqs. P_eom and v_eom; docs/model.md §5): the
 // spatially averaged polar order P of the motile rods and the mean medium velocity v,
 //   dP/dt     = -a P + lambda v - b |P|^2 P
 //   rho dv/dt = -Gamma_f v + alpha P

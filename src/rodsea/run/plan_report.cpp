@@ -217,7 +217,7 @@ void describe_plan(const RunPlan& plan, std::ostream& out, bool brief) {
     out << "packing  " << (packing.ok ? "feasible" : "IMPOSSIBLE: " + packing.message) << "\n";
     if (packing.ok) out << "start    " << planned_start(p, plan.counts, plan.builder) << "\n";
     if (brief) return;
-    out << "CHOICEs in force (MODEL.md; each is a config key):\n";
+    out << "CHOICEs in force (docs/model.md; each is a config key):\n";
     for (const std::string& c : plan.choices)
         out << "  - " << c << "\n";
 }

@@ -1,6 +1,6 @@
 #pragma once
 // What `rodsea info` prints and `rodsea run` shows before it starts: the system, the drive, the
-// run's length, the expected memory and output size, and every MODEL.md CHOICE in force.
+// run's length, the expected memory and output size, and every docs/model.md CHOICE in force.
 #include <cstdint>
 #include <filesystem>
 #include <iosfwd>

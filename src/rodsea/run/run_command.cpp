@@ -83,7 +83,8 @@ const CommandSpec& info_command_spec() {
         "Prints what CONFIG would simulate, without running it: the box and drive (amplitude A, "
         "peak plate speed), counts per species with spheres, projected areas and actual area "
         "fractions, the number of steps, the expected memory and output size, whether the "
-        "packing is possible, the backend and device, and every MODEL.md CHOICE in force. With "
+        "packing is possible, the backend and device, and every docs/model.md CHOICE in force. "
+        "With "
         "several configs, first what `rodsea run` with all of them would step as one ensemble "
         "(a line per run, the backend, the memory and output in all), then each plan in full.",
         {},

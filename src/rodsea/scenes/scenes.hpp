@@ -31,7 +31,7 @@ struct Population {
 Scene monolayer(const std::vector<Population>& populations, const Box& box, std::uint64_t seed);
 
 // The benchmark and demo mixture: polar rods at φ_p in apolar rods of length ℓ_a at φ_a, in a
-// square box of `box_side` mm, with MODEL.md defaults for everything else.
+// square box of `box_side` mm, with docs/model.md defaults for everything else.
 Scene polar_in_apolar_mixture(double phi_polar, double apolar_length, double phi_apolar,
                               double box_side, std::uint64_t seed);
 

@@ -15,7 +15,7 @@ namespace rodsea {
 struct Shape {
     std::vector<Vec3> offsets;     // sphere centres, principal body frame (mm)
     std::vector<double> radii;     // mm
-    double mass = 1.0;             // arbitrary mass unit (MODEL.md: only ratios matter)
+    double mass = 1.0;             // arbitrary mass unit (docs/model.md: only ratios matter)
     Vec3 principal_inertia;        // mass unit · mm², about the body axes
     double volume = 0.0;           // mm³
     double projected_area = 0.0;   // mm², footprint lying flat (union of great discs)

@@ -1,9 +1,9 @@
 #pragma once
-// Builds the sphere chains of MODEL.md §2 from a diameter profile. Every chain lies along the
+// Builds the sphere chains of docs/model.md §2 from a diameter profile. Every chain lies along the
 // x axis of its definition frame and is centred on its geometric centre.
 //
-// Construction (MODEL.md CHOICE, reproduces the paper's Table S1): N equally spaced centres; the
-// end centres sit one end-radius inside the rod's ends, so the chain spans exactly its length;
+// Construction (docs/model.md CHOICE, reproduces the paper's Table S1): N equally spaced centres;
+// the end centres sit one end-radius inside the rod's ends, so the chain spans exactly its length;
 // each sphere's diameter is the profile's value at its centre, the profile running linearly
 // between the end centres (polar) or from the centre to the end centres (apolar).
 #include "rodsea/shape/sphere.hpp"
@@ -21,7 +21,7 @@ struct ApolarRodGeometry {
     double length = 2.5;           // mm, ℓ_a
     double centre_diameter = 0.8;  // mm
     double end_diameter = 0.4;     // mm
-    int sphere_count = 9;          // MODEL.md CHOICE: 4 ℓ_a/mm − 1
+    int sphere_count = 9;          // docs/model.md CHOICE: 4 ℓ_a/mm − 1
 
     static int default_sphere_count(double length_mm);
     static ApolarRodGeometry with_length(double length_mm);

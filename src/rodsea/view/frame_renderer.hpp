@@ -41,7 +41,7 @@ struct RenderOptions {
     MediumColouring medium = MediumColouring::neutral;
     bool annotate = true;             // text, scale bar and legend
     std::optional<double> flock_eps;  // mm, DBSCAN ε for flock colours; none: ℓ_p / 2
-    int flock_min_samples = 3;        // as `rodsea analyze` (MODEL.md CHOICE)
+    int flock_min_samples = 3;        // as `rodsea analyze` (docs/model.md CHOICE)
     OverlayOptions overlay;           // drawn over the bodies
 };
 

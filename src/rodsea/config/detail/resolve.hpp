@@ -17,7 +17,7 @@ RunPlan resolve(ConfigValues& values, const EpsilonLookup& epsilon);
 // given, naming the one that comes second in the schema.
 void check_alternatives(const TableValues& t, std::string_view table, const std::string& source);
 
-// The paper's main system (MODEL.md §2), what a config without [[species]] simulates: polar
+// The paper's main system (docs/model.md §2), what a config without [[species]] simulates: polar
 // rods at φ_p = 0.05 named "polar" in apolar rods of ℓ_a = 2.5 mm at φ_a = 0.50 named "medium".
 std::vector<TableValues> default_species();
 

@@ -1,7 +1,7 @@
 #pragma once
-// Stage 5 of the CPU step: the rotational noise of MODEL.md §3. Each polar rod that hit a plate
-// in this step gets physics::apply_plate_noise (ω_z += or = ε |u_n| η by the step's noise mode),
-// with |u_n| its largest approach speed against each plate it hit in this step.
+// Stage 5 of the CPU step: the rotational noise of docs/model.md §3. Each polar rod that hit a
+// plate in this step gets physics::apply_plate_noise (ω_z += or = ε |u_n| η by the step's noise
+// mode), with |u_n| its largest approach speed against each plate it hit in this step.
 #include <cstdint>
 #include <vector>
 

@@ -50,7 +50,7 @@ struct SpeciesArrays {
 };
 
 // A body's fastest approach to each plate among the impulses it got from it this step (mm/s;
-// 0: none): what a polar body's noise kicks scale with (MODEL.md §3).
+// 0: none): what a polar body's noise kicks scale with (docs/model.md §3).
 using PlateHits = physics::PlateApproach;
 
 // The end of a list of contacts.

@@ -148,7 +148,7 @@ struct PlaceSpheres {
 };
 
 // Stage 5, per body: out of the plates by its deepest overlap (plate_projection.hpp says why),
-// and a polar body's noise for the plates it hit this step (MODEL.md §3; the one rule of
+// and a polar body's noise for the plates it hit this step (docs/model.md §3; the one rule of
 // physics::apply_plate_noise, as on the CPU), with the fastest approach that got an impulse (the
 // sweeps kept it). The overlaps are those the contacts were found with: the spheres have not
 // moved since. The noise hashes the body's index in its own system.

@@ -9,7 +9,7 @@
 
 namespace rodsea {
 
-// Coefficients of one kind of collision (MODEL.md §3, paper Table S2).
+// Coefficients of one kind of collision (docs/model.md §3, paper Table S2).
 struct ContactCoefficients {
     double friction = 0.05;     // μ, Coulomb, [0, 10]
     double restitution = 0.30;  // e, normal, [0, 1]

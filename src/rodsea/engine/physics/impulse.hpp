@@ -1,5 +1,5 @@
 #pragma once
-// The collision impulse of MODEL.md §3 (Stronge / Keller): restitution on the normal relative
+// The collision impulse of docs/model.md §3 (Stronge / Keller): restitution on the normal relative
 // velocity and Coulomb friction, sticking when the cone allows it, sliding otherwise.
 #include <cmath>
 

@@ -1,7 +1,7 @@
 #pragma once
 // The impulses of one island of contacts (bodies joined by body–body contacts; a plate joins
 // nothing), swept Gauss–Seidel style in list order until a sweep gives none or the sweep cap is
-// reached (MODEL.md §3, docs/architecture.md "The step"). After the first sweep a contact is
+// reached (docs/model.md §3, docs/architecture.md "The step"). After the first sweep a contact is
 // looked at again only if one of its bodies got an impulse since it was last looked at.
 //
 // Islands share no body, so every executor sweeps them independently and gets the same bits:

@@ -1,6 +1,6 @@
 #pragma once
-// The rotational noise of polar rods (MODEL.md §3), one rule for every executor: the sign η = ±1
-// of a kick and what a step's plate collisions do to a polar body's ω_z, under either reading of
+// The rotational noise of polar rods (docs/model.md §3), one rule for every executor: the sign η =
+// ±1 of a kick and what a step's plate collisions do to a polar body's ω_z, under either reading of
 // the paper's rule.
 #include <cstdint>
 
@@ -11,8 +11,8 @@
 namespace rodsea::physics {
 
 // How a plate collision's kick meets the spin the rod already has. The paper's SI "imposes"
-// ω_z = ε v_rel η at each plate collision (set); MODEL.md first read it as a kick added to ω_z
-// (add). docs/model.md says which the evidence chose.
+// ω_z = ε v_rel η at each plate collision (set); the first model specification read it as a kick
+// added to ω_z (add). docs/model.md says which the evidence chose.
 enum class NoiseMode : std::uint8_t { add, set };
 
 // η from a counter-based hash of (seed, step, body, plate) rather than a stream: the kicks do not
