@@ -57,8 +57,8 @@ TEST_F(CalibrateCli, TinyGridGivesAWellFormedTableWhateverTheThreadCount) {
     const auto col = [&](const std::string& name) {
         return static_cast<std::size_t>(std::find(h.begin(), h.end(), name) - h.begin());
     };
-    for (const std::string name : {"gap", "dt", "epsilon", "D_r", "D_r_err", "speed", "speed_err",
-                                   "forward_fraction", "copies", "unresolved"})
+    for (const std::string name : {"gap", "dt", "noise_mode", "epsilon", "D_r", "D_r_err", "speed",
+                                   "speed_err", "forward_fraction", "copies", "unresolved"})
         ASSERT_LT(col(name), h.size()) << name;
     // Points in grid order, ε fastest; D_r is a diffusion coefficient, the forward fraction a
     // fraction of 2 copies.
@@ -72,6 +72,7 @@ TEST_F(CalibrateCli, TinyGridGivesAWellFormedTableWhateverTheThreadCount) {
         EXPECT_GE(std::stod(row[col("D_r")]), 0.0);
         const double f = std::stod(row[col("forward_fraction")]);
         EXPECT_TRUE(f == 0.0 || f == 0.5 || f == 1.0) << f;
+        EXPECT_EQ(row[col("noise_mode")], "add");  // the default rule
         EXPECT_EQ(row[col("copies")], "2");
         EXPECT_EQ(row[col("unresolved")], "0");
     }
@@ -87,6 +88,27 @@ TEST_F(CalibrateCli, TinyGridGivesAWellFormedTableWhateverTheThreadCount) {
     // The same table, bit for bit, on one thread and on two.
     EXPECT_EQ(read_text(path("out1") / "calibration.csv"),
               read_text(path("out2") / "calibration.csv"));
+}
+
+// The set rule's table says so in its noise_mode column, and a set kick turns the lone rod: at
+// ε = 1 /mm its D_r is ~0.3 rad²/s (pilot, 4 copies × 2 s), against ~1e-5 without noise.
+TEST_F(CalibrateCli, TheSetRuleIsCalibratedAndLabelled) {
+    std::ofstream(path("set.toml"))
+        << "[calibrate]\nspecies = \"polar_rod\"\nnoise_mode = \"set\"\nepsilon = [1.0]\n"
+           "copies = 2\nduration = 0.3\nwarmup = 0.02\n";
+    const ChildResult r = run_rodsea(
+        {"calibrate", path("set.toml").string(), "--out", path("set").string(), "--quiet"},
+        scratch_->path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto rows = csv_rows(path("set") / "calibration.csv");
+    ASSERT_EQ(rows.size(), 2u);
+    const std::vector<std::string>& h = rows[0];
+    const auto col = [&](const std::string& name) {
+        return static_cast<std::size_t>(std::find(h.begin(), h.end(), name) - h.begin());
+    };
+    ASSERT_LT(col("noise_mode"), h.size());
+    EXPECT_EQ(rows[1][col("noise_mode")], "set");
+    EXPECT_GT(std::stod(rows[1][col("D_r")]), 0.01);
 }
 
 // --backend gpu where no GPU can run is refused before any work, saying why; a bad name too.
@@ -119,6 +141,10 @@ TEST_F(CalibrateCli, BadConfigIsRefusedByKeyBeforeAnyRun) {
         {"[calibrate]\ncopies = 1\n", "calibrate.copies"},
         {"[calibrate]\nlength = 3.0\n", "only with species = \"apolar_rod\""},
         {"[calibrat]\n", "[calibrate] only"},
+        // Each noise rule has its own ε range.
+        {"[calibrate]\nepsilon = [1.0]\n", "allowed [0 1/mm, 0.5 1/mm]"},
+        {"[calibrate]\nnoise_mode = \"set\"\nepsilon = [6.0]\n", "allowed [0 1/mm, 5 1/mm]"},
+        {"[calibrate]\nnoise_mode = \"kick\"\n", "\"add\" or \"set\""},
     };
     for (const Case& c : cases) {
         std::ofstream(path("bad.toml")) << c.toml;

@@ -17,7 +17,7 @@ const char* const kCalibrationKeysHelp =
             coefficients (docs/model.md §2, §3)
   length    mm, apolar rods only: ℓ_a, [1, 20] (default 2.5)
   noise_mode "add" (default: ω_z += ε|u_n|η) or "set" (ω_z = ε|u_n|η), docs/model.md §3
-  epsilon   1/mm, noise amplitudes, each in [0, 0.5] under add, [0, 20] under set
+  epsilon   1/mm, noise amplitudes, each in [0, 0.5] under add, [0, 5] under set
             (default [0.0])
   gap       mm, plate gaps w, each in (largest sphere diameter, 20] (default [1.40])
   dt        s, time steps, each in [1e-8, 1e-4] (default [1.25e-6])

@@ -41,10 +41,12 @@ struct Species {
 // (docs/model.md CHOICE: kept for every ℓ_a and for beads).
 // The largest noise.epsilon (1/mm) per noise mode. add: 10× the calibrated range (0.05 /mm gives
 // D_r ≈ 5 rad²/s); at 1 /mm polar rods spin up without bound, at 3 /mm a run blows up within
-// 20 ms. set: a set spin cannot accumulate, so larger ε stays bounded; the paper's largest D_r
-// needs ε of a few /mm (data/calibration.csv), and this bound leaves room above it.
+// 20 ms. set: a set spin does not accumulate from kick to kick, but it feeds the next approach
+// speed through the impulses: a lone rod has D_r = 1.1 rad²/s at 2 /mm, spins (22 rad²/s) at
+// 4 /mm and blows up at 16 /mm (data/model-readings/calibration-set-a.toml); the paper's largest
+// D_r, 1.87, lies near 2.5 /mm.
 inline constexpr double kMaxNoiseEpsilonAdd = 0.5;
-inline constexpr double kMaxNoiseEpsilonSet = 20.0;
+inline constexpr double kMaxNoiseEpsilonSet = 5.0;
 inline constexpr double kMaxNoiseEpsilon = kMaxNoiseEpsilonSet;  // of either mode
 double max_noise_epsilon(physics::NoiseMode mode);
 const char* to_string(physics::NoiseMode mode);
@@ -57,7 +59,7 @@ inline constexpr double kPolarRodMass = 1.0;
 inline constexpr double kMediumMass = 0.2;
 
 // The paper's polar rod's density (mass units per mm³): kPolarRodMass in the volume of its
-// default 13-sphere shape (2.568 mm³). A species given by its density relative to the polar rod
+// default 13-sphere shape (3.119 mm³). A species given by its density relative to the polar rod
 // (the other reading of the paper's "mass ratio 0.20", docs/model.md §2) weighs that many times
 // this density times its own volume.
 double polar_rod_density();
