@@ -29,11 +29,14 @@ void bind_config(py::module_& m) {
                     d["count"] = c.plan.counts[s];
                     d["spheres"] = sp.shape.sphere_count();
                     d["length_mm"] = sp.shape.extent;
+                    d["mass"] = sp.shape.mass;
+                    d["density"] = sp.shape.mass / sp.shape.volume / polar_rod_density();
                     out.append(d);
                 }
                 return out;
             },
-            "one dict per species: name, kind, count, spheres, length_mm")
+            "one dict per species: name, kind, count, spheres, length_mm, mass (the polar rod's "
+            "= 1) and density (relative to the paper's polar rod's)")
         .def_property_readonly(
             "box",
             [](const Config& c) {
@@ -52,6 +55,10 @@ void bind_config(py::module_& m) {
         .def_property_readonly("seed", [](const Config& c) { return c.plan.engine.seed; })
         .def_property_readonly(
             "noise_epsilon", [](const Config& c) { return c.plan.engine.noise_epsilon; }, "1/mm")
+        .def_property_readonly(
+            "noise_mode",
+            [](const Config& c) { return std::string(to_string(c.plan.engine.noise_mode)); },
+            "\"add\" or \"set\": how a plate collision's kick meets ω_z (docs/model.md §3.2)")
         .def_property_readonly("threads", [](const Config& c) { return c.plan.control.threads; })
         .def("__repr__", [](const Config& c) {
             // Appended piece by piece: GCC 12 warns (-Wrestrict) about a chain of + on a literal.

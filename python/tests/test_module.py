@@ -88,6 +88,25 @@ def test_errors_carry_the_command_lines_messages(tmp_path):
         rodsea.open_run(tmp_path)
 
 
+def test_a_config_reports_the_noise_rule_and_both_readings_of_the_mass():
+    config = rodsea.load_config(
+        {
+            "noise": {"mode": "set", "epsilon": 1.0},
+            "species": [
+                {"name": "polar", "kind": "polar_rod", "count": 1},
+                {"name": "medium", "kind": "apolar_rod", "length": 2.5, "count": 1, "density": 0.2},
+            ],
+        }
+    )
+    assert config.noise_mode == "set"
+    assert config.noise_epsilon == 1.0
+    polar, medium = config.species
+    assert polar["mass"] == 1.0 and polar["density"] == pytest.approx(1.0, rel=1e-12)
+    # 0.2 of the polar rod's density in 0.636 of its 3.119 mm³: 0.041 of its mass.
+    assert medium["density"] == pytest.approx(0.2, rel=1e-12)
+    assert medium["mass"] == pytest.approx(0.0408, abs=2e-4)
+
+
 def test_stepping_releases_the_gil(small_config):
     sim = rodsea.Simulation(rodsea.load_config(small_config))
     counted, stop = [0], threading.Event()
