@@ -45,6 +45,8 @@ def main():
     for a, b in zip(rows_a, rows_b):
         if a["epsilon"] != b["epsilon"]:
             raise SystemExit(f"the two tables differ in ε: {a['epsilon']} vs {b['epsilon']}")
+        if a.get("noise_mode", "add") != b.get("noise_mode", "add"):
+            raise SystemExit(f"the two tables differ in noise_mode at ε = {a['epsilon']}")
         da, db = float(a["D_r"]), float(b["D_r"])
         ea, eb = float(a["D_r_err"]), float(b["D_r_err"])
         z = (da - db) / math.hypot(ea, eb) if ea > 0 or eb > 0 else float("nan")

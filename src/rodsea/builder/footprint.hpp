@@ -11,9 +11,8 @@
 namespace rodsea {
 
 struct Footprint {
-    std::vector<double> along;  // disc centre along the body axis from the geometric centre, mm
-    std::vector<double>
-        across;  // disc centre across the axis (0 for the chains of docs/model.md), mm
+    std::vector<double> along;   // disc centre along the body axis from the geometric centre, mm
+    std::vector<double> across;  // disc centre across the axis (0 for sphere chains), mm
     std::vector<double> radius;  // mm
     double centre_offset = 0.0;  // geometric centre along the body x axis from the centre of mass
     double half_length = 0.0;    // half the span along the axis, mm
