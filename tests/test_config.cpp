@@ -625,7 +625,7 @@ TEST(ConfigErrors, CrossKeyChecksNameTheKey) {
     expect_invalid(
         "[box]\nside = 8\n" + species_block("kind = \"apolar_rod\"\nlength = 4.5\ncount = 1"),
         "box.side", {"8 mm", ">= 9 mm", "apolar_rod 'apolar_rod'"});
-    // Each noise mode has its own ε range: an added kick accumulates, a set one cannot.
+    // Each noise mode has its own ε range (kMaxNoiseEpsilonAdd and ...Set say why).
     expect_invalid("[noise]\nepsilon = 3.5", "noise.epsilon",
                    {"3.5 1/mm", "[0, 0.5] 1/mm", "noise.mode = \"add\""});
     expect_invalid("[noise]\nmode = \"set\"\nepsilon = 25", "noise.epsilon", {"25 1/mm"});

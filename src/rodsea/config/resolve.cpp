@@ -301,7 +301,7 @@ void build_the_rest(ConfigValues& c, RunPlan& plan, const EpsilonLookup& epsilon
 // Checks across keys, each naming the key the user wrote.
 void check_across_keys(const ConfigValues& c, const RunPlan& plan) {
     const EngineParameters& e = plan.engine;
-    // Each noise mode has its own ε range: an added kick accumulates, a set one cannot.
+    // Each noise mode has its own ε range (kMaxNoiseEpsilonAdd and ...Set say why).
     if (const TableValues& noise = c.one("noise");
         noise.has("epsilon") && e.noise_epsilon > max_noise_epsilon(e.noise_mode))
         throw InvalidParameter(

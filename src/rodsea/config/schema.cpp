@@ -185,20 +185,22 @@ std::vector<KeySpec> make_keys() {
                  "ε |u_n| η; set: ω_z = ε |u_n| η, so at ε = 0 every plate collision "
                  "stops the rod turning. Each mode has its own ε range and calibration "
                  "rows."));
-    k.push_back(real("noise", "epsilon")
-                    .unit("1/mm")
-                    .def(engine.noise_epsilon)
-                    .range(closed(0.0, kMaxNoiseEpsilon))
-                    .alternative("rotational_diffusion")
-                    .choice("the kick is scaled by the pre-collision normal speed |u_n|; "
-                            "docs/model.md §3")
-                    .doc("ε: at each collision of a polar rod with a plate, ε |u_n| η, η = ±1, "
-                         "joins ω_z (noise.mode = add) or becomes it (set). add: at most " +
-                         format_number(kMaxNoiseEpsilonAdd) +
-                         " /mm (D_r grows as ε², 0.05 /mm gives ~5 rad²/s; above 0.5 /mm the "
-                         "rods spin up without bound); set: at most " +
-                         format_number(kMaxNoiseEpsilonSet) +
-                         " /mm (data/calibration.csv has both modes' D_r)."));
+    k.push_back(
+        real("noise", "epsilon")
+            .unit("1/mm")
+            .def(engine.noise_epsilon)
+            .range(closed(0.0, kMaxNoiseEpsilon))
+            .alternative("rotational_diffusion")
+            .choice("the kick is scaled by the pre-collision normal speed |u_n|; "
+                    "docs/model.md §3")
+            .doc("ε: at each collision of a polar rod with a plate, ε |u_n| η, η = ±1, "
+                 "joins ω_z (noise.mode = add) or becomes it (set). add: at most " +
+                 format_number(kMaxNoiseEpsilonAdd) +
+                 " /mm (D_r grows as ε², 0.05 /mm gives ~5 rad²/s; above 0.5 /mm the "
+                 "rods spin up without bound); set: at most " +
+                 format_number(kMaxNoiseEpsilonSet) +
+                 " /mm (a lone rod spins from about 3 /mm; the set rule's calibration is in "
+                 "docs/validation.md)."));
     k.push_back(real("noise", "rotational_diffusion")
                     .unit("rad²/s")
                     .def_text("none")
