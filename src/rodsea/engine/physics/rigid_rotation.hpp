@@ -177,23 +177,29 @@ RODSEA_HD bool rotate_symmetric(Quat& q, Vec3& spin, const Rotor& rotor, double 
 }
 
 // A sphere (every bead): L = I ω, so ω itself is kept and the body turns about it by |ω| dt, the
-// quaternion (cos(φ/2), ω sin(φ/2) / |ω|), again by the series. Half the work of
-// rotate_symmetric, which free flight of a bead medium spends most of its step on, and ω is kept
-// to the bit rather than recomputed from L. Returns false, changing nothing, for an angle too
-// large for the series.
-RODSEA_HD inline bool rotate_isotropic(Quat& q, const Vec3& spin, double dt) {
+// quaternion (cos(φ/2), ω sin(φ/2) / |ω|), by the series where the angle is small (one step).
+// Half the work of rotate_symmetric, which free flight of a bead medium spends most of its step
+// on, and ω is kept to the bit rather than recomputed from L, also over a coast's long jump
+// (physics/coasting.hpp), where the library's sin and cos take the large angle.
+RODSEA_HD inline void rotate_isotropic(Quat& q, const Vec3& spin, double dt) {
     const double beta = 0.5 * dt;                    // φ/2 = β |ω|
     const double turn2 = norm2(spin) * beta * beta;  // (φ/2)²
-    if (turn2 > kSeriesLimit) return false;
+    if (turn2 > kSeriesLimit) {
+        const double half = std::sqrt(turn2), scale = beta * std::sin(half) / half;
+        q = unit(Quat{std::cos(half), scale * spin.x, scale * spin.y, scale * spin.z} * q);
+        return;
+    }
     const HalfAngle h = half_angle_series(turn2);
     const double scale = beta * h.sinc;
     q = renormalised(Quat{h.cos, scale * spin.x, scale * spin.y, scale * spin.z} * q);
-    return true;
 }
 
 // One step of torque-free rotation: the fast path where it applies, the general one otherwise.
 RODSEA_HD inline void rotate_free(Quat& q, Vec3& spin, const Rotor& rotor, double dt) {
-    if (rotor.isotropic && rotate_isotropic(q, spin, dt)) return;
+    if (rotor.isotropic) {
+        rotate_isotropic(q, spin, dt);
+        return;
+    }
     switch (rotor.axis) {
         case 0:
             if (rotate_symmetric<0>(q, spin, rotor, dt)) return;
