@@ -83,8 +83,9 @@ StepContext step_context(const EngineParameters& params, std::uint64_t step) {
     context.gravity = params.drive.gravity;
     context.box = {params.box.lx, params.box.ly};
     context.step = step;
+    context.plate_motion = params.drive.motion();
     context.plates =
-        physics::plate_state(params.drive.motion(), static_cast<double>(step) * params.dt);
+        physics::plate_state(context.plate_motion, static_cast<double>(step) * params.dt);
     context.approach_tolerance = params.approach_tolerance;
     context.max_sweeps = params.max_sweeps;
     context.noise_epsilon = params.noise_epsilon;

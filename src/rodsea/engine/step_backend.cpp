@@ -11,6 +11,7 @@ void StepTally::add(const StepTally& other) {
     plate_collisions += other.plate_collisions;
     unresolved += other.unresolved;
     noise_kicks += other.noise_kicks;
+    body_steps += other.body_steps;
     max_sweeps = std::max(max_sweeps, other.max_sweeps);
     max_overlap_fraction = std::max(max_overlap_fraction, other.max_overlap_fraction);
 }

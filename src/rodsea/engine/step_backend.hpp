@@ -35,6 +35,9 @@ struct StepStatistics {
     std::size_t noise_kicks = 0;
     double max_overlap_fraction = 0.0;  // largest overlap / smaller radius found this step
     double max_planar_speed = 0.0;      // mm/s, a bound on every sphere's in-plane speed
+    // Bodies flown, placed and searched in this step: all of them, but for the coasting step
+    // (the bodies awake), and 0 from a backend that does not count them (the GPU's).
+    std::size_t bodies_flown = 0;
 };
 
 // Several steps together (a run of them, or every step since the start): the counts summed, the
@@ -46,6 +49,7 @@ struct StepTally {
     std::uint64_t plate_collisions = 0;
     std::uint64_t unresolved = 0;
     std::uint64_t noise_kicks = 0;
+    std::uint64_t body_steps = 0;  // bodies_flown, summed
     int max_sweeps = 0;
     double max_overlap_fraction = 0.0;
 
@@ -57,6 +61,7 @@ struct StepTally {
         plate_collisions += step.plate_collisions;
         unresolved += step.unresolved;
         noise_kicks += step.noise_kicks;
+        body_steps += step.bodies_flown;
         if (step.sweeps > max_sweeps) max_sweeps = step.sweeps;
         if (step.max_overlap_fraction > max_overlap_fraction)
             max_overlap_fraction = step.max_overlap_fraction;
@@ -122,6 +127,10 @@ struct BackendOptions {
     // (state_check.hpp). Off only for tests that start from deliberately impossible states.
     bool stop_on_blow_up = true;
     BackendKind backend = BackendKind::cpu;
+    // The CPU backend flies only the bodies that can touch something, and the others in jumps
+    // (cpu/coasting_backend.hpp): the same physics at the same dt, equal to the step that flies
+    // every body to round-off, not to the bit. Ignored by the data-parallel backends.
+    bool coasting = false;
     // The data-parallel backends wait for each stage to end so as to time it (StageProfile), and
     // queue no run of steps as one graph: slower, for profiles. The CPU always times its stages.
     bool time_stages = false;

@@ -92,6 +92,18 @@ class VerletPairList {
 
     size_t size() const { return first_.size(); }
     double skin() const { return skin_; }
+
+    // The pairs [begin, end) whose first point is i, i < the points of the last build.
+    struct Range {
+        size_t begin, end;
+    };
+    Range row(std::uint32_t i) const { return {i == 0 ? 0 : start_[i - 1], start_[i]}; }
+
+    // A bound on how far any point has moved in the plane since the last build (mm): pairs not
+    // listed are at least skin − 2 slack() apart in the plane, beyond their radii.
+    double slack() const { return slack_; }
+    // Whether update() with this `travel` will look at the points (and so needs them all current).
+    bool looks_after(double travel) const { return builds_ == 0 || slack_ + travel > 0.5 * skin_; }
     std::uint64_t builds() const { return builds_; }
 
   private:
@@ -123,7 +135,8 @@ class VerletPairList {
     std::vector<std::uint32_t> first_, second_;  // the pairs, sorted by (first, second)
     std::vector<Vec3> reference_;                // the points at the last build
     // Scratch for rebuilds: the grid, each slot's radius + skin / 2 and group (contiguous for the
-    // cell loop), each thread's pairs, and the count of pairs of each first point.
+    // cell loop), each thread's pairs; and, kept after the build, where each first point's pairs
+    // end (start_[i], the start of i + 1's; start_[n] the total).
     PeriodicGrid2D grid_;
     std::vector<double> slot_reach_;
     std::vector<std::uint32_t> slot_group_;

@@ -6,6 +6,7 @@
 // function of the state alone: not of the list's age, nor of the number of threads.
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include "rodsea/engine/body_state.hpp"
@@ -35,12 +36,23 @@ inline constexpr double kVerletSkin = 0.05;
 
 class ContactFinder {
   public:
+    explicit ContactFinder(double skin = kVerletSkin) : pairs_(skin) {}
+
     // `travel`: a bound on how far any sphere moved in the plane since the last call (mm), for
     // the Verlet list (VerletPairList::update).
     ContactSearchStats find(const SphereTable& spheres, BodyView bodies,
                             const SpeciesTable& species, const StepContext& step,
                             std::vector<Contact>& out, int threads,
                             double travel = std::numeric_limits<double>::infinity());
+    // As find(), for the bodies `awake` (ascending) only: a pair with a body marked in
+    // `coasting` is skipped, as are the plates' contacts of such a body. The same contacts in the
+    // same order as find() where the coasting bodies touch nothing.
+    ContactSearchStats find_awake(const SphereTable& spheres, BodyView bodies,
+                                  const SpeciesTable& species, const StepContext& step,
+                                  std::span<const std::uint32_t> awake,
+                                  std::span<const std::uint8_t> coasting, std::vector<Contact>& out,
+                                  int threads, double travel);
+    const VerletPairList& pairs() const { return pairs_; }
     std::uint64_t pair_list_builds() const { return pairs_.builds(); }
 
     // The overlaps one chunk of the search found: the deepest, over the smaller radius, and how
@@ -56,7 +68,7 @@ class ContactFinder {
     static size_t gather(const std::vector<std::vector<Contact>>& chunks, std::vector<Contact>& out,
                          size_t at);
 
-    VerletPairList pairs_{kVerletSkin};
+    VerletPairList pairs_;
     // Per thread: its chunk's body contacts and plate contacts, and their overlaps.
     std::vector<std::vector<Contact>> body_chunks_, plate_chunks_;
     std::vector<Depth> depth_;

@@ -52,7 +52,8 @@ void CpuBackend::step(const StepContext& context, StepStatistics& stats, StagePr
              resolved.unresolved + found.gross_overlaps,
              kicks,
              found.max_overlap_fraction,
-             fastest};
+             fastest,
+             bodies.size()};
 }
 
 }  // namespace rodsea::cpu

@@ -3,6 +3,7 @@
 // its radius, and its world centre, recomputed after each free flight. Body b owns spheres
 // first_of[b] .. first_of[b+1]−1, in the order of its shape's spheres.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "rodsea/engine/body_state.hpp"
@@ -25,6 +26,12 @@ struct SphereTable {
 
     void assign(std::span<const std::uint32_t> body_species, const SpeciesTable& species);
     void update_positions(BodyView bodies, const SpeciesTable& species, int threads);
+    // The same for the bodies listed only.
+    void update_positions_of(std::span<const std::uint32_t> list, BodyView bodies,
+                             const SpeciesTable& species, int threads);
+    // Body b's sphere centres for the pose (x, q), its height bounds left as they were.
+    void place(std::uint32_t b, std::uint32_t species_index, const Vec3& x, const Quat& q,
+               const SpeciesTable& species);
     std::size_t size() const { return body.size(); }
     SphereView view() const { return {body, radius, position, first_of}; }
 };
