@@ -179,7 +179,7 @@ TEST_P(TwoBodyCollision, RandomRodPairsConserveMomentumAndNeverGainEnergy) {
     EXPECT_GT(single_frictionless, trials / 10);
 }
 
-RODSEA_ON_EACH_BACKEND(TwoBodyCollision);
+RODSEA_ON_EACH_STEP(TwoBodyCollision);
 
 }  // namespace
 }  // namespace rodsea
@@ -226,7 +226,7 @@ TEST_P(CollisionCount, ABouncingBeadCountsItsBouncesNotItsRestingSteps) {
     EXPECT_NEAR(fine[2] / coarse[2], 4.0, 0.2);
 }
 
-RODSEA_ON_EACH_BACKEND(CollisionCount);
+RODSEA_ON_EACH_STEP(CollisionCount);
 
 }  // namespace
 }  // namespace rodsea
@@ -267,7 +267,7 @@ TEST_P(PlateProjection, ABeadRestingOnTheShakenBaseSinksAtMostOneStepsWorth) {
     EXPECT_LT(highest, one_step);  // and stayed on it
 }
 
-RODSEA_ON_EACH_BACKEND(PlateProjection);
+RODSEA_ON_EACH_STEP(PlateProjection);
 
 }  // namespace
 }  // namespace rodsea

@@ -56,7 +56,7 @@ TEST_P(DenseMonolayer, StaysInTheGapWithSmallOverlapsForManyPeriods) {
     EXPECT_LT(worst_escape, 0.055 * 0.2);
 }
 
-RODSEA_ON_EACH_BACKEND(DenseMonolayer);
+RODSEA_ON_EACH_STEP(DenseMonolayer);
 
 }  // namespace
 }  // namespace rodsea

@@ -42,7 +42,7 @@ TEST_P(ElasticGas, KeepsKineticEnergyOverTenThousandSteps) {
     EXPECT_GT(sim.totals().impulses, 1000u);
 }
 
-RODSEA_ON_EACH_BACKEND(ElasticGas);
+RODSEA_ON_EACH_STEP(ElasticGas);
 
 }  // namespace
 }  // namespace rodsea

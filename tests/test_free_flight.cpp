@@ -96,7 +96,7 @@ TEST_P(FreeFlight, SpinningBeadTurnsAboutItsFixedSpin) {
                     kRoundOff);
 }
 
-RODSEA_ON_EACH_BACKEND(FreeFlight);
+RODSEA_ON_EACH_STEP(FreeFlight);
 
 // One large step of torque-free rotation and 200 small ones from the same start, as
 // (attitude, spin) after each: a half-angle of 0.09 rad per large step (above the series' 0.02),

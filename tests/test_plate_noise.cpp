@@ -192,7 +192,7 @@ TEST_P(PlateNoiseOnEachBackend, ARodHittingTheBaseLeavesWithTheSetSpinExactly) {
     EXPECT_EQ(untouched, free_flight);
 }
 
-RODSEA_ON_EACH_BACKEND(PlateNoiseOnEachBackend);
+RODSEA_ON_EACH_STEP(PlateNoiseOnEachBackend);
 
 }  // namespace
 }  // namespace rodsea

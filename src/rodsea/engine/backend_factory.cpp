@@ -1,5 +1,6 @@
 #include "rodsea/engine/backend_factory.hpp"
 
+#include "rodsea/engine/cpu/coasting_backend.hpp"
 #include "rodsea/engine/cpu/cpu_backend.hpp"
 #include "rodsea/engine/parallel/host_executor.hpp"
 #include "rodsea/engine/parallel/parallel_backend.hpp"
@@ -103,6 +104,8 @@ std::unique_ptr<parallel::EnsembleStepper> make_ensemble_stepper(
 
 std::unique_ptr<StepBackend> make_backend(const SpeciesTable& species, BodyState bodies,
                                           const BackendOptions& options) {
+    if (options.backend == BackendKind::cpu && options.coasting)
+        return std::make_unique<cpu::CoastingBackend>(species, std::move(bodies), options.threads);
     if (options.backend == BackendKind::cpu)
         return std::make_unique<cpu::CpuBackend>(species, std::move(bodies), options.threads);
     std::vector<std::pair<const SpeciesTable*, BodyState>> one;
