@@ -78,8 +78,20 @@ TEST(Determinism, AnyNumberOfThreadsGivesTheSameStateHash) {
     EXPECT_EQ(hash[0], hash[2]);
 }
 
-TEST(Determinism, RefusesFewerThanOneThread) {
+// One range of threads, [1, kMaxThreads], whatever asks: OpenMP aborts the process when asked
+// for a team it cannot start (5000 threads did), so the range is checked before it is asked.
+TEST(Determinism, RefusesThreadsOutsideOneRange) {
     EXPECT_THROW(noisy_mixture(6, 0), InvalidParameter);
+    try {
+        noisy_mixture(6, kMaxThreads + 1);
+        ADD_FAILURE() << "accepted " << kMaxThreads + 1 << " threads";
+    } catch (const InvalidParameter& e) {
+        EXPECT_EQ(e.name(), "threads");
+        EXPECT_NE(std::string(e.what()).find("[1, 256]"), std::string::npos) << e.what();
+    }
+    Simulation sim = noisy_mixture(6, 1);
+    EXPECT_THROW(sim.set_threads(1'000'000), InvalidParameter);
+    EXPECT_EQ(sim.options().threads, 1);  // refused: nothing changed
 }
 
 }  // namespace

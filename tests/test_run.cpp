@@ -418,6 +418,29 @@ TEST(RunInfo, ReportsTheLargestSystemOfThePaper) {
         EXPECT_NE(r.out.find(choice), std::string::npos) << choice;
 }
 
+// --threads takes the range run.threads takes, on every command: a run started on more threads
+// than its stored config allows would then be refused by everything that reads it.
+TEST(RunThreads, EveryThreadsFlagTakesTheConfigsRange) {
+    const ScratchDir dir("run-threads");
+    const auto config = write_config(dir, small_config(0.01, 0.002));
+    const auto run = dir.path() / "run";
+    const ChildResult started =
+        run_rodsea({"run", config.string(), "--out", run.string(), "--threads", "300"}, dir.path());
+    EXPECT_EQ(started.exit_code, kExitBadInput);
+    EXPECT_NE(started.err.find("--threads = '300'"), std::string::npos) << started.err;
+    EXPECT_NE(started.err.find("256"), std::string::npos) << started.err;
+    EXPECT_FALSE(std::filesystem::exists(run));
+    ASSERT_EQ(run_rodsea({"run", config.string(), "--out", run.string(), "--quiet"}, dir.path())
+                  .exit_code,
+              kExitOk);
+    const std::string checkpoint = read_text(run / kCheckpointFile);
+    const ChildResult resumed = run_rodsea(
+        {"run", "--resume", run.string(), "--duration", "0.02", "--threads", "257"}, dir.path());
+    EXPECT_EQ(resumed.exit_code, kExitBadInput);
+    EXPECT_NE(resumed.err.find("--threads = '257'"), std::string::npos) << resumed.err;
+    EXPECT_EQ(read_text(run / kCheckpointFile), checkpoint);
+}
+
 // A run resumes on the backend --backend names, for that session; the stored config keeps what
 // the run started with. Where no GPU can run, asking for one is refused before any work, naming
 // the key or flag and saying why, and leaves every file as it was.

@@ -71,6 +71,13 @@ def test_set_state_is_checked_like_a_resumed_state(small_config):
     assert sim.positions[0, 0] == moved[0, 0]
 
 
+def test_threads_take_the_command_lines_range(small_config):
+    config = rodsea.load_config(small_config)
+    for threads in (0, 257, 10**6):
+        with pytest.raises(rodsea.InvalidParameter, match=r"threads.*\[1, 256\]"):
+            rodsea.Simulation(config, threads=threads)
+
+
 def test_errors_carry_the_command_lines_messages(tmp_path):
     bad = tmp_path / "bad.toml"
     bad.write_text("[box]\nside = -3.0\n")

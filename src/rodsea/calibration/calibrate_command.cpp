@@ -47,7 +47,7 @@ const CommandSpec& calibrate_command_spec() {
         {{"--out", "DIR",
           "output directory (replaced files: calibration.csv, speed_distribution.csv, "
           "calibrate.toml)"},
-         {"--threads", "N", "worker threads, [1, 256] (default: the machine's cores)"},
+         {"--threads", "N", "worker threads, [1, 256] (default: the machine's cores, at most 256)"},
          {"--backend", "cpu|gpu",
           "what steps the copies (default cpu); gpu needs a build with CUDA and a device, and is "
           "refused before any work where there is none"},
@@ -239,9 +239,11 @@ int calibrate_command(const std::vector<std::string>& words, std::ostream& out, 
     const std::filesystem::path config = args.positional[0];
     const std::string text = read_config(config);
     const CalibrationGrid grid = parse_calibration_grid(text, config.string());
-    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    const int threads = static_cast<int>(
-        parse_count("--threads", args.value("--threads").value_or(std::to_string(cores)), 1, 256));
+    // The machine's cores by default, within the range every --threads takes.
+    const unsigned cores =
+        std::clamp(std::thread::hardware_concurrency(), 1u, static_cast<unsigned>(kMaxThreads));
+    const int threads = static_cast<int>(parse_count(
+        "--threads", args.value("--threads").value_or(std::to_string(cores)), 1, kMaxThreads));
     BackendOptions backend;
     if (const auto b = args.value("--backend")) {
         backend.backend = backend_flag("--backend", *b);

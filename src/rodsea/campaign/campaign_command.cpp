@@ -152,8 +152,8 @@ int plan(const Arguments& a, std::ostream& out) {
     const Loaded l = load(a, false);
     PlannedExecution how;
     how.jobs = static_cast<int>(parse_count("--jobs", a.value("--jobs").value_or("1"), 1, 4096));
-    how.threads =
-        static_cast<int>(parse_count("--threads", a.value("--threads").value_or("1"), 1, 1024));
+    how.threads = static_cast<int>(
+        parse_count("--threads", a.value("--threads").value_or("1"), 1, kMaxThreads));
     how.ensemble = a.has("--ensemble");
     refuse_jobs_with_ensemble(a);
     const double seconds =
@@ -216,8 +216,8 @@ int run(const Arguments& a, std::ostream& out, std::ostream& err) {
     const Loaded l = load(a);
     LocalExecutorOptions o;
     o.jobs = static_cast<int>(parse_count("--jobs", a.value("--jobs").value_or("1"), 1, 4096));
-    o.threads =
-        static_cast<int>(parse_count("--threads", a.value("--threads").value_or("1"), 1, 1024));
+    o.threads = static_cast<int>(
+        parse_count("--threads", a.value("--threads").value_or("1"), 1, kMaxThreads));
     o.retry_failed = a.has("--retry-failed");
     o.quiet = a.has("--quiet");
     o.backend = backend_option(a);

@@ -279,7 +279,7 @@ std::vector<KeySpec> make_keys() {
                          "seed gives the same run."));
     k.push_back(integer("run", "threads")
                     .def(std::int64_t{control.threads})
-                    .integers(1, 256)
+                    .integers(1, kMaxThreads)
                     .doc("Threads of the engine's step (OpenMP). The trajectory is the same, bit "
                          "for bit, on any number of threads; more threads than cores only slow "
                          "it down (docs/performance.md)."));

@@ -36,6 +36,12 @@ void validate_bodies(const EngineParameters& params, BodyState& bodies, bool fre
     }
 }
 
+void check_threads(int threads) {
+    if (threads < 1 || threads > kMaxThreads)
+        throw InvalidParameter("threads", std::to_string(threads),
+                               "an integer in [1, " + std::to_string(kMaxThreads) + "]");
+}
+
 template <class T>
 void hash_bytes(std::uint64_t& h, const std::vector<T>& data) {
     const auto* bytes = reinterpret_cast<const unsigned char*>(data.data());
@@ -54,8 +60,7 @@ Simulation::Simulation(EngineParameters params, BodyState bodies, std::uint64_t 
                        BackendOptions options, bool fresh_start)
     : params_(std::move(params)), options_(options), step_count_(step_count) {
     validate(params_);
-    if (options_.threads < 1)
-        throw InvalidParameter("threads", std::to_string(options_.threads), ">= 1");
+    check_threads(options_.threads);
     validate_bodies(params_, bodies, fresh_start, time());
     bounds_ = BlowUpBounds::of(params_, bodies.size());
     species_ = std::make_unique<SpeciesTable>(SpeciesTable::from(params_));
@@ -63,7 +68,7 @@ Simulation::Simulation(EngineParameters params, BodyState bodies, std::uint64_t 
 }
 
 void Simulation::set_threads(int threads) {
-    if (threads < 1) throw InvalidParameter("threads", std::to_string(threads), ">= 1");
+    check_threads(threads);
     options_.threads = threads;
     backend_->set_threads(threads);
 }

@@ -118,6 +118,11 @@ enum class BackendKind {
 };
 const char* to_string(BackendKind kind);
 
+// The most threads a step may run on: every entry point (run.threads, the command lines'
+// --threads, Python's threads=) takes [1, kMaxThreads] and Simulation refuses any other, before
+// OpenMP is asked for a team it cannot start.
+inline constexpr int kMaxThreads = 256;
+
 // How the step is executed. On one backend the trajectory does not depend on the threads. The
 // GPU backend runs the CPU's algorithm (gpu_on_host gives the CPU's bits); on a device the
 // rounding may differ, so the promise is statistical equality with the CPU (architecture.md).

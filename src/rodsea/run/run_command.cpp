@@ -114,7 +114,7 @@ void read_length_flags(const Arguments& a, RunOptions& options) {
         options.steady_samples = parse_count("--steady-samples", *n, 0, 1'000'000'000);
     if (const auto b = a.value("--backend")) options.backend = backend_flag("--backend", *b);
     if (const auto n = a.value("--threads"))
-        options.threads = static_cast<int>(parse_count("--threads", *n, 1, 1024));
+        options.threads = static_cast<int>(parse_count("--threads", *n, 1, kMaxThreads));
 }
 
 }  // namespace
@@ -166,7 +166,7 @@ int run_command(const std::vector<std::string>& words, std::ostream& out, std::o
         RunPlan plan = load_config_file(name, calibration_table_lookup());
         if (const auto n = a.value("--threads"))
             plan = with_threads(plan.config_toml, name,
-                                static_cast<int>(parse_count("--threads", *n, 1, 1024)));
+                                static_cast<int>(parse_count("--threads", *n, 1, kMaxThreads)));
         if (const auto b = a.value("--backend"))
             plan = with_backend(plan.config_toml, name, backend_flag("--backend", *b));
         // One config writes DIR itself; several write DIR/<config name> each.
