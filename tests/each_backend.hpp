@@ -9,6 +9,7 @@
 //   RODSEA_ON_EACH_STEP(Collisions);     // or RODSEA_ON_EACH_BACKEND: without coasting
 #include <gtest/gtest.h>
 
+#include <ostream>
 #include <string>
 
 #include "rodsea/engine/backend_factory.hpp"
@@ -21,6 +22,11 @@ struct BackendChoice {
     bool coasting = false;
     operator BackendKind() const { return kind; }  // NOLINT: GetParam() == BackendKind::cpu
 };
+
+// What a failing test prints for its parameter (gtest would show the struct's bytes).
+inline void PrintTo(const BackendChoice& choice, std::ostream* os) {
+    *os << to_string(choice.kind) << (choice.coasting ? ", coasting" : "");
+}
 
 class EachBackend : public ::testing::TestWithParam<BackendChoice> {
   protected:

@@ -318,6 +318,33 @@ TEST_F(AnalyzeCli, ReplicatesGetOneRowWithTheErrorFromTheirSpread) {
     }
 }
 
+// The same run given twice would be two replicates with no spread: refused. A copy of a run
+// (its config and seed) is its trajectory again: counted once, and said so. The sentence about
+// short windows comes once, the lines it concerns marked.
+TEST_F(AnalyzeCli, TheSameRunTwiceIsNotAReplicate) {
+    const ChildResult twice = run_rodsea(
+        {"analyze", mixture().string(), (mixture() / "").string(), "--observables", "order"},
+        scratch_->path());
+    EXPECT_EQ(twice.exit_code, 2);
+    EXPECT_NE(twice.err.find("the same run"), std::string::npos) << twice.err;
+
+    const fs::path copy = scratch_->path() / "mixture-copy";
+    fs::copy(mixture(), copy, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+    const fs::path table = scratch_->path() / "copies.csv";
+    const ChildResult r = run_rodsea({"analyze", mixture().string(), copy.string(), "--observables",
+                                      "order", "--table", table.string()},
+                                     scratch_->path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("the same trajectory, counted once"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("runs of one state point"), std::string::npos) << r.out;
+    EXPECT_EQ(read_table(table).size(), 2u);  // the two runs' rows, no group
+    const std::string sentence = "the error bar is an underestimate";
+    const std::size_t first = r.out.find(sentence);
+    if (first != std::string::npos) {
+        EXPECT_EQ(r.out.find(sentence, first + 1), std::string::npos) << r.out;
+    }
+}
+
 struct BadCase {
     std::vector<std::string> args;
     int exit_code;

@@ -310,7 +310,9 @@ CsvTable::Row parameter_row(CsvTable& table, const RunAnalysis& a) {
     return row;
 }
 
-// Groups of at least two runs whose configs differ only in the seed, in order of first run.
+// Groups of at least two runs whose configs differ only in the seed, in order of first run. A
+// run with the seed of an earlier one in its group is that run's trajectory again, not a
+// replicate: it is left out (same_seed_runs names it).
 std::vector<std::vector<const RunAnalysis*>> replicate_groups(
     const std::vector<RunAnalysis>& runs) {
     std::vector<std::string> keys;
@@ -321,15 +323,36 @@ std::vector<std::vector<const RunAnalysis*>> replicate_groups(
         if (at == keys.end()) {
             keys.push_back(key);
             groups.push_back({&a});
-        } else {
-            groups[static_cast<std::size_t>(at - keys.begin())].push_back(&a);
+            continue;
         }
+        std::vector<const RunAnalysis*>& group =
+            groups[static_cast<std::size_t>(at - keys.begin())];
+        const bool seen = std::any_of(group.begin(), group.end(), [&](const RunAnalysis* b) {
+            return b->run.plan.engine.seed == a.run.plan.engine.seed;
+        });
+        if (!seen) group.push_back(&a);
     }
     std::erase_if(groups, [](const auto& g) { return g.size() < 2; });
     return groups;
 }
 
 }  // namespace
+
+std::vector<std::pair<std::filesystem::path, std::filesystem::path>> same_seed_runs(
+    const std::vector<RunAnalysis>& runs) {
+    std::vector<std::pair<std::filesystem::path, std::filesystem::path>> pairs;
+    for (std::size_t i = 0; i < runs.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j) {
+            const RunPlan& a = runs[i].run.plan;
+            const RunPlan& b = runs[j].run.plan;
+            if (a.engine.seed == b.engine.seed &&
+                config_without_seed(a.config_toml) == config_without_seed(b.config_toml)) {
+                pairs.emplace_back(runs[i].run.run_dir, runs[j].run.run_dir);
+                break;
+            }
+        }
+    return pairs;
+}
 
 ReplicateSummary summarise_replicates(const std::vector<const RunAnalysis*>& group) {
     ReplicateSummary g;

@@ -143,6 +143,18 @@ int analyze_command(const std::vector<std::string>& args, std::ostream& out, std
                                "one or more run directories (see rodsea analyze --help)");
     // A run's first directory and its continuations, given together, are analysed as one run.
     const std::vector<std::vector<std::filesystem::path>> runs = group_run_parts(given);
+    // The same run twice (as `a` and `./a/`) would count as two replicates with no spread.
+    for (std::size_t i = 0; i < runs.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j) {
+            std::error_code ec_i, ec_j;
+            const auto a = std::filesystem::weakly_canonical(runs[i].front(), ec_i);
+            const auto b = std::filesystem::weakly_canonical(runs[j].front(), ec_j);
+            if (!ec_i && !ec_j && a == b)
+                throw InvalidParameter("RUN_DIR",
+                                       runs[j].front().string() + " and " +
+                                           runs[i].front().string() + ", the same run",
+                                       "each run once");
+        }
     if (out_dir && runs.size() > 1)
         throw InvalidParameter("--out", out_dir->string(), "only with a single RUN_DIR",
                                "each of several runs writes into its own RUN_DIR/analysis");
@@ -163,6 +175,7 @@ int analyze_command(const std::vector<std::string>& args, std::ostream& out, std
     }
 
     std::vector<RunAnalysis> analyses;
+    bool any_short = false;
     for (const PreparedRun& run : prepared) {
         const std::filesystem::path dir = out_dir.value_or(run.run_dir / "analysis");
         RunAnalysis a = analyze_run(run, log, quiet);
@@ -174,18 +187,26 @@ int analyze_command(const std::vector<std::string>& args, std::ostream& out, std
                 for (const ScalarResult& s : r.scalars)
                     log << "    " << s.name << " = " << format_number(s.estimate.mean) << " ± "
                         << format_number(s.estimate.error) << (s.unit.empty() ? "" : " ") << s.unit
-                        << (s.estimate.short_series()
-                                ? "  (window < 50 τ_int: the error bar is an underestimate; run "
-                                  "longer, or give several seeds for an error from replicates)"
-                                : "")
-                        << "\n";
+                        << (s.estimate.short_series() ? "  *" : "") << "\n";
+                any_short = any_short || std::any_of(r.scalars.begin(), r.scalars.end(),
+                                                     [](const ScalarResult& x) {
+                                                         return x.estimate.short_series();
+                                                     });
                 for (const std::string& n : r.notes)
                     log << "    note (" << r.observable << "): " << n << "\n";
             }
         }
         analyses.push_back(std::move(a));
     }
-    if (!quiet) report_replicates(replicate_summaries(analyses), log);
+    if (!quiet && any_short)
+        log << "  * window < 50 τ_int: the error bar is an underestimate; run longer, or give "
+               "several seeds for an error from replicates\n";
+    if (!quiet) {
+        for (const auto& [later, earlier] : same_seed_runs(analyses))
+            log << "replicates: " << later.string() << " has the config and seed of "
+                << earlier.string() << ": the same trajectory, counted once\n";
+        report_replicates(replicate_summaries(analyses), log);
+    }
     if (table_path) {
         write_file_atomically(*table_path, summary_table_csv(analyses));
         if (!quiet) log << "table: " << table_path->string() << "\n";

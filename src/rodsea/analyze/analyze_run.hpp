@@ -97,6 +97,10 @@ struct ReplicateSummary {
     std::vector<ReplicateScalar> scalars;
 };
 std::vector<ReplicateSummary> replicate_summaries(const std::vector<RunAnalysis>& runs);
+// Runs whose config and seed are an earlier run's (its trajectory again, so not a replicate:
+// replicate_summaries counts it once), each with that earlier run: (later, earlier).
+std::vector<std::pair<std::filesystem::path, std::filesystem::path>> same_seed_runs(
+    const std::vector<RunAnalysis>& runs);
 // The same for runs already known to be replicates (a campaign point's seeds).
 ReplicateSummary summarise_replicates(const std::vector<const RunAnalysis*>& runs);
 
