@@ -171,6 +171,19 @@ TEST(CampaignFile, BadFilesAreRefusedByKeyWithTheAllowedValues) {
     }
 }
 
+// A run config where a campaign file belongs (examples/paper/'s base-*.toml beside the
+// campaigns) is named as one, not refused for its [box].
+TEST(CampaignFile, ARunConfigIsNamedAsOne) {
+    try {
+        load_campaign_string("[box]\nside = 38.0\n[time]\nduration = 1.0\n", "base-rods.toml");
+        ADD_FAILURE() << "a run config accepted as a campaign";
+    } catch (const InvalidParameter& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("base-rods.toml"), std::string::npos) << what;
+        EXPECT_NE(what.find("this is a run config"), std::string::npos) << what;
+    }
+}
+
 TEST(CampaignFile, ImpossiblePackingsAreRefusedBeforeAnythingRuns) {
     try {
         grid_of("[[axis]]\nkey = \"species.medium.area_fraction\"\nvalues = [0.2, 0.88]\n");

@@ -142,6 +142,13 @@ class CampaignReader {
         : source_(std::move(source)), directory_(std::move(directory)) {}
 
     Campaign read(const toml::table& root) {
+        // A run config given where a campaign file belongs (examples/paper/'s base-*.toml sit
+        // beside the campaigns that use them): say what it is, not that [box] is unknown here.
+        if (!root.contains("campaign") && (root.contains("box") || root.contains("species") ||
+                                           root.contains("drive") || root.contains("time")))
+            throw InvalidParameter("campaign", source_, "a campaign file (with a [campaign] table)",
+                                   "this is a run config: rodsea run it, or name it as a "
+                                   "campaign's base (campaign.base, docs/campaigns.md)");
         Campaign c;
         c.file = source_;
         for (auto&& [k, node] : root) {
