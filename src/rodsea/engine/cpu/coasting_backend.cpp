@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "rodsea/engine/cpu/plate_noise.hpp"
 #include "rodsea/engine/physics/coasting.hpp"
 #include "rodsea/engine/physics/free_flight.hpp"
 #include "rodsea/engine/physics/sphere_placement.hpp"
@@ -508,20 +507,8 @@ void CoastingBackend::step(const StepContext& context, StepStatistics& stats,
         found = finder_.find_awake(spheres_, bodies, species_, context, awake_, coasting_,
                                    contacts_, threads_, fastest * context.dt);
     }
-    ResolutionStats resolved;
-    {
-        StageTimer t(profile.resolution);
-        inverse_inertia_.update_for(contacts_, bodies, species_);
-        plate_hits_.clear();
-        resolved =
-            resolver_.resolve(contacts_, bodies, inverse_inertia_, context, plate_hits_, threads_);
-        plate_projection_.apply(contacts_, bodies, spheres_);
-    }
-    std::size_t kicks = 0;
-    {
-        StageTimer t(profile.noise);
-        kicks = apply_plate_noise(plate_hits_, bodies, species_, context, threads_);
-    }
+    stats = response_.respond(contacts_, bodies, species_, spheres_, context, threads_, profile,
+                              found, fastest, awake_.size());
     counts_.awake_body_steps += awake_.size();
     ++counts_.steps;
     {
@@ -529,17 +516,6 @@ void CoastingBackend::step(const StepContext& context, StepStatistics& stats,
         begin_coasts(context, fastest);
     }
     step_ = context.step;
-    stats = {found.body_contacts,
-             found.plate_contacts,
-             resolved.sweeps,
-             resolved.impulses,
-             resolved.body_collisions,
-             resolved.plate_collisions,
-             resolved.unresolved + found.gross_overlaps,
-             kicks,
-             found.max_overlap_fraction,
-             fastest,
-             awake_.size()};
 }
 
 const BodyState& CoastingBackend::bodies() const {

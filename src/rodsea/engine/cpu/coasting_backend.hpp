@@ -34,9 +34,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "rodsea/engine/cpu/contact_resolution.hpp"
+#include "rodsea/engine/cpu/contact_response.hpp"
 #include "rodsea/engine/cpu/contact_search.hpp"
-#include "rodsea/engine/cpu/plate_projection.hpp"
 #include "rodsea/engine/cpu/sphere_table.hpp"
 #include "rodsea/engine/species_table.hpp"
 #include "rodsea/engine/step_backend.hpp"
@@ -73,7 +72,6 @@ class CoastingBackend final : public StepBackend {
     std::uint64_t pair_list_builds() const override { return finder_.pair_list_builds(); }
 
     const CoastingCounts& counts() const { return counts_; }
-    bool coasting(std::uint32_t body) const { return coasting_[body] != 0; }
 
   private:
     // One unit of T, the summed travel bound, in mm: an integer sum is exact, in any order.
@@ -169,10 +167,7 @@ class CoastingBackend final : public StepBackend {
     SphereTable spheres_;
     ContactFinder finder_;
     std::vector<Contact> contacts_;
-    InverseInertia inverse_inertia_;
-    ContactResolver resolver_;
-    std::vector<PlateHit> plate_hits_;
-    PlateProjection plate_projection_;
+    ContactResponse response_;
     std::vector<std::uint32_t> candidates_;
 
     // The state handed out: every body at step_, made when asked.

@@ -138,14 +138,7 @@ ContactSearchStats ContactFinder::find(const SphereTable& spheres, BodyView bodi
         stats.gross_overlaps = depth.gross;
         return stats;
     }
-    const auto slots = static_cast<size_t>(threads);
-    body_chunks_.resize(slots);
-    plate_chunks_.resize(slots);
-    depth_.assign(slots, Depth{});
-    for (size_t t = 0; t < slots; ++t) {  // a team smaller than asked leaves slots unfilled
-        body_chunks_[t].clear();
-        plate_chunks_[t].clear();
-    }
+    start_chunks(threads);
 #pragma omp parallel num_threads(threads)
     {
         const int team = team_size(), t = thread_index();
@@ -153,14 +146,7 @@ ContactSearchStats ContactFinder::find(const SphereTable& spheres, BodyView bodi
                            depth_[t]);
         find_plate_contacts(in, chunk_of(bodies.size(), t, team), plate_chunks_[t], depth_[t]);
     }
-    // Body contacts then plate contacts, each in chunk order: the serial list.
-    stats.body_contacts = gather(body_chunks_, out, 0);
-    stats.plate_contacts = gather(plate_chunks_, out, stats.body_contacts);
-    for (const Depth& d : depth_) {
-        stats.max_overlap_fraction = std::max(stats.max_overlap_fraction, d.deepest);
-        stats.gross_overlaps += d.gross;
-    }
-    return stats;
+    return gather_chunks(out);
 }
 
 ContactSearchStats ContactFinder::find_awake(const SphereTable& spheres, BodyView bodies,
@@ -171,14 +157,7 @@ ContactSearchStats ContactFinder::find_awake(const SphereTable& spheres, BodyVie
                                              double travel) {
     pairs_.update(spheres.position, spheres.radius, spheres.body, step.box, travel, threads);
     const SearchInput in{spheres, bodies, species, step.plates};
-    const auto slots = static_cast<size_t>(std::max(threads, 1));
-    body_chunks_.resize(slots);
-    plate_chunks_.resize(slots);
-    depth_.assign(slots, Depth{});
-    for (size_t t = 0; t < slots; ++t) {  // a team smaller than asked leaves slots unfilled
-        body_chunks_[t].clear();
-        plate_chunks_[t].clear();
-    }
+    start_chunks(threads);
     if (threads <= 1) {
         find_awake_contacts(pairs_, in, awake, coasting, {0, awake.size()}, body_chunks_[0],
                             plate_chunks_[0], depth_[0]);
@@ -190,8 +169,23 @@ ContactSearchStats ContactFinder::find_awake(const SphereTable& spheres, BodyVie
                                 body_chunks_[t], plate_chunks_[t], depth_[t]);
         }
     }
-    // Body contacts then plate contacts, each in chunk order: the serial list, and the order
-    // find() gives the same contacts in.
+    // The order find() gives the same contacts in.
+    return gather_chunks(out);
+}
+
+void ContactFinder::start_chunks(int threads) {
+    const auto slots = static_cast<size_t>(std::max(threads, 1));
+    body_chunks_.resize(slots);
+    plate_chunks_.resize(slots);
+    depth_.assign(slots, Depth{});
+    for (size_t t = 0; t < slots; ++t) {  // a team smaller than asked leaves slots unfilled
+        body_chunks_[t].clear();
+        plate_chunks_[t].clear();
+    }
+}
+
+ContactSearchStats ContactFinder::gather_chunks(std::vector<Contact>& out) const {
+    // Body contacts then plate contacts, each in chunk order: the serial list.
     ContactSearchStats stats;
     stats.body_contacts = gather(body_chunks_, out, 0);
     stats.plate_contacts = gather(plate_chunks_, out, stats.body_contacts);

@@ -64,6 +64,10 @@ class ContactFinder {
     };
 
   private:
+    // Empties one chunk of body contacts, of plate contacts and of depths per thread.
+    void start_chunks(int threads);
+    // `out` becomes the chunks' body contacts, then their plate contacts, in chunk order.
+    ContactSearchStats gather_chunks(std::vector<Contact>& out) const;
     // Appends the chunks to `out`, which holds `at` contacts, and returns how many they had.
     static size_t gather(const std::vector<std::vector<Contact>>& chunks, std::vector<Contact>& out,
                          size_t at);

@@ -5,9 +5,8 @@
 // serial loop would: the trajectory is the same, bit for bit, on any number of threads.
 #include <vector>
 
-#include "rodsea/engine/cpu/contact_resolution.hpp"
+#include "rodsea/engine/cpu/contact_response.hpp"
 #include "rodsea/engine/cpu/contact_search.hpp"
-#include "rodsea/engine/cpu/plate_projection.hpp"
 #include "rodsea/engine/cpu/sphere_table.hpp"
 #include "rodsea/engine/species_table.hpp"
 #include "rodsea/engine/step_backend.hpp"
@@ -36,10 +35,7 @@ class CpuBackend final : public StepBackend {
     SphereTable spheres_;
     ContactFinder finder_;
     std::vector<Contact> contacts_;
-    InverseInertia inverse_inertia_;
-    ContactResolver resolver_;
-    std::vector<PlateHit> plate_hits_;
-    PlateProjection plate_projection_;
+    ContactResponse response_;
 };
 
 }  // namespace rodsea::cpu
