@@ -41,8 +41,9 @@ const CommandSpec& plot_command_spec() {
          {"--only", "F,..",
           "only these figures, by file name (.png optional): --only g_r_theta,G_r_theta"},
          {"--quiet", "", "no notes on what was skipped"}},
-        "Runs /usr/bin/python3 (env RODSEA_PYTHON overrides) on rodsea_plot.py in the source "
-        "tree's scripts/ (env RODSEA_SCRIPTS_DIR overrides the folder); needs Debian's "
+        "Runs /usr/bin/python3 (env RODSEA_PYTHON overrides) on rodsea_plot.py in an installed "
+        "rodsea's share/rodsea/scripts, or else the source tree's scripts/ (env "
+        "RODSEA_SCRIPTS_DIR overrides the folder); needs Debian's "
         "python3-matplotlib, python3-numpy and python3-h5py: ./scripts/install-deps.sh installs "
         "them.\nExit codes: 0 done; 1 Python or one of its modules missing; 2 bad input (nothing "
         "written); 74 a file could not be read or written."};

@@ -1,7 +1,8 @@
 #pragma once
 // The Python programs rodsea runs (rodsea plot's figures, rodsea export's GSD writer): Debian's
-// /usr/bin/python3 (env RODSEA_PYTHON overrides) on a script in the source tree's scripts/ (env
-// RODSEA_SCRIPTS_DIR overrides the folder).
+// /usr/bin/python3 (env RODSEA_PYTHON overrides) on a script in the scripts' folder: env
+// RODSEA_SCRIPTS_DIR, else an installed rodsea's share/rodsea/scripts beside its bin/, else the
+// source tree's scripts/ that it was built from.
 #include <optional>
 #include <string>
 
