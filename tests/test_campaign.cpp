@@ -841,5 +841,70 @@ TEST(Campaign, BadOptionsAndChangedCampaignsAreRefusedBeforeAnyRunStarts) {
         << edited.err;
 }
 
+TEST(Campaign, AnotherCampaignsDirectoryIsRefusedAndNoTableShrinksWithoutAWord) {
+    const ScratchDir scratch("campaign-foreign");
+    const fs::path file = scratch.path() / "grid.toml";
+    std::ofstream(file) << kCampaign;
+    const std::string dir = (scratch.path() / "grid").string();
+    ASSERT_EQ(run_rodsea(
+                  {"campaign", "run", file.string(), "--out", dir, "--duration", "0.01", "--quiet"},
+                  scratch.path())
+                  .exit_code,
+              0);
+    ASSERT_EQ(
+        run_rodsea({"campaign", "collect", file.string(), "--out", dir, "--quiet"}, scratch.path())
+            .exit_code,
+        0);
+    const fs::path points = fs::path(dir) / "collected" / "points.csv";
+    const std::string collected = read_file(points);
+    ASSERT_EQ(csv_rows(points).size(), 4u);
+    const std::string started_with = read_file(fs::path(dir) / "campaign.toml");
+
+    // Another campaign (other drives: not one point in common) is refused by every command, and
+    // nothing in the directory changes.
+    std::string other = kCampaign;
+    for (const auto& [was, now] : {std::pair{"5.0", "4.0"}, {"7.0", "6.0"}})
+        for (std::size_t at = other.find(was); at != std::string::npos; at = other.find(was, at))
+            other.replace(at, 3, now);
+    const fs::path other_file = scratch.path() / "other.toml";
+    std::ofstream(other_file) << other;
+    for (const char* sub : {"status", "collect", "run"}) {
+        const ChildResult r =
+            run_rodsea({"campaign", sub, other_file.string(), "--out", dir}, scratch.path());
+        EXPECT_EQ(r.exit_code, 2) << sub << ": " << r.err;
+        EXPECT_NE(r.err.find("none of this campaign file's"), std::string::npos) << r.err;
+    }
+    EXPECT_EQ(read_file(points), collected);
+    EXPECT_EQ(read_file(fs::path(dir) / "campaign.toml"), started_with);
+
+    // The same points from a changed base: status and collect refuse them as run does.
+    std::string changed = kCampaign;
+    changed.replace(changed.find("side = 20.0"), 11, "side = 21.0");
+    const fs::path changed_file = scratch.path() / "changed.toml";
+    std::ofstream(changed_file) << changed;
+    for (const char* sub : {"status", "collect"}) {
+        const ChildResult r =
+            run_rodsea({"campaign", sub, changed_file.string(), "--out", dir}, scratch.path());
+        EXPECT_EQ(r.exit_code, 2) << sub << ": " << r.err;
+        EXPECT_NE(r.err.find("changed this point"), std::string::npos) << r.err;
+    }
+    EXPECT_EQ(read_file(points), collected);
+
+    // A value taken off an axis: collect writes the smaller table, says so and keeps the old one.
+    std::string fewer = kCampaign;
+    fewer.replace(fewer.find("values = [5.0, 7.0]"), 19, "values = [5.0]");
+    fewer.replace(fewer.find("\"drive.gamma\" = [5.0, 7.0]"), 26, "\"drive.gamma\" = 5.0");
+    fewer.replace(fewer.find("when = { \"drive.gamma\" = 7.0 }"), 30,
+                  "when = { \"drive.gamma\" = 5.0 }");
+    const fs::path fewer_file = scratch.path() / "fewer.toml";
+    std::ofstream(fewer_file) << fewer;
+    const ChildResult shrunk = run_rodsea(
+        {"campaign", "collect", fewer_file.string(), "--out", dir, "--quiet"}, scratch.path());
+    EXPECT_EQ(shrunk.exit_code, 0) << shrunk.err;
+    EXPECT_NE(shrunk.out.find("points.csv held 4 rows, now 2"), std::string::npos) << shrunk.out;
+    EXPECT_EQ(csv_rows(points).size(), 2u);
+    EXPECT_EQ(read_file(fs::path(dir) / "collected" / "points.previous.csv"), collected);
+}
+
 }  // namespace
 }  // namespace rodsea

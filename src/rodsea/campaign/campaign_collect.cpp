@@ -1,6 +1,7 @@
 #include "rodsea/campaign/campaign_collect.hpp"
 
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <optional>
 #include <ostream>
@@ -31,6 +32,34 @@ AnalyzeRequest request_of(const CampaignAnalysis& a) {
 
 std::string cell(double v) {
     return std::isfinite(v) ? exact_number(v) : "nan";
+}
+
+std::size_t data_rows(const std::string& csv) {
+    std::size_t lines = 0;
+    std::istringstream in(csv);
+    for (std::string line; std::getline(in, line);)
+        if (!line.empty() && line[0] != '#') ++lines;
+    return lines == 0 ? 0 : lines - 1;  // less the header
+}
+
+// Writes `table` with `text`; one that held more rows than `text` has (runs removed, values
+// taken off an axis) is kept first as <name>.previous.csv, and the sentence saying so is added
+// to `shrunk`: collect never loses rows without a word.
+void write_table(const fs::path& table, const std::string& text, std::vector<std::string>& shrunk) {
+    std::ifstream in(table, std::ios::binary);
+    if (in) {
+        std::ostringstream old;
+        old << in.rdbuf();
+        const std::size_t before = data_rows(old.str()), now = data_rows(text);
+        if (now < before) {
+            const fs::path kept = fs::path(table).replace_extension(".previous.csv");
+            write_file_atomically(kept, old.str());
+            shrunk.push_back(table.filename().string() + " held " + std::to_string(before) +
+                             " rows, now " + std::to_string(now) + ": the old table is kept as " +
+                             kept.string());
+        }
+    }
+    write_file_atomically(table, text);
 }
 
 }  // namespace
@@ -76,7 +105,7 @@ CollectResult collect_campaign(const CampaignPaths& paths, const Campaign& campa
 
     fs::create_directories(paths.collected());
     result.runs_table = paths.collected() / "runs.csv";
-    write_file_atomically(result.runs_table, summary_table_csv(analyses));
+    write_table(result.runs_table, summary_table_csv(analyses), result.shrunk);
 
     // One row per point: its coordinates, then each scalar combined over its replicates.
     std::vector<std::string> first{"point"};
@@ -118,7 +147,7 @@ CollectResult collect_campaign(const CampaignPaths& paths, const Campaign& campa
         "sd/sqrt(n) and their own errors sqrt(sum sigma^2)/n) and chi2/dof of the spread against "
         "the runs' own errors (nan with one run); units as in runs.csv and docs/analysis.md";
     result.points_table = paths.collected() / "points.csv";
-    write_file_atomically(result.points_table, table.text(comment));
+    write_table(result.points_table, table.text(comment), result.shrunk);
     return result;
 }
 

@@ -16,6 +16,9 @@ struct CollectResult {
     std::size_t runs_analysed = 0, points_with_runs = 0;
     std::size_t runs_reused = 0;       // of runs_analysed, taken from their earlier analysis
     std::vector<std::string> missing;  // run ids not finished
+    // A table that would hold fewer rows than before keeps its old self beside it
+    // (<name>.previous.csv); one sentence each, saying so.
+    std::vector<std::string> shrunk;
 };
 
 // Writes collected/points.csv and collected/runs.csv (atomically). Each point's scalar is the

@@ -46,7 +46,8 @@ const CommandSpec& campaign_command_spec() {
         "ETA (readable while a runner works)\n"
         "  collect  analyses every finished run ([analysis] of the campaign) and writes "
         "DIR/collected/points.csv (a row per point, replicates combined), runs.csv and the "
-        "campaign's [[figure]]s in collected/figures/; names what is missing\n"
+        "campaign's [[figure]]s in collected/figures/; names what is missing, and keeps a table "
+        "that would shrink as <name>.previous.csv\n"
         "  submit   SLURM: the runs not done as one sbatch job array (a task per run, or --pack "
         "runs per task) in DIR/slurm/; SIGTERM --signal-seconds before the wall time makes "
         "every run checkpoint, and a follow-up job (afterany) submits what is left, --resubmit "
@@ -139,6 +140,15 @@ Loaded load(const Arguments& a, bool remembered_scaling = true) {
         l.scaling.duration = parse_number("--duration", *t, 1e-6, 1e6, "s");
     l.grid = expand_campaign(l.campaign, l.scaling, calibration_table_lookup());
     return l;
+}
+
+// Every run's plan: what it runs, and what its stored config must be.
+std::vector<RunPlan> plans_of(const Loaded& l) {
+    std::vector<RunPlan> plans;
+    plans.reserve(l.grid.runs.size());
+    for (const CampaignRun& r : l.grid.runs)
+        plans.push_back(run_plan(l.campaign, l.grid, r, l.scaling, calibration_table_lookup()));
+    return plans;
 }
 
 // plan and run: the ensemble is one process, so --jobs has no meaning beside it.
@@ -234,9 +244,7 @@ int run(const Arguments& a, std::ostream& out, std::ostream& err) {
     } else if (a.value("--task")) {
         throw InvalidParameter("--task", *a.value("--task"), "--task together with --tasks");
     }
-    std::vector<RunPlan> plans;
-    for (const CampaignRun& r : l.grid.runs)
-        plans.push_back(run_plan(l.campaign, l.grid, r, l.scaling, calibration_table_lookup()));
+    const std::vector<RunPlan> plans = plans_of(l);
     const auto before = plans_before_extension(a, l, plans, o.quiet, out);
     prepare_campaign_dir(l.paths, l.campaign, l.scaling, l.grid, plans,
                          before ? &*before : nullptr);
@@ -291,9 +299,7 @@ int submit(const Arguments& a, std::ostream& out) {
         throw InvalidParameter("--out", dir,
                                "a directory whose path has no spaces, quotes, $ or % (it is "
                                "written into #SBATCH lines)");
-    std::vector<RunPlan> plans;
-    for (const CampaignRun& r : l.grid.runs)
-        plans.push_back(run_plan(l.campaign, l.grid, r, l.scaling, calibration_table_lookup()));
+    const std::vector<RunPlan> plans = plans_of(l);
     const auto before = plans_before_extension(a, l, plans, false, out);
     prepare_campaign_dir(l.paths, l.campaign, l.scaling, l.grid, plans,
                          before ? &*before : nullptr);
@@ -302,7 +308,7 @@ int submit(const Arguments& a, std::ostream& out) {
 
 int status(const Arguments& a, std::ostream& out) {
     const Loaded l = load(a);
-    check_campaign_dir(l.paths, l.scaling);
+    check_campaign_dir(l.paths, l.scaling, l.grid, plans_of(l));
     std::size_t counts[5] = {};
     std::size_t width = 3;
     for (const CampaignRun& r : l.grid.runs)
@@ -346,12 +352,14 @@ int status(const Arguments& a, std::ostream& out) {
 
 int collect(const Arguments& a, std::ostream& out) {
     const Loaded l = load(a);
-    check_campaign_dir(l.paths, l.scaling);
+    check_campaign_dir(l.paths, l.scaling, l.grid, plans_of(l));
     const CollectResult r =
         collect_campaign(l.paths, l.campaign, l.grid, out, a.has("--quiet"), a.has("--reanalyse"));
     out << "collect: " << r.runs_analysed << " runs of " << r.points_with_runs << " points ("
         << r.runs_reused << " unchanged since their analysis) -> " << r.points_table.string()
         << ", " << r.runs_table.string() << "\n";
+    for (const std::string& s : r.shrunk)
+        out << "collect: " << s << "\n";
     if (!r.missing.empty()) {
         out << "collect: " << r.missing.size() << " runs not finished (rodsea campaign run "
             << "continues them):";

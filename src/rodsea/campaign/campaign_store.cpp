@@ -3,10 +3,13 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "rodsea/cli/arguments.hpp"
+#include "rodsea/config/config_file.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
 #include "rodsea/io/run_lock.hpp"
@@ -62,6 +65,44 @@ void write_unless_same(const fs::path& path, const std::string& text) {
     if (read_text(path) != text) write_file_atomically(path, text);
 }
 
+// A directory whose runs/ holds points, none of them this campaign's, is another campaign's (or
+// this one's with every point renamed, by an axis added or renamed): its points would all count
+// as missing, its tables be replaced by empty ones, and new runs be mixed with foreign ones.
+void check_points_are_this_campaigns(const CampaignPaths& paths, const CampaignGrid& grid) {
+    std::error_code ec;
+    if (!fs::is_directory(paths.dir / "runs", ec)) return;
+    std::set<std::string> ours;
+    for (const CampaignRun& r : grid.runs)
+        ours.insert(fs::path(r.id).begin()->string());  // the point: the id's first part
+    std::vector<std::string> foreign;
+    for (const fs::directory_entry& e : fs::directory_iterator(paths.dir / "runs", ec)) {
+        if (!e.is_directory(ec)) continue;
+        const std::string point = e.path().filename().string();
+        if (ours.count(point)) return;
+        foreign.push_back(point);
+    }
+    if (foreign.empty()) return;
+    std::sort(foreign.begin(), foreign.end());
+    throw InvalidParameter(
+        "campaign", grid.runs.empty() ? std::string("(no runs)") : grid.runs.front().id,
+        "a point of the campaign in " + paths.dir.string(),
+        "it holds " + std::to_string(foreign.size()) + " points, none of this campaign file's (" +
+            foreign.front() + (foreign.size() > 1 ? ", ..." : "") +
+            "): give the file it was started with, or another --out");
+}
+
+// The config a run was written with is its plan's, or (an extension cut short leaves configs at
+// the longer duration beside the old scaling) the same but for its run length.
+bool is_config_of(const std::string& stored, const RunPlan& plan) {
+    if (stored == plan.config_toml) return true;
+    try {
+        return with_run_length(stored, "stored config", plan.control.duration, std::nullopt)
+                   .config_toml == plan.config_toml;
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
 }  // namespace
 
 bool ends_before(const RunProgress& progress, double duration) {
@@ -107,13 +148,24 @@ std::optional<CampaignScaling> read_campaign_scaling(const CampaignPaths& paths)
     return scaling;
 }
 
-void check_campaign_dir(const CampaignPaths& paths, const CampaignScaling& scaling) {
+void check_campaign_dir(const CampaignPaths& paths, const CampaignScaling& scaling,
+                        const CampaignGrid& grid, const std::vector<RunPlan>& plans) {
     std::error_code ec;
     if (!fs::is_directory(paths.dir, ec) || !fs::exists(paths.dir / "campaign.toml", ec))
         throw FileError(paths.dir.string(),
                         "no campaign here yet (rodsea campaign run starts it; --out names another "
                         "directory)");
     check_scaling(paths, scaling);
+    check_points_are_this_campaigns(paths, grid);
+    for (std::size_t i = 0; i < grid.runs.size(); ++i) {
+        const auto stored = read_text(paths.config(grid.runs[i]));
+        if (stored && !is_config_of(*stored, plans[i]))
+            throw InvalidParameter(
+                "campaign", grid.runs[i].id,
+                "the config it was started with (" + paths.config(grid.runs[i]).string() + ")",
+                "the campaign file or its base changed this point: give the file the directory "
+                "was started with");
+    }
 }
 
 void prepare_campaign_dir(const CampaignPaths& paths, const Campaign& campaign,
@@ -128,6 +180,7 @@ void prepare_campaign_dir(const CampaignPaths& paths, const Campaign& campaign,
         throw FileError(paths.dir.string(),
                         "exists, is not empty and holds no campaign: give another --out");
     if (!plans_before) check_scaling(paths, scaling);
+    check_points_are_this_campaigns(paths, grid);
     // Every existing config is compared before anything is written. Extended, a run's config
     // may be the one it started with or (an extension cut short) the one it is extended to.
     for (std::size_t i = 0; i < grid.runs.size(); ++i) {

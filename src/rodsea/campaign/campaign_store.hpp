@@ -38,8 +38,9 @@ struct CampaignPaths {
 // The default directory of a campaign: out/<campaign name>.
 std::filesystem::path default_campaign_dir(const Campaign& campaign);
 
-// Makes `dir` this campaign's directory, or checks that it already is: the same scaling, and for
-// every run already written the same config. A changed point is refused by name (nothing is
+// Makes `dir` this campaign's directory, or checks that it already is: the same scaling, points
+// of this campaign (a directory of another's is refused), and for every run already written the
+// same config. A changed point is refused by name (nothing is
 // written); new points (values added to an axis) are added. Throws InvalidParameter/FileError.
 // Extending (`plans_before`: every run's plan at the scaling the directory holds, which the
 // caller has checked may be extended to `scaling`), a run's config may instead be its plan
@@ -53,8 +54,11 @@ void prepare_campaign_dir(const CampaignPaths& paths, const Campaign& campaign,
 // holds no campaign yet. Throws FileError for a scaling.txt that is not one.
 std::optional<CampaignScaling> read_campaign_scaling(const CampaignPaths& paths);
 
-// Checks, without writing, that `dir` holds this campaign at this scaling (status, collect).
-void check_campaign_dir(const CampaignPaths& paths, const CampaignScaling& scaling);
+// Checks, without writing, that `dir` holds this campaign at this scaling (status, collect): its
+// points are this campaign's, and every run's stored config is its plan's (`plans`, one per run
+// of `grid`), as `prepare_campaign_dir` checks before a run.
+void check_campaign_dir(const CampaignPaths& paths, const CampaignScaling& scaling,
+                        const CampaignGrid& grid, const std::vector<RunPlan>& plans);
 
 enum class RunState { pending, running, interrupted, done, failed };
 const char* to_string(RunState state);
