@@ -184,6 +184,47 @@ TEST(CampaignFile, ARunConfigIsNamedAsOne) {
     }
 }
 
+// A point must run what its name says (issue 82, class 3): its axis values are not replaced by
+// an override, the seeds stay the replicates', and a zipped axis cannot set a key beside its
+// alternative, which a single config refuses.
+TEST(CampaignFile, APointRunsWhatItsNameSays) {
+    const std::vector<BadCampaign> cases{
+        {"[[axis]]\nkey = \"species.medium.area_fraction\"\nvalues = [0.1, 0.3]\n"
+         "[[override]]\nwhen = { \"species.medium.area_fraction\" = 0.1 }\n"
+         "set = { \"species.medium.area_fraction\" = 0.3 }\n",
+         "override[0].set = species.medium.area_fraction: allowed a key no axis sets"},
+        {"[[axis]]\nkey = \"run.seed\"\nvalues = [1, 2]\n",
+         "axis = run.seed: allowed a config key other than run.seed"},
+        {"[[override]]\nset = { \"run.seed\" = 7 }\n",
+         "override[0].set = run.seed: allowed a config key other than run.seed"},
+        {"[[axis]]\nkeys = [\"species.medium.length\", \"species.medium.aspect_ratio\"]\n"
+         "values = [[2.5, 3.125], [3.0, 3.75]]\n",
+         "species.medium.aspect_ratio and species.medium.length: allowed one of them"},
+        // Two overrides that both apply to a point and set one key: which would it run?
+        {"[[axis]]\nkey = \"drive.gamma\"\nvalues = [5.0, 7.0]\n"
+         "[[override]]\nset = { \"time.duration\" = 0.2 }\n"
+         "[[override]]\nwhen = { \"drive.gamma\" = 7.0 }\nset = { \"time.duration\" = 0.3 }\n",
+         "time.duration set twice: allowed each key once per point"},
+    };
+    for (const BadCampaign& c : cases) {
+        try {
+            grid_of(c.text);
+            ADD_FAILURE() << "accepted:\n" << c.text;
+        } catch (const std::exception& e) {
+            EXPECT_NE(std::string(e.what()).find(c.message), std::string::npos)
+                << c.text << "\n-> " << e.what();
+        }
+    }
+    // What stays allowed: an axis over the alternative of a key the base gives (the base's
+    // length gives way to the axis's aspect ratio), and overrides of other keys.
+    const CampaignGrid grid = grid_of(
+        "[[axis]]\nkey = \"species.medium.aspect_ratio\"\nvalues = [3.125, 5.0]\n"
+        "[[override]]\nwhen = { \"species.medium.aspect_ratio\" = 5.0 }\n"
+        "set = { \"time.duration\" = 0.2 }\n");
+    ASSERT_EQ(grid.points.size(), 2u);
+    EXPECT_DOUBLE_EQ(grid.points[1].plan.control.duration, 0.2);
+}
+
 TEST(CampaignFile, ImpossiblePackingsAreRefusedBeforeAnythingRuns) {
     try {
         grid_of("[[axis]]\nkey = \"species.medium.area_fraction\"\nvalues = [0.2, 0.88]\n");

@@ -74,10 +74,12 @@ const std::vector<CampaignKey>& campaign_keys() {
          "error bars of `collect`. In [1, 1000]."},
         {"campaign", "first_seed", "integer", "", "1",
          "The first replicate's run.seed (the base's run.seed is replaced). In [0, 2^62]."},
-        {"axis", "key", "string", "", "—", "The config key this axis sets. Excludes `keys`."},
+        {"axis", "key", "string", "", "—",
+         "The config key this axis sets (not `run.seed`: replicates give the seeds). Excludes "
+         "`keys`."},
         {"axis", "keys", "array of strings", "", "—",
          "Several keys set together (a zipped axis): `values` is then an array of arrays, one "
-         "value per key."},
+         "value per key. Never a key beside its alternative (`length` and `aspect_ratio`)."},
         {"axis", "values", "array", "the key's", "required",
          "The values, in the key's unit (docs/config.md); each is checked against the key's "
          "range before anything runs."},
@@ -85,7 +87,9 @@ const std::vector<CampaignKey>& campaign_keys() {
          "Axis keys and values a point must have, e.g. `{ \"species.medium.area_fraction\" = "
          "0.8 }`."},
         {"override", "set", "table", "", "required",
-         "Keys and values set at those points, e.g. `{ \"time.duration\" = 200.0 }`."},
+         "Keys and values set at those points, e.g. `{ \"time.duration\" = 200.0 }`: not an "
+         "axis key (a point is named by its axis values) nor `run.seed`, and no key that another "
+         "override also sets at the same point."},
         {"analysis", "from", "real", "s", "automatic",
          "Start of the steady window of every run (`rodsea analyze --from`); without it each "
          "run's own automatic window (docs/analysis.md)."},
@@ -588,9 +592,29 @@ class CampaignReader {
                 list.empty() ? "an axis key (there are no axes)" : "an axis key: " + list,
                 guess ? "did you mean '" + *guess + "'?" : source_);
         };
-        for (std::size_t i = 0; i < c.overrides.size(); ++i)
+        // The seeds are the replicates': an axis or override over run.seed would give several
+        // points one seed, or the replicates of one point the same.
+        const std::string seeds_are_replicates =
+            "campaign.replicates and campaign.first_seed give each point its seeds "
+            "(first_seed, first_seed + 1, ...)";
+        if (std::find(axis_keys.begin(), axis_keys.end(), "run.seed") != axis_keys.end())
+            throw InvalidParameter("axis", "run.seed", "a config key other than run.seed",
+                                   seeds_are_replicates);
+        for (std::size_t i = 0; i < c.overrides.size(); ++i) {
+            const std::string path = "override[" + std::to_string(i) + "]";
             for (const KeySetting& w : c.overrides[i].when)
-                must_be_axis(w.first, "override[" + std::to_string(i) + "].when");
+                must_be_axis(w.first, path + ".when");
+            for (const KeySetting& s : c.overrides[i].set) {
+                if (s.first == "run.seed")
+                    throw InvalidParameter(path + ".set", "run.seed",
+                                           "a config key other than run.seed",
+                                           seeds_are_replicates);
+                if (std::find(axis_keys.begin(), axis_keys.end(), s.first) != axis_keys.end())
+                    throw InvalidParameter(path + ".set", s.first, "a key no axis sets",
+                                           "a point is named by its axis values; an override "
+                                           "that changed one would run another point");
+            }
+        }
         for (std::size_t i = 0; i < c.figures.size(); ++i) {
             const CampaignFigure& f = c.figures[i];
             const std::string path = "figure[" + std::to_string(i) + "]";
@@ -792,6 +816,25 @@ RunPlan config_with_settings(const std::string& base_toml, const std::string& ba
         t.entries[p.key] = {checked_value(spec, v, key, what), 0};
         if (!spec.alternative.empty()) t.entries.erase(spec.alternative);
     };
+    // A point runs what its name says: each key is set once (an override or a second setting
+    // of an axis key would replace the coordinate the point is named by), and never beside its
+    // alternative (length and aspect_ratio), which a single config refuses as well.
+    std::vector<std::string> set_keys;
+    for (const KeySetting& s : settings) {
+        const KeyPath p = split_key(s.first, what);
+        const std::string table = p.table == "species" ? "species." + p.species : p.table;
+        const config::KeySpec& spec = key_spec(p, s.first, what);
+        const auto was_set = [&](const std::string& key) {
+            return std::find(set_keys.begin(), set_keys.end(), table + "." + key) != set_keys.end();
+        };
+        if (was_set(p.key))
+            throw InvalidParameter(what, s.first + " set twice", "each key once per point",
+                                   "an override sets a key its point is named by");
+        if (!spec.alternative.empty() && was_set(spec.alternative))
+            throw InvalidParameter(what, s.first + " and " + table + "." + spec.alternative,
+                                   "one of them", "a config gives exactly one of the two");
+        set_keys.push_back(table + "." + p.key);
+    }
     for (const KeySetting& s : settings)
         set(s.first, s.second);
     try {
