@@ -225,6 +225,35 @@ TEST(CampaignFile, APointRunsWhatItsNameSays) {
     EXPECT_DOUBLE_EQ(grid.points[1].plan.control.duration, 0.2);
 }
 
+// A grid too large to plan is refused at once, with its size and cost, not expanded for minutes.
+TEST(CampaignFile, AGridTooLargeToPlanIsRefusedBeforeItIsExpanded) {
+    const auto axis = [](const std::string& key, int n, double first) {
+        std::string values;
+        for (int i = 0; i < n; ++i)
+            values += (i ? ", " : "") + std::to_string(first + 0.001 * i);
+        return "[[axis]]\nkey = \"" + key + "\"\nvalues = [" + values + "]\n";
+    };
+    const std::string cube = axis("drive.gamma", 30, 5.0) + axis("time.duration", 30, 0.1) +
+                             axis("species.medium.area_fraction", 30, 0.1);
+    try {
+        grid_of(cube);
+        FAIL() << "27 000 points were expanded";
+    } catch (const InvalidParameter& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("30 x 30 x 30 points x 1 replicates = 27000 runs"), std::string::npos)
+            << what;
+        EXPECT_NE(what.find("at most 10000 points"), std::string::npos) << what;
+        EXPECT_NE(what.find("sphere-steps"), std::string::npos) << what;
+    }
+    // Few points with many replicates count by their runs.
+    try {
+        grid_of("[campaign]\nreplicates = 1000\n" + axis("drive.gamma", 200, 5.0));
+        FAIL() << "200 000 runs were expanded";
+    } catch (const InvalidParameter& e) {
+        EXPECT_NE(std::string(e.what()).find("= 200000 runs"), std::string::npos) << e.what();
+    }
+}
+
 TEST(CampaignFile, ImpossiblePackingsAreRefusedBeforeAnythingRuns) {
     try {
         grid_of("[[axis]]\nkey = \"species.medium.area_fraction\"\nvalues = [0.2, 0.88]\n");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <string_view>
 
 #include "rodsea/analyze/analysis_options.hpp"
@@ -9,6 +10,7 @@
 #include "rodsea/builder/initial_state.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/number_text.hpp"
+#include "rodsea/run/plan_report.hpp"
 #include "rodsea/run/steady_stop.hpp"
 
 namespace rodsea {
@@ -84,6 +86,69 @@ void check_analysis_window(const CampaignAnalysis& a, const RunPlan& plan,
             "frames are " + format_number(interval) + " s apart at " + what);
 }
 
+// The point at `index` (a value of each axis), with its overrides applied and its plan (first
+// replicate's seed) validated as a single config's.
+CampaignPoint make_point(const Campaign& c, const std::vector<std::size_t>& index,
+                         const CampaignScaling& scaling, const EpsilonLookup& epsilon) {
+    CampaignPoint p;
+    for (std::size_t a = 0; a < c.axes.size(); ++a)
+        for (std::size_t k = 0; k < c.axes[a].keys.size(); ++k)
+            p.coordinates.emplace_back(c.axes[a].keys[k], c.axes[a].values[index[a]][k]);
+    p.name = point_name(p.coordinates);
+    p.settings = p.coordinates;
+    for (const CampaignOverride& o : c.overrides) {
+        const bool applies = std::all_of(o.when.begin(), o.when.end(), [&](const KeySetting& w) {
+            return std::any_of(p.coordinates.begin(), p.coordinates.end(),
+                               [&](const KeySetting& x) {
+                                   return x.first == w.first && same_value(x.second, w.second);
+                               });
+        });
+        if (applies) p.settings.insert(p.settings.end(), o.set.begin(), o.set.end());
+    }
+    std::vector<KeySetting> seeded = p.settings;
+    seeded.emplace_back("run.seed", static_cast<std::int64_t>(c.first_seed));
+    const std::string what = "campaign point " + p.name;
+    p.plan = config_with_settings(c.base_toml, c.base_source, seeded, what, scaling, epsilon);
+    try {
+        check_steady_series(p.plan);
+    } catch (const InvalidParameter& e) {
+        throw e.in_context(what);
+    }
+    check_analysis_window(c.analysis, p.plan, what);
+    const PackingCheck packing = check_packing(p.plan.engine, p.plan.counts);
+    if (!packing.ok)
+        throw InvalidParameter("species", "the counts of " + what, "a packing that fits",
+                               packing.message);
+    return p;
+}
+
+// A grid too large to plan (a million points took minutes and gigabytes to expand) is refused
+// before it is expanded: its size, and what it would cost if every run cost its first point's.
+void refuse_unplannable(const Campaign& c, const CampaignScaling& scaling,
+                        const EpsilonLookup& epsilon) {
+    double points = 1.0;
+    std::string product;
+    for (const CampaignAxis& a : c.axes) {
+        points *= static_cast<double>(a.values.size());
+        product += (product.empty() ? "" : " x ") + std::to_string(a.values.size());
+    }
+    const double runs = points * c.replicates;
+    if (points <= kMaxCampaignPoints && runs <= kMaxCampaignRuns) return;
+    const CampaignPoint first =
+        make_point(c, std::vector<std::size_t>(c.axes.size(), 0), scaling, epsilon);
+    const double sphere_steps = static_cast<double>(estimate_resources(first.plan).spheres) *
+                                static_cast<double>(first.plan.total_steps());
+    throw InvalidParameter(
+        "axis",
+        product + " points x " + std::to_string(c.replicates) +
+            " replicates = " + format_number(runs) + " runs",
+        "at most " + format_number(kMaxCampaignPoints) + " points and " +
+            format_number(kMaxCampaignRuns) + " runs in one campaign",
+        "a run of its first point takes " + format_number(sphere_steps) +
+            " sphere-steps, so all would take about " + format_number(sphere_steps * runs) +
+            "; split it into campaigns of fewer values, each with its own --out");
+}
+
 }  // namespace
 
 CampaignGrid expand_campaign(const Campaign& c, const CampaignScaling& scaling,
@@ -94,43 +159,15 @@ CampaignGrid expand_campaign(const Campaign& c, const CampaignScaling& scaling,
     AnalysisOptions unused;
     for (const auto& [key, value] : c.analysis.parameters)
         set_analysis_option(unused, key, value, campaign_analysis_parameter_name(key));
+    refuse_unplannable(c, scaling, epsilon);
     CampaignGrid grid;
+    std::set<std::string> names;
     std::vector<std::size_t> index(c.axes.size(), 0);
     while (true) {
-        CampaignPoint p;
-        for (std::size_t a = 0; a < c.axes.size(); ++a)
-            for (std::size_t k = 0; k < c.axes[a].keys.size(); ++k)
-                p.coordinates.emplace_back(c.axes[a].keys[k], c.axes[a].values[index[a]][k]);
-        p.name = point_name(p.coordinates);
-        for (const CampaignPoint& q : grid.points)
-            if (q.name == p.name)
-                throw InvalidParameter("axis", p.name, "each point once",
-                                       "two values of an axis are the same number");
-        p.settings = p.coordinates;
-        for (const CampaignOverride& o : c.overrides) {
-            const bool applies =
-                std::all_of(o.when.begin(), o.when.end(), [&](const KeySetting& w) {
-                    return std::any_of(
-                        p.coordinates.begin(), p.coordinates.end(), [&](const KeySetting& x) {
-                            return x.first == w.first && same_value(x.second, w.second);
-                        });
-                });
-            if (applies) p.settings.insert(p.settings.end(), o.set.begin(), o.set.end());
-        }
-        std::vector<KeySetting> seeded = p.settings;
-        seeded.emplace_back("run.seed", static_cast<std::int64_t>(c.first_seed));
-        const std::string what = "campaign point " + p.name;
-        p.plan = config_with_settings(c.base_toml, c.base_source, seeded, what, scaling, epsilon);
-        try {
-            check_steady_series(p.plan);
-        } catch (const InvalidParameter& e) {
-            throw e.in_context(what);
-        }
-        check_analysis_window(c.analysis, p.plan, what);
-        const PackingCheck packing = check_packing(p.plan.engine, p.plan.counts);
-        if (!packing.ok)
-            throw InvalidParameter("species", "the counts of " + what, "a packing that fits",
-                                   packing.message);
+        CampaignPoint p = make_point(c, index, scaling, epsilon);
+        if (!names.insert(p.name).second)
+            throw InvalidParameter("axis", p.name, "each point once",
+                                   "two values of an axis are the same number");
         grid.points.push_back(std::move(p));
         // The next index of the product, the last axis fastest.
         std::size_t a = c.axes.size();

@@ -34,6 +34,11 @@ struct CampaignGrid {
     std::vector<CampaignRun> runs;  // point by point, replicates together
 };
 
+// The largest grid planned: 10 000 points take seconds and a few hundred MB to expand and
+// check; a larger one is refused before it is expanded, with its size and its first point's cost.
+inline constexpr double kMaxCampaignPoints = 10'000;
+inline constexpr double kMaxCampaignRuns = 100'000;
+
 // Throws InvalidParameter naming the point and key (or the packing that cannot be built).
 CampaignGrid expand_campaign(const Campaign& campaign, const CampaignScaling& scaling,
                              const EpsilonLookup& epsilon);
