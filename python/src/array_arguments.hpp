@@ -12,6 +12,7 @@
 #include "rodsea/error.hpp"
 #include "rodsea/math/periodic_box.hpp"
 #include "rodsea/math/vec3.hpp"
+#include "rodsea/number_text.hpp"
 
 namespace rodsea::python {
 
@@ -44,11 +45,40 @@ inline std::vector<Vec3> points_of(const Doubles& a, const char* name) {
     return v;
 }
 
-inline std::vector<double> values_of(const Doubles& a, std::size_t n, const char* name) {
+// One row of `name` per row of `per`: the arrays describe the same bodies.
+inline void require_rows(std::size_t rows, std::size_t expected, const char* name,
+                         const char* per) {
+    if (rows != expected)
+        throw InvalidParameter(name, std::to_string(rows) + " rows",
+                               std::to_string(expected) + " rows, one per row of " + per);
+}
+
+// One value per point, finite unless `nan_allowed` (a -1/2 defect's orientation is NaN).
+inline std::vector<double> values_of(const Doubles& a, std::size_t n, const char* name,
+                                     bool nan_allowed = false) {
     if (a.ndim() != 1 || static_cast<std::size_t>(a.shape(0)) != n)
         throw InvalidParameter(name, "an array of another shape",
                                "shape (" + std::to_string(n) + ",)");
-    return std::vector<double>(a.data(), a.data() + n);
+    std::vector<double> v(a.data(), a.data() + n);
+    for (std::size_t i = 0; i < n; ++i)
+        if (!std::isfinite(v[i]) && !(nan_allowed && std::isnan(v[i])))
+            throw InvalidParameter(std::string(name) + "[" + std::to_string(i) + "]",
+                                   format_number(v[i]), "a finite number");
+    return v;
+}
+
+// Any number of values, as values_of.
+inline std::vector<double> all_values_of(const Doubles& a, const char* name) {
+    if (a.ndim() != 1)
+        throw InvalidParameter(name, "an array of " + std::to_string(a.ndim()) + " dimensions",
+                               "shape (N,)");
+    return values_of(a, static_cast<std::size_t>(a.shape(0)), name);
+}
+
+// m of an m-fold order (1 polar, 2 nematic, ...).
+inline int fold_of(int m) {
+    if (m < 1 || m > 12) throw InvalidParameter("m", std::to_string(m), "[1, 12]");
+    return m;
 }
 
 inline py::array_t<double> array(const std::vector<double>& v) {

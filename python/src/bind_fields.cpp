@@ -14,6 +14,7 @@
 #include "rodsea/analysis/contour_length.hpp"
 #include "rodsea/analysis/defect_tracks.hpp"
 #include "rodsea/analysis/flock_tracks.hpp"
+#include "rodsea/analysis/histogram_bins.hpp"
 #include "rodsea/analysis/nematic_defects.hpp"
 #include "rodsea/error.hpp"
 
@@ -27,6 +28,9 @@ FieldGrid grid_of(const PeriodicBox2D& box, double cell) {
     if (!(cell > 0.0) || !std::isfinite(cell) || cell > std::min(box.lx, box.ly))
         throw InvalidParameter("cell", format_number(cell) + " mm",
                                "(0, " + format_number(std::min(box.lx, box.ly)) + "] mm");
+    require_bins("cell", format_number(cell) + " mm",
+                 std::floor(box.lx / cell) * std::floor(box.ly / cell),
+                 "the box sides / cell, squared");
     return FieldGrid::of(box, cell);
 }
 
@@ -60,7 +64,7 @@ std::vector<NematicDefect> defects_of(const Doubles& x, const Doubles& y, const 
     const auto n = static_cast<std::size_t>(x.size());
     const std::vector<double> xs = values_of(x, n, "x"), ys = values_of(y, n, "y"),
                               qs = values_of(charge, n, "charge"),
-                              os = values_of(orientation, n, "orientation");
+                              os = values_of(orientation, n, "orientation", true);
     std::vector<NematicDefect> d(n);
     for (std::size_t i = 0; i < n; ++i) {
         if (!std::isfinite(xs[i]) || !std::isfinite(ys[i]))
@@ -88,10 +92,11 @@ void bind_fields(py::module_& m) {
             std::vector<Vec3> v;
             if (!velocities.is_none()) {
                 v = points_of(velocities.cast<Doubles>(), "velocities");
-                if (v.size() != p.size())
-                    throw InvalidParameter("velocities", "another length",
-                                           std::to_string(p.size()) + " rows, one per position");
+                require_rows(v.size(), p.size(), "velocities", "positions");
             }
+            if (!std::isfinite(body_area) || body_area < 0.0)
+                throw InvalidParameter("body_area", format_number(body_area) + " mm²",
+                                       "a finite area >= 0 mm²");
             const GroupFields f = coarse_grain(g, b, p, a, v, body_area);
             const auto ny = static_cast<std::size_t>(g.ny), nx = static_cast<std::size_t>(g.nx);
             py::dict out;

@@ -43,8 +43,7 @@ void bind_observables(py::module_& m) {
     m.def(
         "order_parameter",
         [](const Doubles& angles, int m_fold) {
-            const std::vector<double> a(angles.data(), angles.data() + angles.size());
-            return orientational_order(a, m_fold);
+            return orientational_order(all_values_of(angles, "angles"), fold_of(m_fold));
         },
         py::arg("angles"), py::arg("m") = 1,
         "|⟨(cos mθ, sin mθ)⟩|: m = 1 the polar order P, m = 2 the nematic order S");
@@ -56,8 +55,17 @@ void bind_observables(py::module_& m) {
             const auto r = q.unchecked<2>();
             py::array_t<double> out(q.shape(0));
             auto w = out.mutable_unchecked<1>();
-            for (py::ssize_t i = 0; i < q.shape(0); ++i)
-                w(i) = in_plane_angle({r(i, 0), r(i, 1), r(i, 2), r(i, 3)});
+            for (py::ssize_t i = 0; i < q.shape(0); ++i) {
+                const Quat qi{r(i, 0), r(i, 1), r(i, 2), r(i, 3)};
+                // Unit within 10⁻³, as a trajectory's quaternions are checked.
+                const double norm =
+                    std::sqrt(qi.w * qi.w + qi.x * qi.x + qi.y * qi.y + qi.z * qi.z);
+                if (!(std::abs(norm - 1.0) <= 1e-3))
+                    throw InvalidParameter("quaternions[" + std::to_string(i) + "]",
+                                           "of norm " + format_number(norm),
+                                           "a unit quaternion (w, x, y, z), within 1e-3");
+                w(i) = in_plane_angle(qi);
+            }
             return out;
         },
         py::arg("quaternions"), "θ of each body's axis in the x-y plane (thick → thin), rad");
@@ -188,6 +196,8 @@ void bind_observables(py::module_& m) {
                 const std::vector<Vec3> rp = points_of(rod_positions, "rod_positions");
                 const std::vector<Vec3> rv = points_of(rod_velocities, "rod_velocities");
                 const std::vector<double> ra = values_of(rod_angles, rp.size(), "rod_angles");
+                require_rows(mv.size(), mp.size(), "medium_velocities", "medium_positions");
+                require_rows(rv.size(), rp.size(), "rod_velocities", "rod_positions");
                 self.compute(query_grid(b, mp), mv, rp, ra, rv);
                 return self;
             },
@@ -212,15 +222,24 @@ void bind_observables(py::module_& m) {
             const auto frames = static_cast<std::size_t>(angles.shape(0));
             const auto bodies = static_cast<std::size_t>(angles.shape(1));
             const std::span<const float> a(angles.data(), frames * bodies);
-            return array(orientation_autocorrelation(a, frames, bodies, m_fold, max_lag));
+            for (std::size_t i = 0; i < a.size(); ++i)
+                if (!std::isfinite(a[i]))
+                    throw InvalidParameter("angles[" + std::to_string(i / bodies) + ", " +
+                                               std::to_string(i % bodies) + "]",
+                                           format_number(a[i]), "a finite angle, rad");
+            return array(orientation_autocorrelation(a, frames, bodies, fold_of(m_fold), max_lag));
         },
         py::arg("angles"), py::arg("m") = 1, py::arg("max_lag"),
         "C(t) = ⟨cos m(θ(t₀+t) − θ(t₀))⟩ at lags 0 … max_lag frames (unwrapped angles)");
     m.def(
         "rotational_diffusion",
         [](const Doubles& c, double interval, int m_fold, double floor) {
-            const std::vector<double> v(c.data(), c.data() + c.size());
-            return rotational_diffusion_from(v, interval, m_fold, floor, fit_lag_count(v, floor));
+            const std::vector<double> v = all_values_of(c, "c");
+            require_positive("interval", interval, "s");
+            if (!(floor > 0.0 && floor < 1.0))
+                throw InvalidParameter("floor", format_number(floor), "(0, 1)");
+            return rotational_diffusion_from(v, interval, fold_of(m_fold), floor,
+                                             fit_lag_count(v, floor));
         },
         py::arg("c"), py::arg("interval"), py::arg("m") = 1, py::arg("floor") = 0.2,
         "D_r (rad²/s) from −ln C = m² D_r t over the lags where C ≥ floor");

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 
 #include "bindings.hpp"
 #include "config.hpp"
@@ -37,20 +38,29 @@ class PySimulation {
               Simulation::resume(plan_.engine, std::move(bodies), step,
                                  {.threads = threads, .backend = plan_.control.backend}))) {}
 
-    // Steps without the GIL: other Python threads run meanwhile. Exactly one of steps and
-    // seconds (rounded to whole steps of dt).
+    // Steps without the GIL: other Python threads run meanwhile, but none of them may use this
+    // Simulation until run() returns (sim() refuses them). Exactly one of steps and seconds
+    // (rounded to whole steps of dt), at most time.duration's largest value of simulated time.
     std::uint64_t run(std::optional<long long> steps, std::optional<double> seconds) {
         if (steps.has_value() == seconds.has_value())
             throw InvalidParameter("run", "steps and seconds", "exactly one of them");
+        const double most_steps = kMostSeconds / plan_.engine.dt;
         long long n = 0;
         if (steps) {
-            if (*steps < 0) throw InvalidParameter("steps", std::to_string(*steps), ">= 0");
+            if (*steps < 0 || static_cast<double>(*steps) > most_steps)
+                throw InvalidParameter("steps", std::to_string(*steps),
+                                       "[0, " + format_number(std::floor(most_steps)) + "]",
+                                       "at most " + format_number(kMostSeconds) + " s of dt " +
+                                           format_number(plan_.engine.dt) + " s");
             n = *steps;
         } else {
-            if (!std::isfinite(*seconds) || *seconds < 0.0)
-                throw InvalidParameter("seconds", format_number(*seconds) + " s", ">= 0 s");
+            if (!std::isfinite(*seconds) || *seconds < 0.0 || *seconds > kMostSeconds)
+                throw InvalidParameter("seconds", format_number(*seconds) + " s",
+                                       "[0, " + format_number(kMostSeconds) + "] s");
             n = std::llround(*seconds / plan_.engine.dt);
         }
+        const Busy busy(*this);
+        const std::shared_ptr<Simulation> sim = sim_;
         // In chunks: between them the GIL is taken back for a moment, so that Ctrl-C
         // (KeyboardInterrupt) stops a long run within a few milliseconds.
         constexpr long long kChunk = 1024;
@@ -59,7 +69,7 @@ class PySimulation {
             {
                 py::gil_scoped_release free_the_interpreter;
                 for (long long i = 0; i < chunk; ++i)
-                    sim_->step();
+                    sim->step();
             }
             done += chunk;
             if (PyErr_CheckSignals() != 0) throw py::error_already_set();
@@ -67,17 +77,49 @@ class PySimulation {
         return static_cast<std::uint64_t>(n);
     }
 
-    const Simulation& sim() const { return *sim_; }
-    const std::shared_ptr<Simulation>& shared() const { return sim_; }
+    // Every use of the engine but run()'s own goes through here: while run() steps it in
+    // another thread, reading it would give a state half stepped, and replacing it would pull it
+    // from under the stepping thread.
+    const Simulation& sim() const {
+        if (busy_)
+            throw std::runtime_error(
+                "this Simulation is running in another thread: use it once run() has returned "
+                "(a Simulation takes one call at a time)");
+        return *sim_;
+    }
+    const std::shared_ptr<Simulation>& shared() const {
+        sim();
+        return sim_;
+    }
     const RunPlan& plan() const { return plan_; }
 
     // Replaces the state (arrays as numpy gives them), checked as a resumed state is.
     void set_state(const BodyState& bodies) {
+        const Simulation& now = sim();
         sim_ = std::make_shared<Simulation>(
-            Simulation::resume(plan_.engine, bodies, sim_->step_count(), sim_->options()));
+            Simulation::resume(plan_.engine, bodies, now.step_count(), now.options()));
     }
 
   private:
+    // time.duration's range: what one call may ask for, so that seconds / dt stays a step count.
+    static constexpr double kMostSeconds = 1e6;
+
+    // Marks the Simulation as stepping for the life of a run() call. Set and cleared with the
+    // GIL held, as every other call checks it, so that no second call slips in between.
+    class Busy {
+      public:
+        explicit Busy(PySimulation& s) : s_(s) {
+            s_.sim();  // a second run() from another thread is refused like any other call
+            s_.busy_ = true;
+        }
+        ~Busy() { s_.busy_ = false; }
+        Busy(const Busy&) = delete;
+        Busy& operator=(const Busy&) = delete;
+
+      private:
+        PySimulation& s_;
+    };
+
     static std::shared_ptr<Simulation> make(const RunPlan& plan, std::optional<int> threads) {
         const PackingCheck packing = check_packing(plan.engine, plan.counts);
         if (!packing.ok)
@@ -94,6 +136,7 @@ class PySimulation {
     }
     RunPlan plan_;
     std::shared_ptr<Simulation> sim_;
+    bool busy_ = false;
 };
 
 // The base of a view: a capsule owning a reference to the engine whose memory it shows.

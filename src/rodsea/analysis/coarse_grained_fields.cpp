@@ -5,11 +5,16 @@
 #include <limits>
 #include <stdexcept>
 
+#include "rodsea/analysis/histogram_bins.hpp"
+
 namespace rodsea {
 
 FieldGrid FieldGrid::of(const PeriodicBox2D& box, double cell) {
     if (!(cell > 0.0) || !std::isfinite(cell) || !(box.lx > 0.0) || !(box.ly > 0.0))
         throw std::invalid_argument("FieldGrid: cell and box sides must be positive");
+    require_bins("fields.cell", format_number(cell) + " mm",
+                 std::floor(box.lx / cell) * std::floor(box.ly / cell),
+                 "the box sides / fields.cell, squared");
     FieldGrid g;
     g.nx = std::max(1, static_cast<int>(box.lx / cell));
     g.ny = std::max(1, static_cast<int>(box.ly / cell));

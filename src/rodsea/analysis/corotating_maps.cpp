@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "rodsea/analysis/histogram_bins.hpp"
 #include "rodsea/error.hpp"
 
 namespace rodsea {
@@ -15,6 +16,9 @@ CorotatingMaps::CorotatingMaps(const CorotatingParameters& p)
     require_positive("corotating.r_max", p.r_max, "mm");
     require_positive_count("corotating.r_bins", p.r_bins);
     require_positive_count("corotating.theta_bins", p.theta_bins);
+    require_bins("corotating.theta_bins", std::to_string(p.theta_bins),
+                 static_cast<double>(p.r_bins) * p.theta_bins,
+                 "corotating.r_bins × corotating.theta_bins");
     for (std::size_t k = 0; k <= nr_; ++k)
         r_edges_.push_back(r_max_ * static_cast<double>(k) / static_cast<double>(nr_));
     for (std::size_t t = 0; t <= nt_; ++t)

@@ -3,15 +3,31 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rodsea/analysis/histogram_bins.hpp"
 #include "rodsea/error.hpp"
 
 namespace rodsea {
 
-MediumVelocity::MediumVelocity(const MediumVelocityParameters& p)
-    : p_(p), bins_(static_cast<std::size_t>(std::ceil(p.r_max / p.bin))), sums_(bins_ * kColumns) {
+namespace {
+
+// Checked before the bins are allocated from them.
+const MediumVelocityParameters& checked(const MediumVelocityParameters& p) {
     require_positive("medium_velocity.bin", p.bin, "mm");
     require_positive("medium_velocity.r_max", p.r_max, "mm");
+    require_bins("medium_velocity.bin", format_number(p.bin) + " mm", p.r_max / p.bin,
+                 "medium_velocity.r_max / medium_velocity.bin");
+    if (!std::isfinite(p.d))
+        throw InvalidParameter("medium_velocity.d", format_number(p.d) + " mm",
+                               "a finite distance");
+    return p;
 }
+
+}  // namespace
+
+MediumVelocity::MediumVelocity(const MediumVelocityParameters& p)
+    : p_(checked(p)),
+      bins_(static_cast<std::size_t>(std::ceil(p.r_max / p.bin))),
+      sums_(bins_ * kColumns) {}
 
 MediumAtDistance MediumVelocity::compute(const PeriodicGrid2D& medium,
                                          std::span<const Vec3> medium_velocity,

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "rodsea/analysis/histogram_bins.hpp"
 #include "rodsea/error.hpp"
 
 namespace rodsea {
@@ -11,6 +12,8 @@ namespace rodsea {
 PairCorrelation::PairCorrelation(const PairCorrelationParameters& p) : bin_(p.bin) {
     require_positive("pair.bin", p.bin, "mm");
     require_positive("pair.r_max", p.r_max, "mm");
+    require_bins("pair.bin", format_number(p.bin) + " mm", p.r_max / p.bin,
+                 "pair.r_max / pair.bin");
     bins_ = static_cast<std::size_t>(std::ceil(p.r_max / p.bin));
     pairs_.assign(bins_, 0.0);
     cos1_.assign(bins_, 0.0);

@@ -7,6 +7,7 @@
 #include <variant>
 #include <vector>
 
+#include "rodsea/analysis/histogram_bins.hpp"
 #include "rodsea/analyze/observable.hpp"
 #include "rodsea/config/did_you_mean.hpp"
 #include "rodsea/error.hpp"
@@ -272,30 +273,22 @@ AnalysisOptions resolve_analysis_options(AnalysisOptions o, const AnalysisSetup&
         throw InvalidParameter(
             "segregation.cell", format_number(o.segregation_cell) + " mm",
             "at most the box side, " + format_number(std::min(setup.box.lx, setup.box.ly)) + " mm");
-    // Each histogram or grid is held in memory per species pair and frame block: bins beyond
-    // 10⁷ (80 MB each) resolve nothing a frame of 10⁵ bodies can fill.
-    constexpr double kMaxBins = 1e7;
-    const auto check_bins = [&](const char* key, const std::string& given, double bins,
-                                const std::string& from) {
-        if (bins <= kMaxBins) return;
-        throw InvalidParameter(key, given, "at most " + format_number(kMaxBins) + " bins",
-                               format_number(std::ceil(bins)) + " bins from " + from);
-    };
+    // Before any frame is read (the compute objects check again as they are built).
     const std::string pair_bin = format_number(o.pair_bin) + " mm";
-    check_bins("pair.bin", pair_bin, std::max(o.pair_r_max, o.medium_pair_r_max) / o.pair_bin,
-               "pair.r_max / pair.bin");
-    check_bins("medium_velocity.bin", format_number(o.medium_bin) + " mm",
-               o.medium_r_max / o.medium_bin, "medium_velocity.r_max / medium_velocity.bin");
-    check_bins("corotating.theta_bins", std::to_string(o.corotating_theta_bins),
-               static_cast<double>(o.corotating_r_bins) * o.corotating_theta_bins,
-               "corotating.r_bins × corotating.theta_bins");
-    check_bins(
+    require_bins("pair.bin", pair_bin, std::max(o.pair_r_max, o.medium_pair_r_max) / o.pair_bin,
+                 "pair.r_max / pair.bin");
+    require_bins("medium_velocity.bin", format_number(o.medium_bin) + " mm",
+                 o.medium_r_max / o.medium_bin, "medium_velocity.r_max / medium_velocity.bin");
+    require_bins("corotating.theta_bins", std::to_string(o.corotating_theta_bins),
+                 static_cast<double>(o.corotating_r_bins) * o.corotating_theta_bins,
+                 "corotating.r_bins × corotating.theta_bins");
+    require_bins(
         "segregation.cell", format_number(o.segregation_cell) + " mm",
         std::ceil(setup.box.lx / o.segregation_cell) * std::ceil(setup.box.ly / o.segregation_cell),
         "the box sides / segregation.cell, squared");
-    check_bins("fields.cell", format_number(o.field_cell) + " mm",
-               std::floor(setup.box.lx / o.field_cell) * std::floor(setup.box.ly / o.field_cell),
-               "the box sides / fields.cell, squared");
+    require_bins("fields.cell", format_number(o.field_cell) + " mm",
+                 std::floor(setup.box.lx / o.field_cell) * std::floor(setup.box.ly / o.field_cell),
+                 "the box sides / fields.cell, squared");
     return o;
 }
 
