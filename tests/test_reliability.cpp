@@ -136,6 +136,54 @@ TEST(FileValues, TrajectoryCorruptionsAreRefusedByEveryReaderNamingDatasetFrameA
             "position/time, frame 2");
     refused("/observables/polar_order_polar/value", 2, std::numeric_limits<double>::infinity(),
             "polar_order_polar");
+    // A column analyze does not itself use is checked as well: no reader takes a file with an
+    // impossible value in it.
+    refused("/observables/kinetic_energy_translational_polar/value", 3,
+            std::numeric_limits<double>::quiet_NaN(), "kinetic_energy_translational_polar");
+    refused("/observables/body_collision_rate/value", 1, -3.0, "body_collision_rate");
+    // A species index flipped to another species in range: the counts no longer match the
+    // config's.
+    refused("/particles/bodies/species", 0, std::int32_t{1}, "species holds 3 bodies of species 0");
+}
+
+// --resume --duration would extend a file with an impossible series value; a checkpoint whose
+// species were edited would simulate a polar rod as an apolar one. Both are refused, nothing
+// changes.
+TEST(ResumeChecks, StoredSeriesAndSpeciesAreCheckedBeforeARunGoesOn) {
+    const ScratchDir dir("reliability-series");
+    const fs::path a = make_run(dir.path() / "a", 0.01, 0.002);
+    const auto refused = [&](const std::function<void()>& damage, const std::string& expected) {
+        const fs::path b = dir.path() / "b";
+        fs::remove_all(b);
+        fs::copy(a, b);
+        damage();
+        const auto before = snapshot(b);
+        const ChildResult r =
+            run_rodsea({"run", "--resume", b.string(), "--duration", "0.02"}, dir.path());
+        EXPECT_EQ(r.exit_code, 74) << expected << ": " << r.err;
+        EXPECT_TRUE(contains(r.err, expected)) << r.err;
+        EXPECT_EQ(snapshot(b), before);
+    };
+    const std::string b = (dir.path() / "b").string();
+    refused(
+        [&] {
+            poke_hdf5(b + "/trajectory.h5",
+                      "/observables/kinetic_energy_translational_medium/value", 2,
+                      std::numeric_limits<double>::quiet_NaN());
+        },
+        "kinetic_energy_translational_medium/value, frame 2");
+    refused(
+        [&] { poke_hdf5(b + "/checkpoint.h5", "/rodsea_checkpoint/species", 1, std::int32_t{1}); },
+        "damaged: dataset species holds 3 bodies of species 0");
+    // Two bodies' species swapped: the counts hold, the trajectory's species do not.
+    refused(
+        [&] {
+            const Checkpoint c = read_checkpoint(a / kCheckpointFile);
+            const std::size_t medium = c.bodies.size() - 1;
+            poke_hdf5(b + "/checkpoint.h5", "/rodsea_checkpoint/species", 0, std::int32_t{1});
+            poke_hdf5(b + "/checkpoint.h5", "/rodsea_checkpoint/species", medium, std::int32_t{0});
+        },
+        "holds other bodies (/particles/bodies/species) than the checkpoint");
 }
 
 // A byte flipped on disk in a frame (the value is still a plausible float) fails the chunk's

@@ -13,8 +13,10 @@
 #include "rodsea/config/config_file.hpp"
 #include "rodsea/engine/backend_factory.hpp"
 #include "rodsea/engine/simulation.hpp"
+#include "rodsea/engine/state_check.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/checkpoint.hpp"
+#include "rodsea/run/checkpoint_checks.hpp"
 
 namespace py = pybind11;
 
@@ -93,9 +95,13 @@ class PySimulation {
     }
     const RunPlan& plan() const { return plan_; }
 
-    // Replaces the state (arrays as numpy gives them), checked as a resumed state is.
+    // Replaces the state (arrays as numpy gives them), checked as a resumed state is, the
+    // overlaps between bodies included.
     void set_state(const BodyState& bodies) {
         const Simulation& now = sim();
+        if (const auto p = find_gross_overlap(plan_.engine, bodies))
+            throw InvalidParameter("bodies[" + std::to_string(p->body) + "]." + p->field, p->value,
+                                   p->allowed, p->detail);
         sim_ = std::make_shared<Simulation>(
             Simulation::resume(plan_.engine, bodies, now.step_count(), now.options()));
     }
@@ -276,6 +282,9 @@ void bind_simulation(py::module_& m) {
             [](const std::string& path, std::optional<int> threads) {
                 Checkpoint c = read_checkpoint(path);
                 RunPlan plan = load_config_string(c.config_toml, path + " [config]");
+                // What `rodsea run --continue` checks of a checkpoint's state.
+                check_checkpoint_bodies(c, plan, path);
+                check_checkpoint_state(c, plan, path);
                 const int t = threads.value_or(plan.control.threads);
                 return PySimulation(std::move(plan), std::move(c.bodies), c.step, t);
             },

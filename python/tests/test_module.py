@@ -356,3 +356,24 @@ def test_flocks_followed_in_time_from_python():
     first = tracker.tracks[0]
     assert abs(first["vx"][1] - 100.0) < 1e-9  # 1 mm per 0.01 s
     assert first["leader"][1] == 4  # the rod furthest ahead along +x
+
+
+def test_from_checkpoint_and_set_state_check_what_resume_checks(small_config, tmp_path):
+    """A checkpoint `rodsea run --continue` refuses is refused here too, and set_state refuses
+    bodies on top of each other (the next step used to blame time.dt instead)."""
+    sim = rodsea.Simulation(rodsea.load_config(small_config))
+    sim.run(steps=200)
+    sim.save_checkpoint(str(tmp_path / "c.h5"))
+    with h5py.File(tmp_path / "c.h5", "r+") as f:
+        species = f["rodsea_checkpoint/species"]
+        edited = species[:]
+        edited[0] = 1  # a polar rod made an apolar one
+        species[...] = edited
+    with pytest.raises(rodsea.FileError, match="dataset species holds 5 bodies of species 0"):
+        rodsea.Simulation.from_checkpoint(str(tmp_path / "c.h5"))
+    hash_before = sim.state_hash()
+    positions = sim.positions.copy()
+    positions[1] = positions[0]
+    with pytest.raises(rodsea.InvalidParameter, match=r"bodies\[\d+\]\.position.*overlapping body"):
+        sim.set_state(positions=positions)
+    assert sim.state_hash() == hash_before

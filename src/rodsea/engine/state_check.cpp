@@ -122,6 +122,22 @@ std::optional<StateProblem> find_state_problem(const EngineParameters& params,
     return std::nullopt;
 }
 
+std::optional<std::string> find_species_count_problem(const std::vector<std::uint32_t>& species,
+                                                      const std::vector<long long>& counts) {
+    std::vector<long long> held(counts.size(), 0);
+    for (const std::uint32_t s : species) {
+        if (s >= counts.size())
+            return "a body of species " + std::to_string(s) + ", but the config has " +
+                   std::to_string(counts.size()) + " species";
+        ++held[s];
+    }
+    for (std::size_t s = 0; s < counts.size(); ++s)
+        if (held[s] != counts[s])
+            return std::to_string(held[s]) + " bodies of species " + std::to_string(s) +
+                   ", but the config asks for " + std::to_string(counts[s]);
+    return std::nullopt;
+}
+
 std::optional<StateProblem> find_gross_overlap(const EngineParameters& params,
                                                const BodyState& bodies) {
     std::vector<Vec3> centres;

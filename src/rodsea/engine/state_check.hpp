@@ -19,6 +19,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "rodsea/engine/body_state.hpp"
 #include "rodsea/engine/parameters.hpp"
@@ -55,6 +56,12 @@ std::optional<StateProblem> find_state_problem(const EngineParameters& params,
 // of the smaller radius (minimum image in x and y), reported on the first body of the pair.
 std::optional<StateProblem> find_gross_overlap(const EngineParameters& params,
                                                const BodyState& bodies);
+
+// The species of a stored state's bodies (a checkpoint's, a trajectory's) against the counts its
+// config asks for, species by species: a flipped bit or an edited array changes them. The first
+// species whose count differs, described, or none.
+std::optional<std::string> find_species_count_problem(const std::vector<std::uint32_t>& species,
+                                                      const std::vector<long long>& counts);
 
 // The fastest in-plane sphere speed the time step resolves (mm/s): a quarter of the smallest
 // sphere radius per step. ~80 m/s at the defaults, 1500× the plates' peak speed.

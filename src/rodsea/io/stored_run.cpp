@@ -74,6 +74,8 @@ StoredRun open_stored_run(const fs::path& run) {
     }
     RunPlan plan = load_config_string(config, trajectory.string() + ":/parameters/rodsea/config");
     if (reader.frames() == 0) throw FileError(trajectory.string(), "holds no frames yet");
+    if (const auto problem = find_species_count_problem(reader.species(), plan.counts))
+        throw FileError(trajectory.string(), "/particles/bodies/species holds " + *problem);
     // Frame k's time is its step × dt; anything beyond rounding is not what rodsea wrote.
     const double dt = plan.engine.dt;
     for (std::size_t k = 0; k < reader.frames(); ++k) {

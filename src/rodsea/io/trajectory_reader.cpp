@@ -56,6 +56,10 @@ struct TrajectoryReader::Impl {
     }
 };
 
+namespace {
+std::vector<double> part_series(const h5::File& f, std::uint64_t frames, const std::string& column);
+}  // namespace
+
 TrajectoryReader::TrajectoryReader(const std::filesystem::path& path) : impl_(new Impl) {
     impl_->parts.push_back({h5::File::open(path, false), 0, 0});
     const h5::File& f = impl_->parts.front().file;
@@ -110,6 +114,8 @@ TrajectoryReader::TrajectoryReader(const std::filesystem::path& path) : impl_(ne
                                        "] (frames, bodies, components)");
     }
     impl_->parts.front().count = frames;
+    for (const std::string& column : series_names())
+        part_series(f, frames, column);
 }
 
 TrajectoryReader TrajectoryReader::joined(std::vector<TrajectoryReader> parts,

@@ -3,8 +3,9 @@
 // as stored), and any time-series column. Everything read is checked before it is returned, as
 // a config value would be: opening checks the frame steps and times (finite, increasing,
 // as many as frames), the body count of every per-body dataset and the species indices
-// (against the species stored in the file); series() checks its length and that every value
-// is finite. Values within a frame are checked against the run's config by StoredRun::frame
+// (against the species stored in the file), and every time-series value (series() below), so
+// that no reader (analyze, render, export, --resume, Python) uses or extends a NaN or a negative
+// energy. Values within a frame are checked against the run's config by StoredRun::frame
 // (engine/state_check.hpp). Every failure is a FileError naming the file, the dataset, and the
 // frame, body or row with its value.
 #include <cstddef>
@@ -35,6 +36,8 @@ class TrajectoryReader {
     const std::vector<std::int64_t>& steps() const { return steps_; }
     const std::vector<double>& times() const { return times_; }
     BodyState frame(std::uint64_t index) const;
+    // Each body's species index, as stored (/particles/bodies/species).
+    const std::vector<std::uint32_t>& species() const { return species_; }
     // Where frame `index` is stored: the file (one of a joined run's parts) and its index there,
     // for messages about a frame to name the file that holds it.
     struct FrameSource {
@@ -42,6 +45,8 @@ class TrajectoryReader {
         std::uint64_t index;
     };
     FrameSource source_of(std::uint64_t index) const;
+    // One column, one value per frame: finite; order parameters in [0, 1]; every column but the
+    // signed mean velocities >= 0.
     std::vector<double> series(const std::string& column) const;
     bool has_series(const std::string& column) const;
     // The time-series columns the file holds, in the file's (alphabetical) order.

@@ -9,7 +9,8 @@
 
 namespace rodsea {
 
-void check_checkpoint(const Checkpoint& c, const RunPlan& plan, const std::filesystem::path& path) {
+void check_checkpoint_bodies(const Checkpoint& c, const RunPlan& plan,
+                             const std::filesystem::path& path) {
     std::uint64_t expected = 0;
     for (long long n : plan.counts)
         expected += static_cast<std::uint64_t>(n);
@@ -17,6 +18,12 @@ void check_checkpoint(const Checkpoint& c, const RunPlan& plan, const std::files
         throw FileError(path.string(), "holds " + std::to_string(c.bodies.size()) +
                                            " bodies but its config asks for " +
                                            std::to_string(expected));
+    if (const auto problem = find_species_count_problem(c.bodies.species, plan.counts))
+        throw FileError(path.string(), "damaged: dataset species holds " + *problem);
+}
+
+void check_checkpoint(const Checkpoint& c, const RunPlan& plan, const std::filesystem::path& path) {
+    check_checkpoint_bodies(c, plan, path);
     const std::string interval = SeriesRecorder(plan).interval_problem(c.interval_accumulators);
     if (!interval.empty())
         throw FileError(

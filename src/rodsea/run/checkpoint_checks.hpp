@@ -10,7 +10,12 @@
 
 namespace rodsea {
 
-// The bodies its config asks for, and a time-series interval its config's recorder can continue.
+// The bodies its config asks for, species by species (what any checkpoint must hold, Python's
+// save_checkpoint's included).
+void check_checkpoint_bodies(const Checkpoint& c, const RunPlan& plan,
+                             const std::filesystem::path& path);
+// check_checkpoint_bodies, and a time-series interval its config's recorder can continue (a run's
+// checkpoint).
 void check_checkpoint(const Checkpoint& c, const RunPlan& plan, const std::filesystem::path& path);
 // A state the engine could have produced (finite, between the plates, no gross overlap).
 void check_checkpoint_state(const Checkpoint& c, const RunPlan& plan,

@@ -285,6 +285,10 @@ void check_belongs_here(const std::filesystem::path& dir, const Checkpoint& c,
     if (std::filesystem::exists(config)) check_config(config, read_text_file(config));
     // A continuation's file holds the run's frames from its first_frame on.
     const TrajectoryReader reader(trajectory);
+    if (reader.species() != c.bodies.species)
+        throw FileError(trajectory.string(),
+                        "holds other bodies (/particles/bodies/species) than the checkpoint: a "
+                        "run resumes with the bodies it started with");
     const std::uint64_t first = read_first_frame(trajectory);
     if (first > c.frames_written || reader.frames() < c.frames_written - first) {
         const std::string held = first == 0
