@@ -4,6 +4,7 @@
 #include <csignal>
 
 #include <iostream>
+#include <new>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -137,6 +138,11 @@ int main(int argc, char** argv) {
     } catch (const rodsea::FileError& e) {
         std::cerr << "rodsea: " << e.what() << "\n";
         return ExitCode::kExitIoError;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "rodsea: out of memory: this command needs more memory than the machine (or "
+                     "the job's limit, ulimit -v) gives it; `rodsea info CONFIG` says what a run "
+                     "needs\n";
+        return ExitCode::kExitFailure;
     } catch (const std::exception& e) {
         std::cerr << "rodsea: " << e.what() << "\n";
         return ExitCode::kExitFailure;

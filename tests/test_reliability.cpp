@@ -3,6 +3,8 @@
 // fault, and checks the exit code, that the message names what is wrong, and that nothing was
 // written or changed.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <csignal>
@@ -454,6 +456,25 @@ TEST(Sizes, CountsMemoryBinsAndNamesBeyondTheirLimitsAreRefusedByName) {
     } catch (const InvalidParameter& e) {
         EXPECT_TRUE(contains(e.what(), "corotating.theta_bins")) << e.what();
     }
+}
+
+// A kill -9 between writing checkpoint.h5.tmp.<pid> and renaming it leaves the temporary: the
+// resume that follows removes it (its writer is gone), and leaves a live process's alone.
+TEST(ResumeChecks, AResumeRemovesTheTemporaryAKilledWriterLeft) {
+    const ScratchDir dir("reliability-temporary");
+    const fs::path a = make_run(dir.path() / "a", 0.01, 0.002);
+    const pid_t gone = fork();  // a process that has exited and been reaped: its pid is free
+    if (gone == 0) _exit(0);
+    ASSERT_GT(gone, 0);
+    waitpid(gone, nullptr, 0);
+    const fs::path stale = a / ("checkpoint.h5.tmp." + std::to_string(gone));
+    const fs::path live = a / ("checkpoint.h5.tmp." + std::to_string(getpid()));
+    std::ofstream(stale) << "half a checkpoint";
+    std::ofstream(live) << "another process's";
+    std::string err;
+    ASSERT_EQ(resume(a, err), kExitOk) << err;
+    EXPECT_FALSE(fs::exists(stale));
+    EXPECT_TRUE(fs::exists(live));
 }
 
 TEST(Sizes, ASystemBeyondTheMachinesMemoryIsRefusedBeforeAnyFileIsWritten) {

@@ -35,7 +35,11 @@ def _literal(value, key):
             raise _rodsea.InvalidParameter(f"invalid {key} = {value}: allowed a finite number")
         return repr(value)
     if isinstance(value, str):
-        return '"' + value.replace("\\", "\\\\").replace('"', '\\"') + '"'
+        # A TOML basic string: quotes, backslashes and control characters escaped (a newline
+        # pasted as it is would end the line and read as a syntax error).
+        return '"' + "".join(
+            "\\" + c if c in '"\\' else f"\\u{ord(c):04x}" if ord(c) < 0x20 or ord(c) == 0x7F
+            else c for c in value) + '"'
     if isinstance(value, (list, tuple, numpy.ndarray)):
         return "[" + ", ".join(_literal(v, key) for v in value) + "]"
     raise _rodsea.InvalidParameter(

@@ -1,6 +1,7 @@
 #include "rodsea/io/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -36,6 +37,25 @@ void replace_file_atomically(const std::filesystem::path& path,
         std::filesystem::remove(tmp, ignored);
         throw;
     }
+}
+
+int remove_stale_temporaries(const std::filesystem::path& dir) {
+    int removed = 0;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+        const std::string name = entry.path().filename().string();
+        const std::size_t at = name.rfind(".tmp.");
+        if (at == std::string::npos || !entry.is_regular_file(ec)) continue;
+        const std::string pid = name.substr(at + 5);
+        if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos ||
+            pid.size() > 9)
+            continue;
+        // A live writer's temporary is its own business (kill(pid, 0) fails with ESRCH only
+        // for a process that does not exist).
+        if (::kill(static_cast<pid_t>(std::stol(pid)), 0) == 0 || errno != ESRCH) continue;
+        if (std::filesystem::remove(entry.path(), ec)) ++removed;
+    }
+    return removed;
 }
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& text) {

@@ -17,6 +17,11 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
 void replace_file_atomically(const std::filesystem::path& path,
                              const std::function<void(const std::filesystem::path&)>& write);
 
+// Removes the temporaries (<name>.tmp.<pid>) that a writer killed before its rename left in
+// `dir`, those of processes no longer alive; returns how many. For the one writer of `dir` (the
+// run holding its lock) as it starts: a kill -9 leaves a checkpoint.h5.tmp.<pid> behind.
+int remove_stale_temporaries(const std::filesystem::path& dir);
+
 // Forces a file's content to disk (fsync), so that a rename that follows cannot expose an
 // empty file after a power loss.
 void sync_file(const std::filesystem::path& path);

@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <cerrno>
+
 #include "rodsea/error.hpp"
 
 namespace rodsea {
@@ -21,7 +23,11 @@ void check_output_file(const std::string& flag, const fs::path& path,
         throw FileError(path.string(),
                         "cannot be written: its directory " + dir.string() + " does not exist");
     if (::access(dir.c_str(), W_OK | X_OK) != 0)
-        throw FileError(path.string(), "cannot be written: no write permission in " + dir.string());
+        throw FileError(path.string(), errno == EROFS ? "cannot be written: " + dir.string() +
+                                                            " is on a read-only file system"
+                                                      : "cannot be written: no write permission "
+                                                        "in " +
+                                                            dir.string());
 }
 
 }  // namespace rodsea

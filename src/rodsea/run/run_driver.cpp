@@ -363,6 +363,8 @@ ResumedRun read_run(const std::filesystem::path& dir, const RunOptions& options)
     if (!run.complete) check_frames_counted(c, run.plan, run.extending, checkpoint_path);
     run.first_frame = read_first_frame(dir / kTrajectoryFile);
     if (run.first_frame > 0 && !run.complete) refuse_steady_stop(run.plan, dir.string());
+    // Checked and locked: what a killed writer of this directory left half-written goes.
+    remove_stale_temporaries(dir);
     return run;
 }
 
