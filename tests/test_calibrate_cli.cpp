@@ -145,6 +145,8 @@ TEST_F(CalibrateCli, BadConfigIsRefusedByKeyBeforeAnyRun) {
         {"[calibrate]\nepsilon = [1.0]\n", "allowed [0 1/mm, 0.5 1/mm]"},
         {"[calibrate]\nnoise_mode = \"set\"\nepsilon = [6.0]\n", "allowed [0 1/mm, 5 1/mm]"},
         {"[calibrate]\nnoise_mode = \"kick\"\n", "\"add\" or \"set\""},
+        // Two drive periods fit no lag of C(t): D_r came out as 0 ± 0.
+        {"[calibrate]\nduration = 0.01\n", "calibrate.duration = 0.01 s: allowed [0.1 s"},
     };
     for (const Case& c : cases) {
         std::ofstream(path("bad.toml")) << c.toml;

@@ -81,6 +81,15 @@ TEST(SingleBodyExperiment, WithoutNoiseALonePolarRodKeepsItsAxisAndTravelsAlongI
 // The copies of several points stepped together as one ensemble (what `rodsea calibrate
 // --backend gpu` does on a device) give each copy the trace it has alone on the same backend, bit
 // for bit: here on the CPU and on the GPU's algorithm run by the host.
+// Traces too short for one lag of C(t) give no D_r, not a D_r of 0.
+TEST(SingleBodyExperiment, TracesTooShortToFitGiveNoRotationalDiffusion) {
+    SingleBodyTrace t;
+    t.angle = {0.0, 0.1, 0.2};  // three periods: C(t) to lag 3 / 4 = 0
+    t.axial = t.transverse = {0.0, 0.0, 0.0};
+    const SingleBodyResult r = combine_single_body_traces({t, t}, 0.005);
+    EXPECT_TRUE(std::isnan(r.rotational_diffusion.mean)) << r.rotational_diffusion.mean;
+}
+
 TEST(SingleBodyExperiment, CopiesSteppedTogetherHaveTheirLoneTraces) {
     std::vector<SingleBodyExperiment> points(2);
     for (SingleBodyExperiment& e : points) {

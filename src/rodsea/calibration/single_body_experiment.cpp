@@ -198,7 +198,9 @@ double rotational_diffusion_from_correlation(const std::vector<double>& c, doubl
         t.push_back(interval * static_cast<double>(lag));
         y.push_back(-std::log(std::min(1.0, c[lag])));
     }
-    return t.empty() ? 0.0 : slope_through_origin(t, y);
+    // No lag above the floor: C(t) fell below it within one period (D_r far beyond the fit's
+    // reach) or there was no lag at all; not a D_r of 0.
+    return t.empty() ? std::nan("") : slope_through_origin(t, y);
 }
 
 SingleBodyResult combine_single_body_traces(const std::vector<SingleBodyTrace>& traces,
