@@ -193,6 +193,26 @@ TEST_F(PlotCli, RunAnalysisGivesEveryFigureOfItsObservables) {
     expect_pictures(printed, out, kRunFigures, dir());
 }
 
+// A run extended after its analysis: plot draws what analysis/ holds, and says that it is older
+// than the run; an analysis of the run as it is draws without a note.
+TEST_F(PlotCli, AnAnalysisOlderThanItsRunIsNamedAsSuch) {
+    const fs::path run = dir() / "extended";
+    fs::copy(dir() / "sparse", run, fs::copy_options::recursive);
+    const ChildResult fresh = plot({run.string(), "-o", (dir() / "fresh").string(), "--quiet"});
+    ASSERT_EQ(fresh.exit_code, 0) << fresh.err;
+    EXPECT_EQ(fresh.err.find("note:"), std::string::npos) << fresh.err;
+    ASSERT_EQ(run_rodsea({"run", "--resume", run.string(), "--duration", "0.03", "--quiet"}, dir())
+                  .exit_code,
+              0);
+    const ChildResult stale = plot({run.string(), "-o", (dir() / "stale").string(), "--quiet"});
+    ASSERT_EQ(stale.exit_code, 0) << stale.err;
+    EXPECT_NE(stale.err.find("was made from this run up to step 16000; it now reaches step 24000"),
+              std::string::npos)
+        << stale.err;
+    EXPECT_NE(stale.err.find("rodsea analyze " + run.string() + " again"), std::string::npos)
+        << stale.err;
+}
+
 TEST_F(PlotCli, MediumOnlyRunSkipsThePolarFiguresWithANote) {
     const fs::path out = dir() / "medium-figures";
     // Its analysis.json, given directly, is the same input as the directory.

@@ -11,6 +11,10 @@
 #include "rodsea/cli/child_process.hpp"
 #include "rodsea/cli/exit_codes.hpp"
 #include "rodsea/error.hpp"
+#include "rodsea/io/trajectory_file.hpp"
+#include "rodsea/io/trajectory_reader.hpp"
+#include "rodsea/run/run_files.hpp"
+#include "rodsea/text_file.hpp"
 #include "rodsea/view/python_script.hpp"
 
 namespace rodsea {
@@ -54,6 +58,48 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The value after `field` in an analysis cache key ("rodsea V|run ID|frames N|first step A|last
+// step B|..."), or "".
+std::string cache_key_field(const std::string& key, const std::string& field) {
+    const std::size_t at = key.find("|" + field + " ");
+    if (at == std::string::npos) return "";
+    const std::size_t from = at + field.size() + 2;
+    return key.substr(from, key.find('|', from) - from);
+}
+
+// Figures drawn from an analysis/ that no longer describes its run (the run was extended, or
+// run again, since): a note saying so, or none. Quiet about anything it cannot read: the script
+// reports unreadable inputs itself.
+std::optional<std::string> stale_analysis_note(const fs::path& input) {
+    std::error_code ec;
+    fs::path analysis = input;
+    if (input.filename() == "analysis.json") analysis = input.parent_path();
+    if (fs::exists(analysis / kTrajectoryFile, ec)) analysis /= "analysis";
+    const fs::path run = analysis.parent_path();
+    const fs::path json = analysis / "analysis.json";
+    if (!fs::exists(json, ec) || !fs::exists(run / kTrajectoryFile, ec)) return std::nullopt;
+    try {
+        const std::string text = read_text_file(json);
+        const std::size_t at = text.find("\"cache_key\": \"");
+        if (at == std::string::npos) return std::nullopt;
+        const std::size_t from = at + 14;
+        const std::string key = text.substr(from, text.find('"', from) - from);
+        const TrajectoryReader reader(run / kTrajectoryFile);
+        const std::string last = std::to_string(reader.steps().back());
+        const std::string id = read_run_id(run / kTrajectoryFile);
+        if (cache_key_field(key, "last step") == last && cache_key_field(key, "run") == id)
+            return std::nullopt;
+        return analysis.string() + " was made from " +
+               (cache_key_field(key, "run") == id
+                    ? "this run up to step " + cache_key_field(key, "last step") +
+                          "; it now reaches step " + last
+                    : "another run (run id " + cache_key_field(key, "run") + ")") +
+               ": rodsea analyze " + run.string() + " again for figures of the run as it is";
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+}
+
 }  // namespace
 
 int plot_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -79,6 +125,7 @@ int plot_command(const std::vector<std::string>& args, std::ostream& out, std::o
         err << "rodsea plot: " << lookup.problem << "\n";
         return kExitFailure;
     }
+    if (const auto note = stale_analysis_note(input)) err << "rodsea plot: note: " << *note << "\n";
     const std::string& python = lookup.found->python;
     const std::string& script = lookup.found->script;
     std::string output_flag = "--output=";
