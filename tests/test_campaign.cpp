@@ -906,5 +906,32 @@ TEST(Campaign, AnotherCampaignsDirectoryIsRefusedAndNoTableShrinksWithoutAWord) 
     EXPECT_EQ(read_file(fs::path(dir) / "collected" / "points.previous.csv"), collected);
 }
 
+// A run that blew up would blow up again from its checkpoint (the same steps): it is failed at
+// once, shown as such, and not run again by the next `campaign run`.
+TEST(Campaign, ARunThatBlewUpIsFailedNotInterrupted) {
+    const ScratchDir scratch("campaign-blowup");
+    const fs::path file = scratch.path() / "blowup.toml";
+    std::ofstream(file) << "[campaign]\nname = \"blowup\"\n"
+                        << kTinyRods
+                        << "[base.time]\nduration = 0.05\ndt = 2e-4\n[base.output]\n"
+                           "interval = 0.005\n";
+    const std::string dir = (scratch.path() / "blowup").string();
+    const ChildResult first =
+        run_rodsea({"campaign", "run", file.string(), "--out", dir}, scratch.path());
+    EXPECT_EQ(first.exit_code, 1) << first.out << first.err;
+    EXPECT_NE(first.out.find("it blew up: change the config"), std::string::npos) << first.out;
+    const ChildResult status =
+        run_rodsea({"campaign", "status", file.string(), "--out", dir}, scratch.path());
+    EXPECT_NE(status.out.find("failed"), std::string::npos) << status.out;
+    EXPECT_NE(status.out.find("blew up (a resume would repeat the same steps"), std::string::npos)
+        << status.out;
+    EXPECT_NE(status.out.find("0 interrupted, 0 done, 1 failed"), std::string::npos) << status.out;
+    const ChildResult again =
+        run_rodsea({"campaign", "run", file.string(), "--out", dir}, scratch.path());
+    EXPECT_EQ(again.exit_code, 1) << again.out << again.err;
+    EXPECT_EQ(count_of(read_file(fs::path(dir) / "runs" / "base" / "seed1.failed"), "--- exit 3"),
+              1);
+}
+
 }  // namespace
 }  // namespace rodsea

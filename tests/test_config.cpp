@@ -635,6 +635,14 @@ TEST(ConfigErrors, CrossKeyChecksNameTheKey) {
     // The engine's own validation comes through: the paper's 1.2 mm gap cannot hold the polar
     // rod's 1.375 mm thick end.
     expect_invalid("[drive]\ngap = 1.2", "drive.gap", {"1.2 mm", "> 1.375 mm", "polar_rod"});
+    // A gap the sphere fits but a body started 1 µm above the base does not: named by its key,
+    // not by the body the start's check would refuse.
+    expect_invalid("[drive]\ngap = 1.3755", "drive.gap",
+                   {"1.3755 mm", "> 1.376 mm", "0.001 mm above the base"});
+    // A step inside time.dt's range but far too long for the drive: named by its key, not by a
+    // body of the start or a blow-up two steps in.
+    expect_invalid("[time]\ndt = 1e-3", "time.dt",
+                   {"0.001 s", "at most 0.000228746 s", "plates' peak speed"});
 }
 
 TEST(ConfigErrors, RotationalDiffusionNeedsACalibrationTable) {

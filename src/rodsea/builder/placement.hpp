@@ -14,10 +14,14 @@ Quat flat_orientation(double angle);
 // when tilt > 0.
 Quat tipped_orientation(double angle, double tilt);
 
+// How far above the base (mm) a built body's lowest sphere starts at t = 0: clear of the plate,
+// so that the fresh state is strictly between the plates (engine/state_check.hpp).
+inline constexpr double kRestingClearance = 1e-3;
+
 // Height of the centre of mass that puts the lowest sphere `clearance` mm above the base at
 // t = 0 for the given orientation.
 double resting_height(const Shape& shape, const Quat& orientation, const DriveParameters& drive,
-                      double clearance = 1e-3);
+                      double clearance = kRestingClearance);
 
 // Each body of a built state gets a small random velocity (in-plane, up to kStartSpeed) and spin
 // (up to kStartSpin about each axis): a perfectly still packing is mirror-symmetric and the

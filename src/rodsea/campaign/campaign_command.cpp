@@ -95,7 +95,9 @@ const CommandSpec& campaign_command_spec() {
          {"--dry-run", "", "submit: write the script, submit nothing"},
          {"--tasks", "FILE", "run: only the runs of one task of a submission (the array script)"},
          {"--task", "N", "run: the line of --tasks (default $SLURM_ARRAY_TASK_ID)"},
-         {"--retry-failed", "", "run: give runs that failed twice two more tries"},
+         {"--retry-failed", "",
+          "run: give runs that failed twice two more tries (not those that "
+          "blew up: they would repeat the same steps)"},
          {"--measure-seconds", "S",
           "plan: seconds of stepping per point to measure its cost "
           "(default 0.3)"},
@@ -341,7 +343,10 @@ int status(const Arguments& a, std::ostream& out) {
                       to_string(s.state), done.c_str(), time.c_str(), rate.c_str(), eta.c_str());
         out << line;
         if (s.state == RunState::failed)
-            out << "    failed " << s.failures << " times: " << s.last_failure << "\n";
+            out << (s.blew_up ? "    blew up (a resume would repeat the same steps: change the "
+                                "config): "
+                              : "    failed " + std::to_string(s.failures) + " times: ")
+                << s.last_failure << "\n";
     }
     out << "\n" << l.grid.runs.size() << " runs: ";
     for (int k = 0; k < 5; ++k)

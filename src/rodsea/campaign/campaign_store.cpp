@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "rodsea/cli/arguments.hpp"
+#include "rodsea/cli/exit_codes.hpp"
 #include "rodsea/config/config_file.hpp"
 #include "rodsea/error.hpp"
 #include "rodsea/io/atomic_file.hpp"
@@ -237,10 +238,12 @@ RunStatus run_status(const CampaignPaths& paths, const CampaignRun& run, int max
     if (const auto failed = read_text(paths.failures(run))) {
         std::istringstream lines(*failed);
         for (std::string line; std::getline(lines, line);) {
-            if (line.rfind("--- exit", 0) == 0)
+            if (line.rfind("--- exit ", 0) == 0) {
                 ++s.failures;
-            else if (!line.empty())
+                s.blew_up = line.rfind("--- exit " + std::to_string(kExitBlownUp) + " ", 0) == 0;
+            } else if (!line.empty()) {
                 s.last_failure = line;
+            }
         }
     }
     std::error_code ec;
@@ -265,7 +268,7 @@ RunStatus run_status(const CampaignPaths& paths, const CampaignRun& run, int max
         s.state = RunState::done;
     else if (locked)
         s.state = RunState::running;
-    else if (s.failures >= max_failures)
+    else if (s.failures >= max_failures || s.blew_up)
         s.state = RunState::failed;
     else if (has_checkpoint)
         s.state = RunState::interrupted;

@@ -68,6 +68,9 @@ struct RunStatus {
     std::optional<RunProgress> progress;
     int failures = 0;
     std::string last_failure;  // the last line of the last failure's message
+    // Its last failure was a blow-up (exit 3): resuming repeats the same steps, so it is failed
+    // at once, whatever the count, until its config changes.
+    bool blew_up = false;
 };
 
 // Whether a run's progress says it runs, or ran, to less than `duration` (s): a run of a campaign

@@ -10,6 +10,7 @@
 #include "rodsea/config/did_you_mean.hpp"
 #include "rodsea/config/schema.hpp"
 #include "rodsea/engine/backend_factory.hpp"
+#include "rodsea/engine/state_check.hpp"
 #include "rodsea/error.hpp"
 
 namespace rodsea::config {
@@ -378,6 +379,32 @@ void check_across_keys(const ConfigValues& c, const RunPlan& plan) {
     }
 }
 
+// The step resolves a collision while no sphere crosses more than a quarter of the smallest
+// radius in it (planar_speed_bound, the blow-up guard). Bodies leave the plates at up to about
+// twice the plates' peak speed AΩ and start at up to the builder's random speeds: a time step
+// whose bound is not four times the one and twice the other blows up in its first periods, or is
+// refused at the start naming a body, never the key to change.
+void check_time_step_resolves_the_drive(const EngineParameters& engine) {
+    double start = 0.0;  // mm/s, the fastest sphere of a fresh start
+    for (const Species& s : engine.species)
+        start = std::max(
+            start, std::sqrt(2.0) * kStartSpeed + std::sqrt(3.0) * kStartSpin * s.shape.extent);
+    const double plates = engine.drive.amplitude() * engine.drive.angular_frequency;
+    const double needed = std::max(4.0 * plates, 2.0 * start);
+    const double bound = planar_speed_bound(engine);
+    if (bound >= needed) return;
+    const double largest = engine.dt * bound / needed;
+    const std::string why =
+        4.0 * plates >= 2.0 * start
+            ? "four times the plates' peak speed AΩ, " + format_number(plates) + " mm/s"
+            : "twice the fastest sphere of a fresh start, " + format_number(start) + " mm/s";
+    throw InvalidParameter("time.dt", format_number(engine.dt) + " s",
+                           "at most " + format_number(largest) + " s",
+                           "a sphere at " + format_number(needed) + " mm/s, " + why +
+                               ", must move less than a quarter of the smallest sphere radius "
+                               "in a step");
+}
+
 }  // namespace
 
 RunPlan resolve(ConfigValues& c, const EpsilonLookup& epsilon) {
@@ -389,6 +416,19 @@ RunPlan resolve(ConfigValues& c, const EpsilonLookup& epsilon) {
     build_the_rest(c, plan, epsilon);
     check_across_keys(c, plan);
     validate(plan.engine);  // the engine's own checks, e.g. that every sphere fits the gap
+    // A sphere that fits but not with the builder's clearance above the base would be refused
+    // by the start's check, naming a body instead of the key.
+    for (const Species& s : plan.engine.species) {
+        const double needed = 2.0 * s.shape.max_radius + kRestingClearance;
+        if (!(needed < plan.engine.drive.gap))
+            throw InvalidParameter("drive.gap", format_number(plan.engine.drive.gap) + " mm",
+                                   "> " + format_number(needed) + " mm",
+                                   "'" + s.name + "' has a sphere of diameter " +
+                                       format_number(2.0 * s.shape.max_radius) +
+                                       " mm, and a body starts " +
+                                       format_number(kRestingClearance) + " mm above the base");
+    }
+    check_time_step_resolves_the_drive(plan.engine);
     return plan;
 }
 

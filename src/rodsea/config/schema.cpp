@@ -62,7 +62,8 @@ std::vector<KeySpec> make_keys() {
                             "experiment, at the speed closest to its 3.6 mm/s (2.5 mm/s); "
                             "docs/model.md")
                     .doc("w, the distance from the base to the lid. Every body's largest sphere "
-                         "must fit."));
+                         "must fit, with the 0.001 mm a body starts above the base: more than "
+                         "1.376 mm for the polar rod."));
     k.push_back(real("drive", "gravity")
                     .unit("mm/s²")
                     .def(engine.drive.gravity)
@@ -225,7 +226,10 @@ std::vector<KeySpec> make_keys() {
                     .choice("4000 steps per 5 ms drive period: 5 µs makes a lone polar rod 13 % "
                             "too fast; at 1.25 µs D_r agrees with dt/4 and the speed to 3–5 %; "
                             "docs/model.md")
-                    .doc("The time step."));
+                    .doc("The time step; also small enough that a sphere at four times the "
+                         "plates' peak speed AΩ (and twice a fresh start's fastest) moves less "
+                         "than a quarter of the smallest sphere radius in it: at most 2.3e-4 s "
+                         "at the defaults."));
     k.push_back(real("time", "duration")
                     .unit("s")
                     .def(control.duration)
