@@ -933,5 +933,28 @@ TEST(Campaign, ARunThatBlewUpIsFailedNotInterrupted) {
               1);
 }
 
+// squeue answering with something other than job ids (a timeout's message on its standard
+// output): the queue cannot be read, and nothing is submitted, rather than every run twice.
+TEST(CampaignOnSlurm, AQueueThatCannotBeReadSubmitsNothing) {
+    const ScratchDir scratch("campaign-squeue");
+    const fs::path bin = scratch.path() / "bin";
+    fs::create_directories(bin);
+    const auto script = [&](const std::string& name, const std::string& body) {
+        std::ofstream(bin / name) << "#!/bin/sh\n" << body << "\n";
+        fs::permissions(bin / name, fs::perms::owner_all);
+    };
+    script("squeue", "echo 'slurm_load_jobs error: Socket timed out on send/recv operation'");
+    script("sbatch", "touch " + (scratch.path() / "submitted").string() + "; echo 123");
+    const fs::path file = scratch.path() / "grid.toml";
+    std::ofstream(file) << kCampaign;
+    const ScopedEnv path("PATH", bin.string() + ":/usr/bin:/bin");
+    const ChildResult r = run_rodsea(
+        {"campaign", "submit", file.string(), "--out", (scratch.path() / "grid").string()},
+        scratch.path());
+    EXPECT_EQ(r.exit_code, 74) << r.out << r.err;
+    EXPECT_NE(r.err.find("where a job id belongs"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(scratch.path() / "submitted"));
+}
+
 }  // namespace
 }  // namespace rodsea

@@ -107,10 +107,17 @@ std::set<std::string> queued_jobs() {
                                 user ? user->pw_name : std::to_string(::getuid())});
     if (c.exit_code != 0)
         throw FileError("squeue", "failed (exit " + std::to_string(c.exit_code) + "): " + c.errors);
+    // What is not a job id is not a queue: read as one, it would look empty and every run in it
+    // would be submitted a second time.
     std::set<std::string> ids;
     std::istringstream lines(c.output);
-    for (std::string id; lines >> id;)
+    for (std::string id; lines >> id;) {
+        if (id.find_first_not_of("0123456789") != std::string::npos)
+            throw FileError("squeue", "printed '" + id.substr(0, 60) +
+                                          "' where a job id belongs: its queue cannot be read, "
+                                          "so nothing is submitted (run again once squeue works)");
         ids.insert(id);
+    }
     return ids;
 }
 
