@@ -184,7 +184,7 @@ TEST(CampaignFile, ARunConfigIsNamedAsOne) {
     }
 }
 
-// A point must run what its name says (issue 82, class 3): its axis values are not replaced by
+// A point must run what its name says: its axis values are not replaced by
 // an override, the seeds stay the replicates', and a zipped axis cannot set a key beside its
 // alternative, which a single config refuses.
 TEST(CampaignFile, APointRunsWhatItsNameSays) {
