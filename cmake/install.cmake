@@ -21,12 +21,20 @@ install(TARGETS ${rodsea_installed_libraries} EXPORT rodseaTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 
 # The headers of the installed libraries, less the backends' internals (engine/cpu, engine/cuda,
-# engine/parallel) and every detail/ folder, which no public header includes; view/ and campaign/
-# are the command line's own.
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/rodsea DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-        FILES_MATCHING PATTERN "*.hpp"
-        PATTERN "cpu" EXCLUDE PATTERN "cuda" EXCLUDE PATTERN "parallel" EXCLUDE
-        PATTERN "detail" EXCLUDE PATTERN "view" EXCLUDE PATTERN "campaign" EXCLUDE)
+# engine/parallel) and every detail/ folder, which no public header includes.
+set(rodsea_header_dirs math shape neighbors engine builder scenes)  # the engine and builder
+if(NOT RODSEA_ENGINE_ONLY)
+  list(APPEND rodsea_header_dirs analysis cli config io run calibration analyze meanfield)
+endif()
+# The top level's own (error.hpp, number_text.hpp, ...).
+file(GLOB rodsea_top_headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/rodsea/*.hpp)
+install(FILES ${rodsea_top_headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/rodsea)
+foreach(dir IN LISTS rodsea_header_dirs)
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/rodsea/${dir}
+          DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/rodsea FILES_MATCHING PATTERN "*.hpp"
+          PATTERN "cpu" EXCLUDE PATTERN "cuda" EXCLUDE PATTERN "parallel" EXCLUDE
+          PATTERN "detail" EXCLUDE)
+endforeach()
 
 set(rodsea_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/rodsea)
 install(EXPORT rodseaTargets NAMESPACE rodsea:: DESTINATION ${rodsea_cmake_dir})
