@@ -131,7 +131,7 @@ BENCHMARK_CAPTURE(BM_Observable, segregation, "segregation")->Unit(benchmark::kM
 BENCHMARK_CAPTURE(BM_Observable, bands, "bands")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Observable, medium_velocity, "medium_velocity")->Unit(benchmark::kMillisecond);
 
-// Issue 21's observables on the same frame. Fields: all 101870 bodies on cells of 2 mm (126 ×
+// The beyond-paper observables on the same frame. Fields: all 101870 bodies on cells of 2 mm (126 ×
 // 126), area fraction, polarisation, Q and velocity.
 void BM_CoarseGrainedFields(benchmark::State& state) {
     const LargestSystem& s = largest();
@@ -216,7 +216,7 @@ RodSystem& rods() {
     return system;
 }
 
-// compute() of one of issue 21's observables on a fresh frame each time, because they share
+// compute() of one of the beyond-paper observables on a fresh frame each time, because they share
 // the frame's fields, defects and flock labels (FrameContext), which the first of them builds:
 // that cost is counted here, the group arrays (shared with every observable) are not. On the
 // rod system (defects need apolar rods) and, for those that apply, the 101870-body bead system.

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 19, item 4: is the calibration table's D_r error bar honest?
+"""Is the calibration table's D_r error bar honest?
 
 Two independent measurements of the same ε grid (different seeds, disjoint copies), each from
 `rodsea calibrate`, are compared point by point: z = (D_a - D_b) / sqrt(err_a² + err_b²) should

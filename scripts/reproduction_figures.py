@@ -22,7 +22,7 @@ from medium_drift import slope_through_origin  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
-# Fig. 1c / 3a, first row of issue 19: the campaign tables, each one curve (label, file).
+# Fig. 1c / 3a, the reproduction's first row: the campaign tables, each one curve (label, file).
 FIG1C_POINTS = [
     ("10 s, 63 mm box", f"{DATA}/fig1c-phi_p0.05-small.points.csv"),
     ("60 s, 63 mm box", f"{DATA}/fig1c-phi_p0.05-long.points.csv"),

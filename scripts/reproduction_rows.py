@@ -1,4 +1,4 @@
-"""The first row of issue 19 (Fig. 1c / 3a: φ_p = 0.05, σ = 3.125, D_r = 0) run from several
+"""The reproduction's first row (Fig. 1c / 3a: φ_p = 0.05, σ = 3.125, D_r = 0) run from several
 seeds: one series table per seed, in one place, so that the figures
 (scripts/reproduction_figures.py) and the error-bar check (scripts/error_bar_check.py) read the
 same seeds. A seed added here is drawn and checked at once. Paths are relative to the

@@ -104,7 +104,7 @@ for part in "${parts[@]}"; do
         # 8 seeds of 20 s (400 frames each): ~25 core-minutes.
         run_seeds replicates 20 order,flocks,drift 1 2 3 4 5 6 7 8
     elif [[ $part == reproduction ]]; then
-        # Issue 19's first row end to end, tiny: its campaign in a 50 mm box (--scale 0.2) for
+        # The reproduction's first row (Fig. 1c / 3a) end to end, tiny: its campaign in a 50 mm box (--scale 0.2) for
         # 2 s per point (~10 core-minutes), collected, and its runs' series binned as
         # data/reproduction/ keeps them.
         campaign=$root/data/reproduction/fig1c-phi_p0.05-small.toml

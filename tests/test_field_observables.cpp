@@ -1,4 +1,4 @@
-// The beyond-paper observables of `rodsea analyze` (issue 21) on constructed frames whose
+// The beyond-paper observables of `rodsea analyze` on constructed frames whose
 // answers geometry fixes: the interface of a polar stripe is two lines the box's height long,
 // the coarse-grained maps conserve the area, a planted ± defect pair of the medium is found,
 // counted and tracked, flocks that meet merge with their leader named by body index, and a

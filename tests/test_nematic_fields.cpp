@@ -1,4 +1,4 @@
-// Coarse-grained fields and nematic defects (issue 21) on constructed states whose answers are
+// Coarse-grained fields and nematic defects on constructed states whose answers are
 // known: totals conserved by the cloud-in-cell kernel, aligned rods fully ordered, and director
 // fields with planted ±1/2 defects (alone, in a pair, across the periodic boundary) found with
 // their charge, core and, for +1/2, orientation.

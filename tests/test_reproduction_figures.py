@@ -1,4 +1,4 @@
-"""Issue 19: the figures of docs/reproduction.md are drawn from the committed tables alone.
+"""The figures of docs/reproduction.md are drawn from the committed tables alone.
 Regenerates Fig. 1c's figure into a scratch directory and checks every curve it drew against
 the tables, read here with the csv module (not the script's parser), and the PNG's size; then
 the first row's (38 and 63 mm boxes), Fig. 1f's and the bead medium's (heavy and light beads)

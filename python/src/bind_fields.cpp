@@ -1,4 +1,4 @@
-// Issue 21's compute objects on numpy arrays: coarse-grained fields, nematic defects, the
+// The beyond-paper compute objects on numpy arrays: coarse-grained fields, nematic defects, the
 // length of a level line, and the trackers that follow defects and flocks in time. The same
 // code as `rodsea analyze` runs (docs/analysis.md, "Beyond the paper"). Maps are [y, x].
 #include <pybind11/numpy.h>

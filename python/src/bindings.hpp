@@ -10,6 +10,6 @@ void bind_config(pybind11::module_& m);       // Config: a validated, resolved c
 void bind_simulation(pybind11::module_& m);   // Simulation: build, run, state as arrays
 void bind_run(pybind11::module_& m);          // StoredRun: a run directory's frames and series
 void bind_observables(pybind11::module_& m);  // compute objects on arrays, freud's style
-void bind_fields(pybind11::module_& m);       // fields, defects, trackers (issue 21)
+void bind_fields(pybind11::module_& m);       // fields, defects, trackers
 
 }  // namespace rodsea::python

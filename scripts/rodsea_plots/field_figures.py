@@ -1,4 +1,4 @@
-"""Figures of the beyond-paper observables (issue 21): coarse-grained field maps, the
+"""Figures of the beyond-paper observables (docs/analysis.md): coarse-grained field maps, the
 polar-rich interface, nematic defects and their tracks, and flocks against +1/2 defects.
 
 Read and checked before anything is drawn, like run_figures; layout: docs/analysis.md.

@@ -1,5 +1,5 @@
 #pragma once
-// Continuum fields of one frame on a periodic grid (issue 21; the End Matter's fields): the area
+// Continuum fields of one frame on a periodic grid (the End Matter's fields): the area
 // fraction of a group of bodies, its polarisation p = ⟨(cos θ, sin θ)⟩, its nematic tensor
 // Q = ⟨(cos 2θ, sin 2θ)⟩ (S = |Q|, director ½ arg Q) and its velocity. Each body is spread over
 // the four cells nearest its centre with cloud-in-cell (bilinear) weights that sum to 1, so totals

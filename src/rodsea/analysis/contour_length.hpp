@@ -1,5 +1,5 @@
 #pragma once
-// The length of a level line of a periodic field sampled at the cells of a FieldGrid (issue 21:
+// The length of a level line of a periodic field sampled at the cells of a FieldGrid (e.g.
 // the interface between polar-rich and medium-rich regions). Marching squares: on each
 // plaquette of four neighbouring cell centres the line crosses the edges whose ends lie on
 // either side of the level, at the linearly interpolated point; a saddle (opposite corners on

@@ -1,5 +1,5 @@
 #pragma once
-// Nematic defects followed in time (issue 21): each frame's defects are linked to the previous
+// Nematic defects followed in time: each frame's defects are linked to the previous
 // frame's of the same charge, nearest first (minimum image), when they moved less than a
 // linking distance. A +1/2 and a −1/2 that appear together closer than the pair distance are a
 // creation; two that vanish together closer than it, an annihilation; the others are born or

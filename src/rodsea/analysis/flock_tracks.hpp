@@ -1,5 +1,5 @@
 #pragma once
-// Flocks followed in time (issue 21): each frame's DBSCAN flocks are linked to the previous
+// Flocks followed in time: each frame's DBSCAN flocks are linked to the previous
 // frame's by the polar rods they share. A flock that takes most of one earlier flock's members,
 // and most of its own from it, continues that flock's track. A flock drawing members from
 // several earlier flocks is a merge (its track continues the largest contributor's; the others

@@ -1,5 +1,5 @@
 #pragma once
-// Topological defects of a nematic director field on a periodic grid (issue 21): the winding of
+// Topological defects of a nematic director field on a periodic grid: the winding of
 // the director around each plaquette of four neighbouring cells, with the nematic symmetry θ ≡
 // θ + π (each step's difference taken in (−π/2, π/2]), gives charge 0, ±1/2 or ±1. The core is
 // refined inside its plaquette towards the corners where the order S is lowest, and a +1/2

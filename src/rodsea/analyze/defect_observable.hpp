@@ -1,10 +1,10 @@
 #pragma once
-// Nematic defects of the medium (issue 21): every frame, the defects of the director field of the
-// medium's rods on the fields.cell grid (analysis/nematic_defects.hpp), counted by charge, and
-// followed in time (analysis/defect_tracks.hpp): each defect's track, ± pairs created and
-// annihilated, lone births and deaths. Steady means of the counts and density, rates of pair
-// creation and annihilation, lifetimes of the ±1/2 tracks; every defect of every frame, with its
-// track, in analysis.h5.
+// Nematic defects of the medium (beyond the paper, docs/analysis.md): every frame, the defects of
+// the director field of the medium's rods on the fields.cell grid (analysis/nematic_defects.hpp),
+// counted by charge, and followed in time (analysis/defect_tracks.hpp): each defect's track, ±
+// pairs created and annihilated, lone births and deaths. Steady means of the counts and density,
+// rates of pair creation and annihilation, lifetimes of the ±1/2 tracks; every defect of every
+// frame, with its track, in analysis.h5.
 #include <string>
 #include <vector>
 

@@ -1,12 +1,13 @@
 #pragma once
-// Coarse-grained fields (issue 21; the End Matter's continuum fields), every frame, on a grid of
-// cells of side fields.cell with cloud-in-cell weights (analysis/coarse_grained_fields.hpp): per
-// species its area fraction and velocity, the polarisation p of polar rods and the nematic
-// tensor Q of every rod species. analysis.h5 holds each map as a time series (every
-// fields.every-th frame, single precision) and its steady-window average. With polar rods and a
-// medium it also measures, per frame, the interface between polar-rich and medium-rich regions:
-// the level line where the polar rods' share of the local area fraction crosses
-// fields.interface_level (the End Matter's mechanism: the alignment gain α grows with it).
+// Coarse-grained fields (beyond the paper, docs/analysis.md; the End Matter's continuum fields),
+// every frame, on a grid of cells of side fields.cell with cloud-in-cell weights
+// (analysis/coarse_grained_fields.hpp): per species its area fraction and velocity, the
+// polarisation p of polar rods and the nematic tensor Q of every rod species. analysis.h5 holds
+// each map as a time series (every fields.every-th frame, single precision) and its steady-window
+// average. With polar rods and a medium it also measures, per frame, the interface between
+// polar-rich and medium-rich regions: the level line where the polar rods' share of the local area
+// fraction crosses fields.interface_level (the End Matter's mechanism: the alignment gain α grows
+// with it).
 #include <string>
 #include <vector>
 

@@ -1,11 +1,11 @@
 #pragma once
-// Flocks and the medium's +1/2 defects (issue 21; the paper's SM4: +1/2 defects steer and merge
-// flocks). Every steady frame with flocks and +1/2 defects: the distance from each flock's centre
-// to the nearest +1/2 defect (minimum image), beside the same distance from a point placed at
-// random (averaged exactly over the grid's cell centres), so that a ratio below 1 says flocks
-// sit near +1/2 defects more than chance; and the alignment cos(ψ − φ) of the flock's direction
-// of motion ψ (the mean heading of its rods, which self-propel along their axes) with that
-// defect's orientation φ: 0 when unrelated, ±1 when along or against it.
+// Flocks and the medium's +1/2 defects (beyond the paper, docs/analysis.md; the paper's SM4: +1/2
+// defects steer and merge flocks). Every steady frame with flocks and +1/2 defects: the distance
+// from each flock's centre to the nearest +1/2 defect (minimum image), beside the same distance
+// from a point placed at random (averaged exactly over the grid's cell centres), so that a ratio
+// below 1 says flocks sit near +1/2 defects more than chance; and the alignment cos(ψ − φ) of the
+// flock's direction of motion ψ (the mean heading of its rods, which self-propel along their axes)
+// with that defect's orientation φ: 0 when unrelated, ±1 when along or against it.
 #include <string>
 #include <vector>
 

@@ -1,10 +1,10 @@
 #pragma once
 // How many cores other processes leave free. OpenMP threads that wait for each other spin; on a
 // core another process also wants, a spinning thread steals the time its partner needs, and a
-// run with more threads than free cores went 36–900× slower than on one thread (issue 20). A
-// passive wait policy is no cure: on this machine it makes two threads 18× slower even on idle
-// cores. So the run measures what is free and steps on that many threads (the trajectory does
-// not depend on it).
+// run with more threads than free cores went 36–900× slower than on one thread
+// (docs/performance.md, "Threads and determinism"). A passive wait policy is no cure: on this
+// machine it makes two threads 18× slower even on idle cores. So the run measures what is free and
+// steps on that many threads (the trajectory does not depend on it).
 //
 // Linux: the CPU time of the whole machine (/proc/stat) less this process's own (getrusage),
 // between two samples. Elsewhere: every core counts as free.

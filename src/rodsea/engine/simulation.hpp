@@ -1,9 +1,9 @@
 #pragma once
 // The programmatic entry to the engine: build from parameters and bodies, step, read the state.
 //
-//   Simulation sim(params, bodies, {.threads = 2});   // validates everything, throws
-//   InvalidParameter sim.run(1000);                                    // 1000 steps of dt
-//   sim.bodies().position[0];
+//   Simulation sim(params, bodies, {.threads = 2});  // checks everything: InvalidParameter
+//   sim.run(1000);                                   // 1000 steps of dt
+//   sim.bodies().position[0];                        // mm
 //
 // Each step builds a StepContext (dt, gravity, box, the plates at the end of the step, the solver
 // settings, ε, seed and step number) and hands it to the backend, which owns the state and runs

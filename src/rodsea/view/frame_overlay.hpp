@@ -1,6 +1,6 @@
 #pragma once
-// What `rodsea render/movie --overlay` draws over the bodies (issue 21): the medium's director
-// field (a stick per cell, along the director, as long as the cell times the order S), its
+// What `rodsea render/movie --overlay` draws over the bodies (docs/visualisation.md): the medium's
+// director field (a stick per cell, along the director, as long as the cell times the order S), its
 // nematic defects (+1/2 a comet: a dot at the core with its tail along the defect's
 // orientation; −1/2 a trefoil; ±1 a ring), and flocks followed in time (each flock's centre
 // over the last seconds, an arrow along its heading and a ring on its leading rod). The fields,
