@@ -19,57 +19,27 @@
 - A seed whose table ends before the window's end (a run still going) is left out and
   counted; the finished seeds give their own chi2/dof exactly.
 - A missing seed's table is refused with a message naming its point, and nothing is printed.
-
-    /usr/bin/python3 tests/test_error_bar_check.py SOURCE_DIR SCRATCH_DIR
-Exit 77 (skipped) without numpy.
 """
 import math
 import os
 import re
-import shutil
-import subprocess
-import sys
 
-try:
-    import numpy  # noqa: F401  (the script's own dependency)
-except ImportError as e:
-    print(f"skipped: {e} (install python3-numpy)")
-    sys.exit(77)
+import pytest
 
-source, scratch = sys.argv[1], sys.argv[2]
-script = os.path.join(source, "scripts", "error_bar_check.py")
-sys.path.insert(0, os.path.join(source, "scripts"))
+from conftest import SOURCE, run_script
+
+pytest.importorskip("numpy")  # the script's own dependency
 import error_bar_check  # noqa: E402  (for its list of points and file names only)
 
-shutil.rmtree(scratch, ignore_errors=True)
-os.makedirs(scratch)
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
+source = str(SOURCE)
+B = 0.01
+OFFSET = 0.5 * B  # d: seed k is offset by k d
+ERROR_OF = {("120", 15): B / math.sqrt(7), ("120", 30): B / math.sqrt(3),
+            ("60", 15): B / math.sqrt(3)}
 
 
 def run(root):
-    return subprocess.run([sys.executable, script, "--root", root], capture_output=True,
-                          text=True)
-
-
-# The committed tables against the document.
-with open(os.path.join(source, "docs", "reproduction.md")) as f:
-    document = f.read()
-real = run(source)
-check(real.returncode == 0, f"on the committed tables: {real.stderr}")
-lines = real.stdout.strip().splitlines()
-check(len(lines) == 2 + len(error_bar_check.GROUPS) + 2,
-      f"{len(lines)} lines printed for {len(error_bar_check.GROUPS)} points and two pools")
-for line in lines:
-    check(line in document, f"not in docs/reproduction.md: {line}")
-
-# Synthetic seeds with known errors, under the same file names.
-B = 0.01
-OFFSET = 0.5 * B  # d: seed k is offset by k d
+    return run_script("error_bar_check.py", "--root", root)
 
 
 def pattern(t):
@@ -92,7 +62,7 @@ def seeds_of(spec):
     return [os.path.relpath(p, source) for p in error_bar_check.tables_of(source, spec)]
 
 
-def make_root(name, offset):
+def make_root(scratch, name, offset):
     root = os.path.join(scratch, name)
     for _, _, _, spec in error_bar_check.GROUPS:
         write_point(root, seeds_of(spec), offset)
@@ -120,90 +90,97 @@ def near(shown, exact):
     return abs(shown - exact) <= 0.5 * last_digit + 0.005 * abs(exact)
 
 
-root = make_root("known", OFFSET)
-result = run(root)
-check(result.returncode == 0, f"on known seeds: {result.stderr}")
-
-
 def cells(line):
     return [cell.strip() for cell in line.strip().strip("|").split("|")]
 
 
-rows = [cells(line) for line in result.stdout.strip().splitlines()[2:]]
-error_of = {("120", 15): B / math.sqrt(7), ("120", 30): B / math.sqrt(3),
-            ("60", 15): B / math.sqrt(3)}
-pools = {}
-for (label, pool, window, spec), row in zip(error_bar_check.GROUPS, rows):
-    n = len(seeds_of(spec))
-    span = f"{window[1] - window[0]:g}"
-    check(row[0] == f"{label}, {window[0]:g}–{window[1]:g} s" and row[1] == str(n), row[:2])
-    for column, block in ((2, 15), (3, 30)):
-        if (span, block) not in error_of:
-            check(row[column].startswith("— (under 4 blocks)"), (label, block, row[column]))
-            continue
-        exact = exact_chi2(n, error_of[(span, block)], OFFSET)
-        chi2, _, _, _ = printed(row[column])
-        check(near(chi2, exact), f"{label}, {block} s blocks: {chi2} printed, {exact:.4g} exact")
-        if pool:
-            total = pools.setdefault((pool, block), [0.0, 0])
-            total[0] += exact * (n - 1)
-            total[1] += n - 1
-pooled = {row[0].strip("*"): row for row in rows[len(error_bar_check.GROUPS):]}
-for (pool, block), (sum_chi2, dof) in pools.items():
-    row = pooled[f"{pool} windows, pooled"]
-    check(row[1] == f"{dof} dof", (pool, row[1]))
-    chi2, _, _, factor = printed(row[2 if block == 15 else 3])
-    check(near(chi2, sum_chi2 / dof), f"{pool} pool, {block} s: {chi2}, exact {sum_chi2 / dof:.4g}")
-    if (pool, block) == ("120 s", 15):
-        expected = math.sqrt(sum_chi2 / dof / 1.4)
-        # The factor is printed with two significant digits too, so its rounding adds half a
-        # last digit (0.05 near 1) to the Monte Carlo's 2 %.
-        last_digit = 10 ** (math.floor(math.log10(expected)) - 1)
-        check(abs(factor - expected) <= 0.02 * expected + 0.5 * last_digit,
-              f"errors x {factor} printed, sqrt(chi2/dof / 1.4) = {expected:.3f}")
-check(len(pools) == 3, f"pools {sorted(pools)}")
+def test_every_line_printed_from_the_committed_tables_is_in_the_document():
+    with open(os.path.join(source, "docs", "reproduction.md")) as f:
+        document = f.read()
+    real = run(source)
+    assert real.returncode == 0, f"on the committed tables: {real.stderr}"
+    lines = real.stdout.strip().splitlines()
+    assert len(lines) == 2 + len(error_bar_check.GROUPS) + 2, \
+        f"{len(lines)} lines printed for {len(error_bar_check.GROUPS)} points and two pools"
+    for line in lines:
+        assert line in document, f"not in docs/reproduction.md: {line}"
+
+
+def test_seeds_of_known_errors_give_their_exact_chi2_and_pools(tmp_path):
+    result = run(make_root(str(tmp_path), "known", OFFSET))
+    assert result.returncode == 0, f"on known seeds: {result.stderr}"
+    rows = [cells(line) for line in result.stdout.strip().splitlines()[2:]]
+    pools = {}
+    for (label, pool, window, spec), row in zip(error_bar_check.GROUPS, rows):
+        n = len(seeds_of(spec))
+        span = f"{window[1] - window[0]:g}"
+        assert row[0] == f"{label}, {window[0]:g}–{window[1]:g} s" and row[1] == str(n), row[:2]
+        for column, block in ((2, 15), (3, 30)):
+            if (span, block) not in ERROR_OF:
+                assert row[column].startswith("— (under 4 blocks)"), (label, block, row[column])
+                continue
+            exact = exact_chi2(n, ERROR_OF[(span, block)], OFFSET)
+            chi2, _, _, _ = printed(row[column])
+            assert near(chi2, exact), \
+                f"{label}, {block} s blocks: {chi2} printed, {exact:.4g} exact"
+            if pool:
+                total = pools.setdefault((pool, block), [0.0, 0])
+                total[0] += exact * (n - 1)
+                total[1] += n - 1
+    pooled = {row[0].strip("*"): row for row in rows[len(error_bar_check.GROUPS):]}
+    for (pool, block), (sum_chi2, dof) in pools.items():
+        row = pooled[f"{pool} windows, pooled"]
+        assert row[1] == f"{dof} dof", (pool, row[1])
+        chi2, _, _, factor = printed(row[2 if block == 15 else 3])
+        assert near(chi2, sum_chi2 / dof), \
+            f"{pool} pool, {block} s: {chi2}, exact {sum_chi2 / dof:.4g}"
+        if (pool, block) == ("120 s", 15):
+            expected = math.sqrt(sum_chi2 / dof / 1.4)
+            # The factor is printed with two significant digits too, so its rounding adds half a
+            # last digit (0.05 near 1) to the Monte Carlo's 2 %.
+            last_digit = 10 ** (math.floor(math.log10(expected)) - 1)
+            assert abs(factor - expected) <= 0.02 * expected + 0.5 * last_digit, \
+                f"errors x {factor} printed, sqrt(chi2/dof / 1.4) = {expected:.3f}"
+    assert len(pools) == 3, f"pools {sorted(pools)}"
+
 
 # Seeds alike: chi2/dof = 0, p = 1. Seeds 3 errors apart: p < 0.01 in the 120 s pool.
-for name, offset, test in (("alike", 0.0, lambda p: p == ("=", 1.0)),
-                           ("apart", 3 * B / math.sqrt(7), lambda p: p[0] == "<" or p[1] < 0.01)):
-    result = run(make_root(name, offset))
-    check(result.returncode == 0, f"{name}: {result.stderr}")
-    for line in result.stdout.splitlines():
-        if line.startswith("| **120 s windows, pooled**"):
-            chi2, relation, p, _ = printed(cells(line)[2])
-            check(test((relation, p)), f"{name}: 120 s pool chi2/dof {chi2}, p {relation} {p}")
-            break
-    else:
-        failures.append(f"{name}: no 120 s pool printed")
+@pytest.mark.parametrize("name, offset, test", [
+    ("alike", 0.0, lambda p: p == ("=", 1.0)),
+    ("apart", 3 * B / math.sqrt(7), lambda p: p[0] == "<" or p[1] < 0.01)])
+def test_p_at_the_extremes(tmp_path, name, offset, test):
+    result = run(make_root(str(tmp_path), name, offset))
+    assert result.returncode == 0, f"{name}: {result.stderr}"
+    pool = [line for line in result.stdout.splitlines()
+            if line.startswith("| **120 s windows, pooled**")]
+    assert pool, f"{name}: no 120 s pool printed"
+    chi2, relation, p, _ = printed(cells(pool[0])[2])
+    assert test((relation, p)), f"{name}: 120 s pool chi2/dof {chi2}, p {relation} {p}"
 
-# A seed still running (its table ends at 150 s, before the window's end) is left out and
-# counted: the two finished seeds, offset by 0 and d, give the two-seed chi2/dof exactly.
-root_running = make_root("running", OFFSET)
-label, _, window, spec = error_bar_check.GROUPS[0]
-last = os.path.join(root_running, seeds_of(spec)[-1])
-with open(last) as f:
-    kept = f.readlines()[:2 + 150]
-with open(last, "w") as f:
-    f.writelines(kept)
-result = run(root_running)
-row = next((cells(line) for line in result.stdout.splitlines()
-            if line.startswith(f"| {label},")), None)
-n = len(seeds_of(spec)) - 1
-check(result.returncode == 0 and row is not None
-      and row[1] == f"{n} (+1 not yet at {window[1]:g} s)"
-      and near(printed(row[2])[0], exact_chi2(n, error_of[("120", 15)], OFFSET)),
-      f"a seed still running: rc {result.returncode}, {row}, {result.stderr!r}")
 
-# A missing table.
-os.remove(os.path.join(root, seeds_of(error_bar_check.GROUPS[0][3])[1]))
-result = run(root)
-check(result.returncode != 0 and error_bar_check.GROUPS[0][0] in result.stderr
-      and result.stdout == "",
-      f"a missing seed: rc {result.returncode}, {result.stderr!r}")
+def test_a_seed_still_running_is_left_out_and_counted(tmp_path):
+    """Its table ends at 150 s, before the window's end: the two finished seeds, offset by 0
+    and d, give the two-seed chi2/dof exactly."""
+    root = make_root(str(tmp_path), "running", OFFSET)
+    label, _, window, spec = error_bar_check.GROUPS[0]
+    last = os.path.join(root, seeds_of(spec)[-1])
+    with open(last) as f:
+        kept = f.readlines()[:2 + 150]
+    with open(last, "w") as f:
+        f.writelines(kept)
+    result = run(root)
+    row = next((cells(line) for line in result.stdout.splitlines()
+                if line.startswith(f"| {label},")), None)
+    n = len(seeds_of(spec)) - 1
+    assert result.returncode == 0 and row is not None \
+        and row[1] == f"{n} (+1 not yet at {window[1]:g} s)" \
+        and near(printed(row[2])[0], exact_chi2(n, ERROR_OF[("120", 15)], OFFSET)), \
+        f"a seed still running: rc {result.returncode}, {row}, {result.stderr!r}"
 
-for message in failures:
-    print("FAIL:", message)
-if failures:
-    sys.exit(1)
-print(f"error_bar_check.py: the document's {len(lines)} lines, {len(rows)} rows of known "
-      "chi2/dof, the pools, p at the extremes, a seed still running and a missing table")
+
+def test_a_missing_table_is_refused_naming_its_point(tmp_path):
+    root = make_root(str(tmp_path), "known", OFFSET)
+    os.remove(os.path.join(root, seeds_of(error_bar_check.GROUPS[0][3])[1]))
+    result = run(root)
+    assert result.returncode != 0 and error_bar_check.GROUPS[0][0] in result.stderr \
+        and result.stdout == "", f"a missing seed: rc {result.returncode}, {result.stderr!r}"

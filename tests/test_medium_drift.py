@@ -15,38 +15,23 @@
 - A missing column, tables whose frames differ, a window outside the frames, fewer than three
   blocks, --to before --from, and a non-number in a column are refused with exit status 1 and
   nothing on stdout; nothing is written to --blocks-out then.
-
-    /usr/bin/python3 tests/test_medium_drift.py SOURCE_DIR SCRATCH_DIR
-Exit 77 (skipped) without numpy.
 """
 import csv
 import math
 import os
 import re
-import shutil
-import subprocess
-import sys
 
-try:
-    import numpy as np
-except ImportError as e:
-    print(f"skipped: {e} (install python3-numpy)")
-    sys.exit(77)
+import pytest
 
-source, scratch = sys.argv[1], sys.argv[2]
-script = os.path.join(source, "scripts", "medium_drift.py")
-shutil.rmtree(scratch, ignore_errors=True)
-os.makedirs(scratch)
-failures = []
+from conftest import run_script
+
+np = pytest.importorskip("numpy")
+
 FRAME_S = 0.1
+N, K, SIGMA = 20000, 1.2, 0.6
 
 
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-
-
-def write_run(name, time, order, velocity, drift_time=None, order_column="P_polar"):
+def write_run(scratch, name, time, order, velocity, drift_time=None, order_column="P_polar"):
     """An analysis directory as `rodsea analyze --observables order,drift` writes it (the columns
     the script reads, among others)."""
     directory = os.path.join(scratch, name)
@@ -66,7 +51,7 @@ def write_run(name, time, order, velocity, drift_time=None, order_column="P_pola
 
 
 def run(*args):
-    return subprocess.run([sys.executable, script, *args], capture_output=True, text=True)
+    return run_script("medium_drift.py", *args)
 
 
 LINE = re.compile(r"^(.+?): (\d+) frames, (\d+) blocks; \|P\| = ([\d.]+) ± ([\d.]+); v_par = "
@@ -92,90 +77,94 @@ def ar1(n, tau_frames, rng):
     return x
 
 
-rng = np.random.default_rng(5)
-N, K, SIGMA = 20000, 1.2, 0.6
-time = np.arange(N) * FRAME_S
-order = np.clip(0.35 + 0.15 * ar1(N, 100.0, rng), 0.01, 1.0)
-noise = SIGMA * rng.standard_normal(N)
-slaved = write_run("slaved", time, order, K * order + noise)
+@pytest.fixture(scope="module")
+def medium():
+    """|P|, and the noise of the slaved medium's velocity, on N frames."""
+    rng = np.random.default_rng(5)
+    time = np.arange(N) * FRAME_S
+    order = np.clip(0.35 + 0.15 * ar1(N, 100.0, rng), 0.01, 1.0)
+    noise = SIGMA * rng.standard_normal(N)
+    return time, order, noise
 
-result = run(slaved, "--from", "0")
-check(result.returncode == 0, f"the slaved medium failed: {result.stderr}")
-got = lines_of(result.stdout).get(slaved)
-check(got is not None, f"no line for the slaved medium:\n{result.stdout}")
-if got:
+
+def test_the_slope_and_its_jackknife_error_of_a_slaved_medium(tmp_path, medium):
+    time, order, noise = medium
+    slaved = write_run(str(tmp_path), "slaved", time, order, K * order + noise)
+    result = run(slaved, "--from", "0")
+    assert result.returncode == 0, f"the slaved medium failed: {result.stderr}"
+    got = lines_of(result.stdout).get(slaved)
+    assert got is not None, f"no line for the slaved medium:\n{result.stdout}"
     blocks = order.reshape(-1, 100).mean(axis=1)
     exact = (SIGMA / math.sqrt(100)) / math.sqrt(float(np.dot(blocks, blocks)))
-    check(got["blocks"] == 200 and got["frames"] == N, f"blocks and frames: {got}")
-    check(abs(got["slope_err"] / exact - 1) < 0.15,
-          f"jackknife error {got['slope_err']} against the exact {exact:.4g}")
-    check(abs(got["slope"] - K) < 4 * exact, f"slope {got['slope']} against k = {K}")
+    assert got["blocks"] == 200 and got["frames"] == N, f"blocks and frames: {got}"
+    assert abs(got["slope_err"] / exact - 1) < 0.15, \
+        f"jackknife error {got['slope_err']} against the exact {exact:.4g}"
+    assert abs(got["slope"] - K) < 4 * exact, f"slope {got['slope']} against k = {K}"
     short = lines_of(run(slaved, "--from", "0", "--block", "1").stdout).get(slaved)
-    check(short is not None and abs(short["slope_err"] / got["slope_err"] - 1) < 0.15,
-          f"1 s blocks give {short} against 10 s blocks' {got['slope_err']}")
+    assert short is not None and abs(short["slope_err"] / got["slope_err"] - 1) < 0.15, \
+        f"1 s blocks give {short} against 10 s blocks' {got['slope_err']}"
 
-# Two seeds differing only in k.
-D = 0.1
-first = write_run("seed1", time, order, K * order + noise)
-second = write_run("seed2", time, order, (K + D) * order + noise)
-table = os.path.join(scratch, "blocks.csv")
-result = run(first, second, "--from", "100", "--to", "1100", "--blocks-out", table)
-check(result.returncode == 0, f"two seeds failed: {result.stderr}")
-got = lines_of(result.stdout)
-one, two, pooled = got.get(first), got.get(second), got.get("all 2")
-check(None not in (one, two, pooled), f"missing lines:\n{result.stdout}")
-if None not in (one, two, pooled):
-    check(abs(two["slope"] - one["slope"] - D) < 2e-3, f"slopes {one} and {two} differ by not {D}")
-    check(abs(one["slope_err"] - two["slope_err"]) < 2e-3, f"errors differ: {one}, {two}")
-    check(abs(pooled["slope"] - (one["slope"] + two["slope"]) / 2) < 2e-3,
-          f"pooled slope {pooled['slope']} is not the seeds' mean")
+
+def test_two_seeds_differing_in_k_pool_and_their_block_table(tmp_path, medium):
+    time, order, noise = medium
+    D = 0.1
+    first = write_run(str(tmp_path), "seed1", time, order, K * order + noise)
+    second = write_run(str(tmp_path), "seed2", time, order, (K + D) * order + noise)
+    table = str(tmp_path / "blocks.csv")
+    result = run(first, second, "--from", "100", "--to", "1100", "--blocks-out", table)
+    assert result.returncode == 0, f"two seeds failed: {result.stderr}"
+    got = lines_of(result.stdout)
+    one, two, pooled = got.get(first), got.get(second), got.get("all 2")
+    assert None not in (one, two, pooled), f"missing lines:\n{result.stdout}"
+    assert abs(two["slope"] - one["slope"] - D) < 2e-3, f"slopes {one} and {two} differ by not {D}"
+    assert abs(one["slope_err"] - two["slope_err"]) < 2e-3, f"errors differ: {one}, {two}"
+    assert abs(pooled["slope"] - (one["slope"] + two["slope"]) / 2) < 2e-3, \
+        f"pooled slope {pooled['slope']} is not the seeds' mean"
     # The error is printed to 3 decimals, so the expected chi2/dof is known to a range.
     high = D ** 2 / (2 * (one["slope_err"] - 5e-4) ** 2) + 0.005
     low = D ** 2 / (2 * (one["slope_err"] + 5e-4) ** 2) - 0.005
-    check(low <= pooled["chi2"] <= high,
-          f"chi2/dof {pooled['chi2']} outside {low:.3g}–{high:.3g}")
-    check(one["frames"] == 10000 and one["blocks"] == 100, f"the window 100-1100 s: {one}")
-with open(table) as f:
-    rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
-check(len(rows) == 200, f"{len(rows)} block rows, not 200")
-mine = [r for r in rows if r["run"] == first]
-if mine and one:
+    assert low <= pooled["chi2"] <= high, f"chi2/dof {pooled['chi2']} outside {low:.3g}–{high:.3g}"
+    assert one["frames"] == 10000 and one["blocks"] == 100, f"the window 100-1100 s: {one}"
+    with open(table) as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    assert len(rows) == 200, f"{len(rows)} block rows, not 200"
+    mine = [r for r in rows if r["run"] == first]
     p = np.array([float(r["P_polar"]) for r in mine])
     v = np.array([float(r["v_medium_along_polar"]) for r in mine])
     frames = slice(1000, 1100)  # the first block, 100-110 s
-    check(abs(p[0] - order[frames].mean()) < 1e-9 and float(mine[0]["t_from"]) == 100.0
-          and float(mine[0]["t_to"]) == 110.0, f"first block row {mine[0]}")
-    check(abs(float(np.dot(p, v) / np.dot(p, p)) - one["slope"]) < 1e-3,
-          "the table's slope is not the printed one")
+    assert abs(p[0] - order[frames].mean()) < 1e-9 and float(mine[0]["t_from"]) == 100.0 \
+        and float(mine[0]["t_to"]) == 110.0, f"first block row {mine[0]}"
+    assert abs(float(np.dot(p, v) / np.dot(p, p)) - one["slope"]) < 1e-3, \
+        "the table's slope is not the printed one"
 
-# Refusals.
-short_time = time[:300]
-bad = {
-    "no column": write_run("nocolumn", short_time, order[:300], noise[:300],
-                           order_column="P_apolar"),
-    "frames differ": write_run("shifted", short_time, order[:300], noise[:300],
-                               drift_time=short_time + 0.05),
-}
-not_number = write_run("nan", short_time, order[:300], noise[:300])
-with open(os.path.join(not_number, "drift.csv")) as f:
-    text = f.read().replace(f"{noise[7]!r}", "oops", 1)
-with open(os.path.join(not_number, "drift.csv"), "w") as f:
-    f.write(text)
-bad["not a number"] = not_number
-good_short = write_run("short", short_time, order[:300], noise[:300])
-cases = [(label, [d, "--from", "0"]) for label, d in bad.items()] + [
-    ("window outside", [good_short, "--from", "0", "--to", "60"]),
-    ("fewer than three blocks", [good_short, "--from", "0", "--block", "15"]),
-    ("--to before --from", [good_short, "--from", "20", "--to", "10"]),
-]
-for label, args in cases:
-    out = os.path.join(scratch, f"refused-{label.replace(' ', '_')}.csv")
-    result = run(*args, "--blocks-out", out)
-    check(result.returncode == 1 and result.stdout == "" and "medium_drift:" in result.stderr
-          and not os.path.exists(out),
-          f"{label}: rc {result.returncode}, stdout {result.stdout!r}, stderr {result.stderr!r}")
 
-if failures:
-    print("\n".join(failures))
-    sys.exit(1)
-print("medium_drift: slope and its error, pooled seeds, block table and refusals as expected")
+def refusals(scratch, medium):
+    time, order, noise = medium
+    short_time, order, noise = time[:300], order[:300], noise[:300]
+    bad = {
+        "no column": write_run(scratch, "nocolumn", short_time, order, noise,
+                               order_column="P_apolar"),
+        "frames differ": write_run(scratch, "shifted", short_time, order, noise,
+                                   drift_time=short_time + 0.05),
+    }
+    not_number = write_run(scratch, "nan", short_time, order, noise)
+    with open(os.path.join(not_number, "drift.csv")) as f:
+        text = f.read().replace(f"{noise[7]!r}", "oops", 1)
+    with open(os.path.join(not_number, "drift.csv"), "w") as f:
+        f.write(text)
+    bad["not a number"] = not_number
+    good_short = write_run(scratch, "short", short_time, order, noise)
+    return [(label, [d, "--from", "0"]) for label, d in bad.items()] + [
+        ("window outside", [good_short, "--from", "0", "--to", "60"]),
+        ("fewer than three blocks", [good_short, "--from", "0", "--block", "15"]),
+        ("--to before --from", [good_short, "--from", "20", "--to", "10"]),
+    ]
+
+
+def test_bad_tables_and_windows_are_refused_and_write_nothing(tmp_path, medium):
+    for label, args in refusals(str(tmp_path), medium):
+        out = str(tmp_path / f"refused-{label.replace(' ', '_')}.csv")
+        result = run(*args, "--blocks-out", out)
+        assert result.returncode == 1 and result.stdout == "" \
+            and "medium_drift:" in result.stderr and not os.path.exists(out), \
+            f"{label}: rc {result.returncode}, stdout {result.stdout!r}, stderr {result.stderr!r}"

@@ -8,33 +8,21 @@ the bin centres (8 of the 12 bins in each 30° sector lie within 20°), so the s
 exactly: ahead 1 + 2·8/12, behind 1 + 4·8/12, along their mean, across 1 + 8/12 near contact
 and 1 beyond. The default shells (half the polar rod's length, from analysis.json) and explicit
 ones must agree; bad input must print nothing and exit 2 (74 for a path that does not exist).
-
-    /usr/bin/python3 tests/test_pair_sectors.py SOURCE_DIR SCRATCH_DIR
-Exit 77 (skipped) without numpy or h5py.
 """
 import csv
 import io
 import json
 import math
 import os
-import subprocess
-import sys
 
-try:
-    import h5py
-    import numpy as np
-except ImportError as e:
-    print(f"skipped: {e} (install python3-numpy python3-h5py)")
-    sys.exit(77)
+import pytest
 
-source, scratch = sys.argv[1], sys.argv[2]
-script = os.path.join(source, "scripts", "pair_sectors.py")
-failures = []
+from conftest import run_script
 
+h5py = pytest.importorskip("h5py")
+np = pytest.importorskip("numpy")
 
-def check(condition, message):
-    if not condition:
-        failures.append(message)
+SHARE = 8 / 12  # of a 30° sector's bin centres, those within 20°
 
 
 def write_analysis(directory):
@@ -62,53 +50,57 @@ def write_analysis(directory):
 
 
 def run(*args):
-    return subprocess.run([sys.executable, script, *args], capture_output=True, text=True)
+    return run_script("pair_sectors.py", *args)
 
 
-analysis = os.path.join(scratch, "run", "analysis")
-write_analysis(analysis)
-default = run(os.path.join(scratch, "run"))
-check(default.returncode == 0, f"default shells: exit {default.returncode}: {default.stderr}")
-rows = list(csv.DictReader(io.StringIO(default.stdout)))
-check([(float(x["r_from_mm"]), float(x["r_to_mm"])) for x in rows]
-      == [(2.25 * k, 2.25 * (k + 1)) for k in range(10)],
-      f"default shells are not steps of ℓ_p/2 = 2.25 mm to 22.5 mm: {default.stdout}")
-share = 8 / 12  # of a 30° sector's bin centres, those within 20°
-expected = {  # (shell index) -> sector -> mean
-    0: {"ahead": 1, "behind": 1, "along": 1, "across": 1 + share},
-    2: {"ahead": 1 + 2 * share, "behind": 1 + 4 * share, "along": 1 + 3 * share, "across": 1},
-    3: {"ahead": 1 + 2 * share, "behind": 1 + 4 * share, "along": 1 + 3 * share, "across": 1},
-    5: {"ahead": 1, "behind": 1, "along": 1, "across": 1},
-}
-for index, sectors in expected.items():
-    for sector, value in sectors.items():
-        got = float(rows[index][f"g_{sector}"]) if len(rows) > index else math.nan
-        # printed to 4 significant digits
-        check(abs(got - value) < 5e-4 * value,
-              f"shell {index}, {sector}: {got}, expected {value:.4f}")
-check(float(rows[5]["g_across_error"]) == 0 if len(rows) > 5 else False,
-      "a uniform sector must have no scatter")
+@pytest.fixture
+def analysis(tmp_path):
+    directory = tmp_path / "run" / "analysis"
+    write_analysis(str(directory))
+    return directory
 
-explicit = run(os.path.join(analysis, "analysis.h5"), "--shells", "4.5,9")
-lines = explicit.stdout.splitlines()
-check(explicit.returncode == 0 and len(lines) == 2,
-      f"--shells 4.5,9 on the .h5: exit {explicit.returncode}, {explicit.stdout}{explicit.stderr}")
-if len(lines) == 2:
+
+def test_the_default_shells_give_each_sectors_known_mean(analysis):
+    default = run(analysis.parent)
+    assert default.returncode == 0, f"default shells: {default.stderr}"
+    rows = list(csv.DictReader(io.StringIO(default.stdout)))
+    assert [(float(x["r_from_mm"]), float(x["r_to_mm"])) for x in rows] == \
+        [(2.25 * k, 2.25 * (k + 1)) for k in range(10)], \
+        f"default shells are not steps of ℓ_p/2 = 2.25 mm to 22.5 mm: {default.stdout}"
+    expected = {  # (shell index) -> sector -> mean
+        0: {"ahead": 1, "behind": 1, "along": 1, "across": 1 + SHARE},
+        2: {"ahead": 1 + 2 * SHARE, "behind": 1 + 4 * SHARE, "along": 1 + 3 * SHARE, "across": 1},
+        3: {"ahead": 1 + 2 * SHARE, "behind": 1 + 4 * SHARE, "along": 1 + 3 * SHARE, "across": 1},
+        5: {"ahead": 1, "behind": 1, "along": 1, "across": 1},
+    }
+    for index, sectors in expected.items():
+        for sector, value in sectors.items():
+            got = float(rows[index][f"g_{sector}"])
+            # printed to 4 significant digits
+            assert abs(got - value) < 5e-4 * value, \
+                f"shell {index}, {sector}: {got}, expected {value:.4f}"
+    assert float(rows[5]["g_across_error"]) == 0, "a uniform sector must have no scatter"
+
+
+def test_explicit_shells_on_the_h5_agree(analysis):
+    explicit = run(analysis / "analysis.h5", "--shells", "4.5,9")
+    lines = explicit.stdout.splitlines()
+    assert explicit.returncode == 0 and len(lines) == 2, \
+        f"--shells 4.5,9 on the .h5: {explicit.stdout}{explicit.stderr}"
     row = next(csv.DictReader(io.StringIO(explicit.stdout)))
-    check(abs(float(row["g_along"]) - (1 + 3 * share)) < 5e-4 * (1 + 3 * share),
-          f"one shell over 4.5–9 mm: along {row['g_along']}")
+    assert abs(float(row["g_along"]) - (1 + 3 * SHARE)) < 5e-4 * (1 + 3 * SHARE), \
+        f"one shell over 4.5–9 mm: along {row['g_along']}"
+
 
 # 2: bad input; 74: a file that cannot be read (rodsea plot's codes, whose readers it shares)
-for args, code, why in (([analysis, "--shells", "0,30"], 2, "shells past the map"),
-                        ([analysis, "--shells", "5,2"], 2, "decreasing shells"),
-                        ([analysis, "--half-width", "60"], 2, "overlapping sectors"),
-                        ([analysis, os.path.join(scratch, "missing")], 74,
-                         "one input without an analysis")):
-    out = run(*args)
-    check(out.returncode == code and out.stdout == "" and out.stderr,
-          f"{why}: exit {out.returncode}, stdout {out.stdout!r}, stderr {out.stderr!r}")
-
-for f in failures:
-    print("FAIL:", f)
-print("pair_sectors:", "failed" if failures else "passed")
-sys.exit(1 if failures else 0)
+@pytest.mark.parametrize("args, code, why", [
+    (["--shells", "0,30"], 2, "shells past the map"),
+    (["--shells", "5,2"], 2, "decreasing shells"),
+    (["--half-width", "60"], 2, "overlapping sectors"),
+    (["MISSING"], 74, "one input without an analysis"),
+])
+def test_bad_input_prints_nothing_and_exits_with_its_code(analysis, args, code, why):
+    args = [str(analysis.parent.parent / "missing") if a == "MISSING" else a for a in args]
+    out = run(analysis, *args)
+    assert out.returncode == code and out.stdout == "" and out.stderr, \
+        f"{why}: exit {out.returncode}, stdout {out.stdout!r}, stderr {out.stderr!r}"

@@ -4,25 +4,18 @@ their own axis, at 2 and 4 mm/s (one heading +x across the periodic edge of a 10
 crossing and report 3 ± 1 mm/s both as the speed and along the axis (the standard error over
 two rods of 2 and 4 is 1); rods sliding sideways at the same speeds must give 3 ± 1 mm/s and
 0 ± 0 along the axis. The --csv table must hold the same numbers.
-
-    /usr/bin/python3 tests/test_polar_rod_speed.py SOURCE_DIR SCRATCH_DIR
-Exit 77 (skipped) without numpy or h5py.
 """
 import csv
 import math
 import os
-import subprocess
-import sys
 
-try:
-    import h5py
-    import numpy as np
-except ImportError as e:
-    print(f"skipped: {e} (install python3-numpy python3-h5py)")
-    sys.exit(77)
+import pytest
 
-source, scratch = sys.argv[1], sys.argv[2]
-script = os.path.join(source, "scripts", "polar_rod_speed.py")
+from conftest import run_script
+
+h5py = pytest.importorskip("h5py")
+np = pytest.importorskip("numpy")
+
 CONFIG = ('[[species]]\nname = "medium"\nkind = "bead"\ncount = 1\n'
           '[[species]]\nname = "polar"\nkind = "polar_rod"\ncount = 2\n')
 
@@ -53,11 +46,10 @@ def write_run(run, sideways):
         b["box/edges/value"] = np.tile([10.0, 10.0, 1.4], (len(t), 1))
 
 
-def measured(run):
+def measured(run, scratch):
     """(speed, its error, along the axis, its error) as printed and as written by --csv."""
     table = os.path.join(scratch, "speeds.csv")
-    out = subprocess.run([sys.executable, script, run, "--from", "0", "--csv", table],
-                         capture_output=True, text=True)
+    out = run_script("polar_rod_speed.py", run, "--from", "0", "--csv", table)
     assert out.returncode == 0, out.stderr
     words = out.stdout.split()
     printed = [float(words[words.index("|Δr|/lag") + k]) for k in (2, 4)]
@@ -73,13 +65,9 @@ def measured(run):
 
 
 # float32 positions (~1e-6 mm) over 1 s lags: the answers hold to far better than 2e-3 mm/s.
-forward = os.path.join(scratch, "forward")
-write_run(forward, sideways=False)
-got = measured(forward)
-assert all(abs(g - e) < 2e-3 for g, e in zip(got, (3.0, 1.0, 3.0, 1.0))), got
-sideways = os.path.join(scratch, "sideways")
-write_run(sideways, sideways=True)
-got = measured(sideways)
-assert all(abs(g - e) < 2e-3 for g, e in zip(got, (3.0, 1.0, 0.0, 0.0))), got
-print("polar_rod_speed.py: 3 ± 1 mm/s forward and sideways, the edge crossing unwrapped, the "
-      "bead left out, the csv equal to the printout")
+@pytest.mark.parametrize("sideways, along", [(False, (3.0, 1.0)), (True, (0.0, 0.0))])
+def test_speed_and_speed_along_the_axis(tmp_path, sideways, along):
+    run = str(tmp_path / ("sideways" if sideways else "forward"))
+    write_run(run, sideways)
+    got = measured(run, str(tmp_path))
+    assert all(abs(g - e) < 2e-3 for g, e in zip(got, (3.0, 1.0) + along)), got
