@@ -18,13 +18,14 @@
 #include "rodsea/math/periodic_box.hpp"
 #include "rodsea/math/vec3.hpp"
 #include "rodsea/neighbors/periodic_grid.hpp"
+#include "rodsea/neighbors/verlet_skin.hpp"
 
 namespace rodsea {
 
 class VerletPairList {
   public:
     // skin in mm, > 0.
-    explicit VerletPairList(double skin = 0.1);
+    explicit VerletPairList(double skin = kVerletSkin);
 
     // Rebuilds when the list is new, the number of points or the box changed, or a point moved
     // more than skin / 2 in the plane (minimum image) since the last build. Radii and groups

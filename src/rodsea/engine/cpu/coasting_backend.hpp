@@ -81,7 +81,7 @@ class CoastingBackend final : public StepBackend {
     // the bodies beyond might arrive. 0.1 mm measured best of 0.1, 0.15 and 0.2, and of a
     // second, thicker list beside CpuBackend's (docs/performance.md, Coasting): the awake
     // bodies' search reads more pairs, and the list is rebuilt, more than longer coasts save.
-    static constexpr double kSkin = 0.1;
+    static constexpr double kSkin = 2.0 * kVerletSkin;
 
     void wake_and_fly(const StepContext& context, double& fastest);
     void place_coasting_spheres(const StepContext& context);

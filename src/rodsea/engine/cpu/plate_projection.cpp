@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "rodsea/engine/physics/contact_geometry.hpp"
+
 namespace rodsea::cpu {
 
 void PlateProjection::apply(const std::vector<Contact>& contacts, BodyView bodies,
@@ -16,10 +18,9 @@ void PlateProjection::apply(const std::vector<Contact>& contacts, BodyView bodie
         depth[c.a] = std::max(depth[c.a], c.overlap);  // overlaps of found contacts are > 0
     }
     for (const std::uint32_t b : touched_) {
-        const double base = base_depth_[b], lid = lid_depth_[b];
+        const double dz = physics::plate_push(base_depth_[b], lid_depth_[b]);
         base_depth_[b] = lid_depth_[b] = 0.0;
-        if (base > 0.0 && lid > 0.0) continue;  // wedged between both plates
-        const double dz = base > 0.0 ? base : -lid;
+        if (dz == 0.0) continue;  // wedged between both plates
         bodies.position[b].z += dz;
         for (std::uint32_t s = spheres.first_of[b]; s < spheres.first_of[b + 1]; ++s)
             spheres.position[s].z += dz;

@@ -147,7 +147,7 @@ struct PlaceSpheres {
     }
 };
 
-// Stage 5, per body: out of the plates by its deepest overlap (plate_projection.hpp says why),
+// Stage 5, per body: out of the plates by its deepest overlap (physics::plate_push says why),
 // and a polar body's noise for the plates it hit this step (docs/model.md §3; the one rule of
 // physics::apply_plate_noise, as on the CPU), with the fastest approach that got an impulse (the
 // sweeps kept it). The overlaps are those the contacts were found with: the spheres have not
@@ -171,8 +171,7 @@ struct ProjectAndKick {
             if (o.base > base) base = o.base;
             if (o.lid > lid) lid = o.lid;
         }
-        if ((base > 0.0) != (lid > 0.0)) {  // not free, nor wedged between both plates
-            const double dz = base > 0.0 ? base : -lid;
+        if (const double dz = physics::plate_push(base, lid); dz != 0.0) {
             bodies.position[b].z += dz;
             for (std::uint32_t s = first; s < last; ++s)
                 spheres.position[s].z += dz;

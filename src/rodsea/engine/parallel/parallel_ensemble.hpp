@@ -49,6 +49,7 @@
 #include "rodsea/engine/species_table.hpp"
 #include "rodsea/engine/stage_timer.hpp"
 #include "rodsea/engine/step_backend.hpp"
+#include "rodsea/neighbors/verlet_skin.hpp"
 
 namespace rodsea::parallel {
 
@@ -88,10 +89,6 @@ class EnsembleStepper {
     // How often the neighbour list was built.
     virtual std::uint64_t builds() const = 0;
 };
-
-// The Verlet list's skin (mm): the CPU's (cpu/contact_search.hpp says why 0.05 mm). The
-// trajectory does not depend on it.
-inline constexpr double kNeighbourSkin = 0.05;
 
 // The room the lists start with; they grow to what a run needs (a sphere's partners: a handful
 // in a monolayer; a step's contacts: a few per cent of the spheres).
@@ -361,7 +358,7 @@ class ParallelEnsemble final : public EnsembleStepper {
         const Systems sys = system_arrays();
         const CellList cells = cell_list();
         const NeighbourList neighbours{neighbour_slots_.data(), neighbour_count_.data(),
-                                       slot_capacity_, s, kNeighbourSkin};
+                                       slot_capacity_, s, kVerletSkin};
         RunStatus* status = status_.data();
         const auto stage = [this](double& sink, auto&& launches) {
             if (!time_stages_) {
@@ -381,7 +378,7 @@ class ParallelEnsemble final : public EnsembleStepper {
                                          last_changed_.data(), inv_mass_.data(),
                                          inv_inertia_.data(), plate_hit_.data()},
                                         cells},
-                              1, DecideRebuild{sys, travel_.data(), status, 0.5 * kNeighbourSkin});
+                              1, DecideRebuild{sys, travel_.data(), status, 0.5 * kVerletSkin});
         });
         stage(profile.sphere_update, [&] {
             exec_.launch(s, PlaceSpheres{bodies, species, sphere_arrays(), sys, cells, status});
@@ -471,7 +468,7 @@ class ParallelEnsemble final : public EnsembleStepper {
             first_sphere_.push_back(static_cast<std::uint32_t>(spheres.body.size()));
             widest_reach_.push_back(
                 2.0 * *std::max_element(t.sphere_radius.begin(), t.sphere_radius.end()) +
-                kNeighbourSkin);
+                kVerletSkin);
         }
         species.first_sphere.push_back(static_cast<std::uint32_t>(species.sphere_offset.size()));
         species.first_outline.push_back(static_cast<std::uint32_t>(species.outline_along.size()));

@@ -38,6 +38,23 @@ RODSEA_HD inline PlateOverlaps plate_overlaps(double z, double r, const PlateSta
     return {plates.base_z - (z - r), (z + r) - plates.lid_z};
 }
 
+// How far a body moves along z to leave the plates after the impulses (mm), from its spheres'
+// deepest overlap with the base and with the lid (0 where none overlaps): up by the one, down by
+// the other, and not at all when it overlaps neither or both (no vertical move frees a body
+// wedged between the plates).
+//
+// Why at all: time-driven stepping lets a sphere pressed against an accelerating plate sink by
+// about ½ (a + g) dt² each step; the impulses stop the approach but nothing undoes the depth, so
+// over a contact lasting a few milliseconds it adds up to ~(a + g) T dt / 2 (≈ 0.1 µm at
+// dt = 1.25 µs). Small, but the polar rod's ratchet speed near the default gap changes by
+// 0.23 mm/s per µm of gap, and without the push its speed never converged in dt (docs/model.md).
+// Moving by the deepest overlap, along the plate's normal, leaves every plate contact just
+// touching.
+RODSEA_HD inline double plate_push(double base_depth, double lid_depth) {
+    if ((base_depth > 0.0) == (lid_depth > 0.0)) return 0.0;
+    return base_depth > 0.0 ? base_depth : -lid_depth;
+}
+
 // The contact of sphere p (radius r) of body a (centre of mass x_a) with the base or the lid,
 // `overlap` deep.
 RODSEA_HD inline Contact plate_contact(std::uint32_t a, const Vec3& p, double r, const Vec3& x_a,
