@@ -28,6 +28,14 @@ RunPlan extended_plan(const Checkpoint& c, std::optional<double> duration,
 void check_frames_counted(const Checkpoint& c, const RunPlan& plan, bool extending,
                           const std::filesystem::path& path);
 
+// A checkpoint in `dir` resumes only the run it was written by: the trajectory's run id, the config
+// stored in the trajectory and in config.toml (or, during an extension not yet written to
+// every file, the config it extends), the frames it counts, and a state that the engine could
+// have produced. Checked before any file is touched; every refusal names the file and what
+// differs.
+void check_checkpoint_belongs(const std::filesystem::path& dir, const Checkpoint& c,
+                              const RunPlan& plan);
+
 // A continuation (rodsea run --continue) holds its run's frames from its first on, and stopping
 // when steady judges the run's whole series: InvalidParameter naming time.steady_samples unless
 // it is 0. `where` names the checkpoint or directory.

@@ -3,7 +3,7 @@
 // series it records, its stop-when-steady judge, its checkpoints and its progress.txt. The state
 // it records is one system of an Ensemble (engine/ensemble.hpp): a lone run is an ensemble of
 // one, and `rodsea run A.toml B.toml` steps several, each writing its own directory exactly as
-// it would alone. The loop that steps the ensemble (run_driver.cpp) calls after_step() for each
+// it would alone. The loop that steps the ensemble (ensemble_loop.cpp) calls after_step() for each
 // system after each step; the session says when its run has ended and with which exit code.
 #include <chrono>
 #include <cstdint>
