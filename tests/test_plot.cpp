@@ -211,6 +211,11 @@ TEST_F(PlotCli, AnAnalysisOlderThanItsRunIsNamedAsSuch) {
         << stale.err;
     EXPECT_NE(stale.err.find("rodsea analyze " + run.string() + " again"), std::string::npos)
         << stale.err;
+    // An analysis cut short with --to ends before its run by design: no note.
+    ASSERT_EQ(run_rodsea({"analyze", run.string(), "--to", "0.02", "--quiet"}, dir()).exit_code, 0);
+    const ChildResult cut = plot({run.string(), "-o", (dir() / "cut").string(), "--quiet"});
+    ASSERT_EQ(cut.exit_code, 0) << cut.err;
+    EXPECT_EQ(cut.err.find("note:"), std::string::npos) << cut.err;
 }
 
 TEST_F(PlotCli, MediumOnlyRunSkipsThePolarFiguresWithANote) {

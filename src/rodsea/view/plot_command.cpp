@@ -85,9 +85,13 @@ std::optional<std::string> stale_analysis_note(const fs::path& input) {
         const std::size_t from = at + 14;
         const std::string key = text.substr(from, text.find('"', from) - from);
         const TrajectoryReader reader(run / kTrajectoryFile);
+        if (reader.steps().empty()) return std::nullopt;
         const std::string last = std::to_string(reader.steps().back());
         const std::string id = read_run_id(run / kTrajectoryFile);
-        if (cache_key_field(key, "last step") == last && cache_key_field(key, "run") == id)
+        // An analysis cut short by --to ends before the run by design ("|to|" in its key).
+        const bool cut_short = key.find("|to|") != std::string::npos;
+        if (cache_key_field(key, "run") == id &&
+            (cut_short || cache_key_field(key, "last step") == last))
             return std::nullopt;
         return analysis.string() + " was made from " +
                (cache_key_field(key, "run") == id
