@@ -92,6 +92,19 @@ struct BadCampaign {
     std::string text, message;
 };
 
+// Each campaign (the base above plus its text) is refused with a message holding its part.
+void expect_refused(const std::vector<BadCampaign>& cases) {
+    for (const BadCampaign& c : cases) {
+        try {
+            grid_of(c.text);
+            ADD_FAILURE() << "accepted:\n" << c.text;
+        } catch (const std::exception& e) {
+            EXPECT_NE(std::string(e.what()).find(c.message), std::string::npos)
+                << c.text << "\n-> " << e.what();
+        }
+    }
+}
+
 TEST(CampaignFile, BadFilesAreRefusedByKeyWithTheAllowedValues) {
     const std::vector<BadCampaign> cases{
         {"[campain]\nname = \"x\"\n", "did you mean 'campaign'"},
@@ -160,15 +173,7 @@ TEST(CampaignFile, BadFilesAreRefusedByKeyWithTheAllowedValues) {
         {"[analysis]\nfrom = 0.05\nto = 0.02\n",
          "invalid analysis.to = 0.02 s: allowed at least analysis.from (0.05 s)"},
     };
-    for (const BadCampaign& c : cases) {
-        try {
-            grid_of(c.text);
-            ADD_FAILURE() << "accepted:\n" << c.text;
-        } catch (const std::exception& e) {
-            EXPECT_NE(std::string(e.what()).find(c.message), std::string::npos)
-                << c.text << "\n-> " << e.what();
-        }
-    }
+    expect_refused(cases);
 }
 
 // A run config where a campaign file belongs (examples/paper/'s base-*.toml beside the
@@ -206,15 +211,7 @@ TEST(CampaignFile, APointRunsWhatItsNameSays) {
          "[[override]]\nwhen = { \"drive.gamma\" = 7.0 }\nset = { \"time.duration\" = 0.3 }\n",
          "time.duration set twice: allowed each key once per point"},
     };
-    for (const BadCampaign& c : cases) {
-        try {
-            grid_of(c.text);
-            ADD_FAILURE() << "accepted:\n" << c.text;
-        } catch (const std::exception& e) {
-            EXPECT_NE(std::string(e.what()).find(c.message), std::string::npos)
-                << c.text << "\n-> " << e.what();
-        }
-    }
+    expect_refused(cases);
     // What stays allowed: an axis over the alternative of a key the base gives (the base's
     // length gives way to the axis's aspect ratio), and overrides of other keys.
     const CampaignGrid grid = grid_of(
